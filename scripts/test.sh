@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# Set up, build, and run every test (GoogleTest through CTest).
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+bash "$here/scripts/build.sh" -DMEROMORPH_BUILD_TESTS=ON
+cd "$here/build"
+ctest --output-on-failure --parallel "$(nproc)"

@@ -1,0 +1,135 @@
+// Broken files: a clear error with the path (and line), never a crash or a half-read mesh.
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "errors.h"
+#include "mesh_reader.h"
+#include "mesh_writer.h"
+#include "test_support.h"
+#include "test_surfaces.h"
+
+namespace meromorph {
+namespace {
+
+using test::TempDir;
+
+// Reading `path` throws an error of type E whose message contains `expected`.
+template <class E> void expect_read_error(const std::string &path, const std::string &expected) {
+  Mesh mesh;
+  try {
+    read_mesh(path, mesh);
+    ADD_FAILURE() << path << " was read without error";
+  } catch (const E &error) {
+    EXPECT_NE(std::string(error.what()).find(expected), std::string::npos)
+        << "message: " << error.what() << "\nexpected to contain: " << expected;
+    EXPECT_NE(std::string(error.what()).find(path), std::string::npos) << "names the file";
+  } catch (const std::exception &error) {
+    ADD_FAILURE() << path << ": wrong error type: " << error.what();
+  }
+}
+
+std::string file_bytes(const std::string &path) {
+  std::ifstream stream(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(stream), {});
+}
+
+TEST(BadFiles, EmptyFilesOfEveryFormat) {
+  TempDir dir;
+  for (const char *name : {"empty.off", "empty.obj", "empty.ply", "empty.stl"})
+    expect_read_error<InputError>(dir.write(name, ""), "the file is empty");
+}
+
+TEST(BadFiles, MissingFileAndUnsupportedExtension) {
+  TempDir dir;
+  expect_read_error<ArgumentError>(dir.path("missing.off"), "no such file");
+  expect_read_error<ArgumentError>(dir.write("mesh.xyz", "1 2 3\n"), "'.xyz'");
+}
+
+TEST(BadFiles, TruncatedOff) {
+  TempDir dir;
+  const std::string eight = file_bytes(test::data_path("eight.off"));
+  // Cut mid-line, and cut at a line's end.
+  expect_read_error<InputError>(dir.write("cut_in_vertices.off", eight.substr(0, 2000)),
+                                "ends in the middle of vertex 70 of the 766 vertices its header "
+                                "announces (truncated?)");
+  expect_read_error<InputError>(dir.write("cut_in_faces.off", eight.substr(0, eight.size() - 500)),
+                                "of the 1536 faces its header announces (truncated?)");
+  const size_t line_end = eight.rfind('\n', eight.size() - 500) + 1;
+  expect_read_error<InputError>(dir.write("cut_at_line.off", eight.substr(0, line_end)),
+                                "the file ends after 1500 of the 1536 faces its header announces");
+}
+
+TEST(BadFiles, TruncatedBinaryPly) {
+  TempDir dir;
+  Mesh sphere;
+  make_icosphere(sphere, 2);
+  write_mesh(sphere, dir.path("whole.ply"));
+  const std::string whole = file_bytes(dir.path("whole.ply"));
+  expect_read_error<InputError>(dir.write("cut.ply", whole.substr(0, whole.size() / 2)),
+                                "ends before all the vertices and faces");
+}
+
+TEST(BadFiles, PlyHeaderLiesAboutItsCounts) {
+  TempDir dir;
+  expect_read_error<InputError>(
+      dir.write("lie.ply", "ply\nformat ascii 1.0\nelement vertex 10\nproperty float x\n"
+                           "property float y\nproperty float z\nelement face 2\n"
+                           "property list uchar int vertex_indices\nend_header\n"
+                           "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
+      "ends before all the vertices and faces its header announces");
+}
+
+TEST(BadFiles, IndicesOutOfRangeNameTheLine) {
+  TempDir dir;
+  expect_read_error<InputError>(
+      dir.write("oob.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n"),
+      "oob.off:6: face 0 refers to vertex 9, but the file has vertices 0..2");
+  expect_read_error<InputError>(dir.write("oob.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n"),
+                                "oob.obj:4: face refers to vertex 9");
+  expect_read_error<InputError>(dir.write("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"),
+                                "OBJ counts vertices from 1");
+  expect_read_error<InputError>(
+      dir.write("oob.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                           "property float y\nproperty float z\nelement face 1\n"
+                           "property list uchar int vertex_indices\nend_header\n"
+                           "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"),
+      "refers to a vertex index beyond the vertex count");
+}
+
+TEST(BadFiles, GarbageInsideText) {
+  TempDir dir;
+  expect_read_error<InputError>(
+      dir.write("word.off", "OFF\n3 1 0\n0 0 zero\n1 0 0\n0 1 0\n3 0 1 2\n"),
+      "word.off:3: 'zero' is not a number");
+  expect_read_error<InputError>(dir.write("short.obj", "v 0 0\n"), "needs three coordinates");
+  expect_read_error<InputError>(dir.write("facet.stl", "solid x\nfacet normal 0 0 1\nouter loop\n"
+                                                       "vertex 0 0 0\nvertex 1 0 0\nendloop\n"
+                                                       "endfacet\nendsolid x\n"),
+                                "a facet must have exactly 3 vertices, this one has 2");
+}
+
+TEST(BadFiles, BinaryContentWithTheWrongExtension) {
+  TempDir dir;
+  Mesh sphere;
+  make_icosphere(sphere, 1);
+  write_mesh(sphere, dir.path("sphere.ply"));
+  write_mesh(sphere, dir.path("sphere.stl"));
+  const std::string ply = file_bytes(dir.path("sphere.ply"));
+  const std::string stl = file_bytes(dir.path("sphere.stl"));
+  expect_read_error<InputError>(dir.write("ply_named.off", ply),
+                                "its content is PLY; rename it to .ply");
+  expect_read_error<InputError>(dir.write("ply_named.obj", ply), "its content is PLY");
+  expect_read_error<InputError>(dir.write("stl_named.ply", stl), "its content is STL");
+  expect_read_error<InputError>(dir.write("stl_named.off", stl), "its content is STL");
+  std::string noise(3000, '\0');
+  for (size_t i = 0; i < noise.size(); ++i)
+    noise[i] = char((i * 7919) % 251);
+  expect_read_error<InputError>(dir.write("noise.obj", noise), "holds binary data");
+  expect_read_error<InputError>(dir.write("noise.ply", noise), "not a PLY file");
+  expect_read_error<InputError>(dir.write("noise.stl", noise), "not an STL file");
+  expect_read_error<InputError>(dir.write("noise.off", noise), "not an OFF file");
+}
+
+} // namespace
+} // namespace meromorph

@@ -1,0 +1,88 @@
+// The command-line tool as a user runs it: version, help, exit codes, JSON, make.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "test_support.h"
+
+namespace meromorph {
+namespace {
+
+using test::run_cli;
+
+TEST(Cli, VersionAndHelp) {
+  const test::RunResult version = run_cli({"--version"});
+  EXPECT_EQ(version.exit_code, 0);
+  EXPECT_NE(version.out.find(std::string("meromorph ") + MEROMORPH_VERSION), std::string::npos);
+  for (std::vector<std::string> help : {std::vector<std::string>{"--help"},
+                                        {"info", "--help"},
+                                        {"make", "--help"},
+                                        {"make", "genus", "--help"}}) {
+    const test::RunResult r = run_cli(help);
+    EXPECT_EQ(r.exit_code, 0) << help[0];
+    EXPECT_NE(r.out.find("Usage"), std::string::npos) << r.out;
+  }
+}
+
+TEST(Cli, BadArgumentsExitWithTwo) {
+  EXPECT_EQ(run_cli({}).exit_code, 2);
+  EXPECT_EQ(run_cli({"frobnicate"}).exit_code, 2);
+  EXPECT_EQ(run_cli({"info"}).exit_code, 2);
+  const test::RunResult missing = run_cli({"info", "/nonexistent/mesh.off"});
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("no such file"), std::string::npos) << missing.err;
+  EXPECT_EQ(run_cli({"info", test::data_path("README.md")}).exit_code, 2);
+  EXPECT_EQ(run_cli({"make", "torus", "-R", "1", "-r", "2", "-o", "/tmp/x.ply"}).exit_code, 2);
+}
+
+TEST(Cli, InfoReportsGenusAsTextAndJson) {
+  const test::RunResult text = run_cli({"info", test::data_path("eight.off")});
+  EXPECT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("genus           2"), std::string::npos) << text.out;
+
+  const test::RunResult json = run_cli({"info", "--json", test::data_path("knot.obj")});
+  EXPECT_EQ(json.exit_code, 0) << json.err;
+  const nlohmann::json report = nlohmann::json::parse(json.out);
+  EXPECT_EQ(report["topology"]["genus"], 1);
+  EXPECT_EQ(report["topology"]["vertices"], 1440);
+  EXPECT_EQ(report["topology"]["edges"], 4320);
+  EXPECT_EQ(report["topology"]["faces"], 2880);
+  EXPECT_EQ(report["topology"]["components"], 1);
+  EXPECT_TRUE(report["ok"].get<bool>());
+  EXPECT_TRUE(report["findings"].empty());
+}
+
+TEST(Cli, JsonFindingsOfAnOpenMesh) {
+  const test::RunResult r = run_cli({"info", "--json", test::data_path("eight.open.off")});
+  EXPECT_EQ(r.exit_code, 3);
+  const nlohmann::json report = nlohmann::json::parse(r.out);
+  EXPECT_FALSE(report["ok"].get<bool>());
+  bool found_loops = false;
+  for (const auto &finding : report["findings"])
+    if (finding["code"] == "boundary_loops") {
+      found_loops = true;
+      EXPECT_EQ(finding["sizes"], nlohmann::json::array({24, 24, 24, 24}));
+    }
+  EXPECT_TRUE(found_loops) << r.out;
+}
+
+TEST(Cli, MakeWritesSurfacesThatInfoAccepts) {
+  test::TempDir dir;
+  const std::vector<std::vector<std::string>> makes = {
+      {"make", "sphere", "-s", "2", "-o", dir.path("sphere.ply")},
+      {"make", "torus", "-R", "3", "-r", "1", "--resolution", "12", "-o", dir.path("torus.off")},
+      {"make", "torus", "--method", "implicit", "--resolution", "16", "-o", dir.path("ti.obj")},
+      {"make", "genus", "-g", "4", "--resolution", "16", "--rigid-motion", "--seed", "5", "-o",
+       dir.path("g4.ply")},
+  };
+  const int genus[] = {0, 1, 1, 4};
+  for (size_t i = 0; i < makes.size(); ++i) {
+    const test::RunResult made = run_cli(makes[i]);
+    ASSERT_EQ(made.exit_code, 0) << made.err;
+    const test::RunResult info = run_cli({"info", "--json", makes[i].back()});
+    ASSERT_EQ(info.exit_code, 0) << info.err;
+    EXPECT_EQ(nlohmann::json::parse(info.out)["topology"]["genus"], genus[i]) << makes[i].back();
+  }
+}
+
+} // namespace
+} // namespace meromorph

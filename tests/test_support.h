@@ -1,0 +1,43 @@
+// Helpers for the tests: test data paths, a temporary folder, running the CLI.
+//
+// In:  file names under tests/data, text to write, command-line arguments.
+// Out: absolute paths; a folder removed at the end of the test; the CLI's exit code and output.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "mesh.h"
+
+namespace meromorph::test {
+
+std::string data_path(const std::string &name);
+
+class TempDir {
+public:
+  TempDir();
+  ~TempDir();
+  std::string path(const std::string &name) const { return root_ + "/" + name; }
+  std::string write(const std::string &name, const std::string &content) const;
+
+private:
+  std::string root_;
+};
+
+struct RunResult {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+// Runs the meromorph CLI with `arguments` (each shell-quoted).
+RunResult run_cli(const std::vector<std::string> &arguments);
+
+// Reads `path` into `mesh`, failing the test on any error.
+void load(const std::string &path, Mesh &mesh);
+
+// An OFF file with these vertices and triangles.
+std::string off_text(const std::vector<std::array<double, 3>> &positions,
+                     const std::vector<std::array<int, 3>> &triangles);
+
+} // namespace meromorph::test

@@ -1,0 +1,134 @@
+// `meromorph make sphere|torus|genus -o OUT ...`: the project's deterministic test surfaces.
+#include <iostream>
+
+#include "commands.h"
+#include "errors.h"
+#include "mesh_writer.h"
+#include "rigid_motion.h"
+#include "test_surfaces.h"
+#include "topology.h"
+
+namespace meromorph::cli {
+namespace {
+
+struct MakeOptions {
+  std::string output;
+  bool rigid_motion = false;
+  std::uint64_t seed = 1;
+  double scale = 1.0;
+  // sphere
+  int subdivisions = 4;
+  double radius = 1.0;
+  // torus
+  double major_radius = 2.0, minor_radius = 1.0;
+  int major_segments = 0, minor_segments = 0;
+  std::string method = "grid";
+  // genus surface and implicit torus
+  int genus = 2;
+  int resolution = 40;
+  bool raw_marching_cubes = false;
+};
+
+int finish(Mesh &mesh, const MakeOptions &options) {
+  if (options.rigid_motion || options.scale != 1.0) {
+    Similarity motion = options.rigid_motion ? random_rigid_motion(options.seed) : Similarity{};
+    motion.scale = options.scale;
+    apply_similarity(motion, mesh);
+  }
+  write_mesh(mesh, options.output);
+  const Topology topology = compute_topology(mesh);
+  std::cout << "wrote " << options.output << ": " << topology.vertices << " vertices, "
+            << topology.faces << " faces, genus "
+            << (topology.genus ? std::to_string(*topology.genus) : std::string("undefined"))
+            << "\n";
+  return int(ExitCode::done);
+}
+
+void add_common(CLI::App *command, MakeOptions &options) {
+  command->add_option("-o,--output", options.output, "output mesh file (.ply, .obj, .off, .stl)")
+      ->required();
+  command->add_flag("--rigid-motion", options.rigid_motion,
+                    "move the surface by a random rotation and translation (see --seed)");
+  command->add_option("--seed", options.seed, "seed of the random rigid motion")
+      ->capture_default_str();
+  command->add_option("--scale", options.scale, "uniform scale applied at the end")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+}
+
+} // namespace
+
+Command add_make_command(CLI::App &app) {
+  auto options = std::make_shared<MakeOptions>();
+  CLI::App *make = app.add_subcommand("make", "Write one of meromorph's test surfaces.");
+  make->require_subcommand(1);
+
+  CLI::App *sphere = make->add_subcommand("sphere", "Icosphere: 10 * 4^s + 2 vertices.");
+  add_common(sphere, *options);
+  sphere->add_option("-s,--subdivisions", options->subdivisions, "subdivision steps (0..9)")
+      ->capture_default_str();
+  sphere->add_option("--radius", options->radius, "radius")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+
+  CLI::App *torus = make->add_subcommand(
+      "torus", "Torus of revolution with radii R > r; its exact conformal modulus is "
+               "i*sqrt(R^2 - r^2)/r.");
+  add_common(torus, *options);
+  torus
+      ->add_option("-R,--major-radius", options->major_radius,
+                   "distance from the axis to the "
+                   "tube's centre")
+      ->capture_default_str();
+  torus->add_option("-r,--minor-radius", options->minor_radius, "radius of the tube")
+      ->capture_default_str();
+  torus->add_option("--segments", options->major_segments,
+                    "grid: quads around the axis (default: keeps quads square for the "
+                    "resolution)");
+  torus->add_option("--minor-segments", options->minor_segments, "grid: quads around the tube");
+  torus
+      ->add_option("--method", options->method,
+                   "grid (regular quads split in two) or implicit (marching cubes + isotropic "
+                   "remeshing)")
+      ->check(CLI::IsMember({"grid", "implicit"}))
+      ->capture_default_str();
+  torus->add_option("--resolution", options->resolution, "edges around the tube")
+      ->capture_default_str();
+
+  CLI::App *genus = make->add_subcommand(
+      "genus", "Closed surface of the given genus: rings of tubes in a row (marching cubes + "
+               "isotropic remeshing).");
+  add_common(genus, *options);
+  genus->add_option("-g,--genus", options->genus, "genus (0..64)")->capture_default_str();
+  genus->add_option("--resolution", options->resolution, "edges across one ring")
+      ->capture_default_str();
+  for (CLI::App *implicit : {torus, genus})
+    implicit->add_flag("--raw-marching-cubes", options->raw_marching_cubes,
+                       "keep marching cubes' triangles (many obtuse and needle-shaped ones): a "
+                       "stress test; default remeshes them isotropically");
+
+  return [options, sphere, torus, genus]() {
+    Mesh mesh;
+    if (sphere->parsed()) {
+      make_icosphere(mesh, options->subdivisions, options->radius);
+    } else if (torus->parsed()) {
+      if (options->method == "implicit") {
+        make_implicit_torus(mesh, options->major_radius, options->minor_radius, options->resolution,
+                            !options->raw_marching_cubes);
+      } else {
+        const int minor =
+            options->minor_segments > 0 ? options->minor_segments : options->resolution;
+        const int major =
+            options->major_segments > 0
+                ? options->major_segments
+                : int(std::lround(minor * options->major_radius / options->minor_radius));
+        make_grid_torus(mesh, options->major_radius, options->minor_radius, major, minor);
+      }
+    } else {
+      make_genus_surface(mesh, options->genus, options->resolution, !options->raw_marching_cubes);
+    }
+    return finish(mesh, *options);
+  };
+}
+
+} // namespace meromorph::cli

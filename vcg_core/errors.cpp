@@ -1,0 +1,16 @@
+#include "errors.h"
+
+namespace meromorph {
+
+std::string list_indices(const std::vector<int> &indices, size_t shown) {
+  std::string text;
+  const size_t n = std::min(shown, indices.size());
+  for (size_t i = 0; i < n; ++i) {
+    if (i) text += ", ";
+    text += std::to_string(indices[i]);
+  }
+  if (indices.size() > n) text += " and " + std::to_string(indices.size() - n) + " more";
+  return text;
+}
+
+} // namespace meromorph

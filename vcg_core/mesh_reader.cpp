@@ -1,0 +1,50 @@
+#include "mesh_reader.h"
+
+#include <fstream>
+#include <sstream>
+
+#include "errors.h"
+#include "format_readers.h"
+#include "text_lines.h"
+
+namespace meromorph {
+
+std::string read_whole_file(const std::string &path) {
+  std::ifstream stream(path, std::ios::binary);
+  if (!stream) throw ArgumentError(path + ": cannot be opened for reading");
+  std::ostringstream content;
+  content << stream.rdbuf();
+  return content.str();
+}
+
+MeshSource read_mesh(const std::string &path, Mesh &mesh, const Progress &progress) {
+  MeshSource source;
+  source.path = path;
+  source.format = detect_format(path);
+  progress.report(0.0, "reading " + path);
+  if (source.format == MeshFormat::ply) {
+    read_ply(path, mesh, source.notes);
+  } else {
+    const std::string content = read_whole_file(path);
+    MeshArrays arrays;
+    switch (source.format) {
+    case MeshFormat::off:
+      arrays = read_off(path, content, source.notes);
+      break;
+    case MeshFormat::obj:
+      arrays = read_obj(path, content, source.notes);
+      break;
+    case MeshFormat::stl:
+      arrays = read_stl(path, content, source.notes);
+      break;
+    case MeshFormat::ply:
+      break;
+    }
+    mesh_from_arrays(arrays, mesh);
+  }
+  vcg::tri::UpdateBounding<Mesh>::Box(mesh);
+  progress.report(1.0, "reading " + path);
+  return source;
+}
+
+} // namespace meromorph

@@ -1,0 +1,72 @@
+#include "mesh_writer.h"
+
+#include <cstdio>
+#include <filesystem>
+
+#include <wrap/io_trimesh/export_obj.h>
+#include <wrap/io_trimesh/export_off.h>
+#include <wrap/io_trimesh/export_ply.h>
+#include <wrap/io_trimesh/export_stl.h>
+
+#include "errors.h"
+#include "mesh_format.h"
+
+namespace meromorph {
+
+void refuse_to_overwrite(const std::string &output, const std::vector<std::string> &inputs) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  for (const std::string &input : inputs) {
+    const bool same =
+        fs::exists(output, error) && fs::exists(input, error)
+            ? fs::equivalent(output, input, error)
+            : fs::weakly_canonical(output, error) == fs::weakly_canonical(input, error);
+    if (same)
+      throw ArgumentError(output + ": this is the input file; meromorph never writes over its "
+                                   "input, choose another output name");
+  }
+}
+
+void write_mesh(const Mesh &mesh, const std::string &path, const WriteOptions &options,
+                const std::vector<std::string> &protected_inputs) {
+  refuse_to_overwrite(path, protected_inputs);
+  const MeshFormat format = format_from_extension(path);
+  Mesh &writable =
+      const_cast<Mesh &>(mesh); // vcglib's exporters take non-const meshes; they only read.
+
+  int mask = 0;
+  if (options.vertex_texcoords) mask |= vcg::tri::io::Mask::IOM_VERTTEXCOORD;
+  if (options.vertex_quality) mask |= vcg::tri::io::Mask::IOM_VERTQUALITY;
+  if (options.wedge_texcoords) mask |= vcg::tri::io::Mask::IOM_WEDGTEXCOORD;
+
+  // Write beside the target, then rename: a failed write never leaves a half file behind.
+  const std::string temporary = path + ".meromorph-partial";
+  int code = 0;
+  switch (format) {
+  case MeshFormat::ply:
+    code = vcg::tri::io::ExporterPLY<Mesh>::Save(writable, temporary.c_str(), mask, options.binary);
+    break;
+  case MeshFormat::obj:
+    code = vcg::tri::io::ExporterOBJ<Mesh>::Save(writable, temporary.c_str(), mask);
+    break;
+  case MeshFormat::off:
+    code = vcg::tri::io::ExporterOFF<Mesh>::Save(writable, temporary.c_str(), mask);
+    break;
+  case MeshFormat::stl:
+    code = vcg::tri::io::ExporterSTL<Mesh>::Save(writable, temporary.c_str(), options.binary);
+    break;
+  }
+  std::error_code error;
+  if (code != 0) {
+    std::filesystem::remove(temporary, error);
+    throw InputError(path + ": could not be written (" + format_name(format) + " exporter error " +
+                     std::to_string(code) + ")");
+  }
+  std::filesystem::rename(temporary, path, error);
+  if (error) {
+    std::filesystem::remove(temporary, error);
+    throw InputError(path + ": could not be written (" + error.message() + ")");
+  }
+}
+
+} // namespace meromorph

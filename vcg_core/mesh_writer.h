@@ -1,0 +1,30 @@
+// Writing the core's mesh to a file, never over an input.
+//
+// In:  a mesh, an output path (.ply, .obj, .off or .stl), and the paths that must not be written.
+// Out: the file, through vcglib's exporters (binary PLY by default, with per-vertex texture
+//      coordinates, quality and per-wedge texture coordinates when asked for).
+// Errors: ArgumentError when the output is one of the protected inputs (same file, even through
+//      another path or a link) or has an unsupported extension; InputError when writing fails.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "mesh.h"
+
+namespace meromorph {
+
+struct WriteOptions {
+  bool binary = true;
+  bool vertex_texcoords = false;
+  bool vertex_quality = false;
+  bool wedge_texcoords = false;
+};
+
+// Throws ArgumentError if `output` names the same file as any of `inputs`.
+void refuse_to_overwrite(const std::string &output, const std::vector<std::string> &inputs);
+
+void write_mesh(const Mesh &mesh, const std::string &path, const WriteOptions &options = {},
+                const std::vector<std::string> &protected_inputs = {});
+
+} // namespace meromorph

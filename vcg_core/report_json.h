@@ -1,0 +1,22 @@
+// JSON views of the core's results, shared by the CLI reports and the C ABI.
+//
+// In:  a Topology, a Validation, a MeshSource and the list of repairs.
+// Out: nlohmann::json objects with the field names documented in the README (`info --json`).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "mesh_reader.h"
+#include "topology.h"
+#include "validation.h"
+
+namespace meromorph {
+
+nlohmann::json topology_json(const Topology &topology);
+nlohmann::json findings_json(const Validation &validation);
+nlohmann::json source_json(const MeshSource &source);
+
+} // namespace meromorph

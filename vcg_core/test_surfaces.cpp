@@ -1,0 +1,118 @@
+#include "test_surfaces.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <vcg/complex/algorithms/clean.h>
+#include <vcg/complex/algorithms/create/platonic.h>
+#include <vcg/complex/algorithms/stat.h>
+
+#include "errors.h"
+#include "implicit_surface.h"
+#include "mesh_from_arrays.h"
+
+namespace meromorph {
+
+void make_icosphere(Mesh &mesh, int subdivisions, double radius) {
+  if (subdivisions < 0 || subdivisions > 9)
+    throw ArgumentError("sphere subdivisions must be between 0 and 9");
+  mesh.Clear();
+  vcg::tri::Sphere(mesh, subdivisions);
+  for (MeshVertex &v : mesh.vert)
+    v.P() = v.P().Normalize() * radius;
+  vcg::tri::Allocator<Mesh>::CompactEveryVector(mesh);
+  vcg::tri::UpdateTopology<Mesh>::FaceFace(mesh);
+  vcg::tri::UpdateBounding<Mesh>::Box(mesh);
+}
+
+void make_grid_torus(Mesh &mesh, double major_radius, double minor_radius, int major_segments,
+                     int minor_segments) {
+  if (!(major_radius > minor_radius && minor_radius > 0))
+    throw ArgumentError("a torus of revolution needs radii R > r > 0");
+  if (major_segments < 3 || minor_segments < 3)
+    throw ArgumentError("a torus needs at least 3 segments around each circle");
+  MeshArrays arrays;
+  for (int i = 0; i < major_segments; ++i) {
+    const double u = 2 * M_PI * i / major_segments;
+    for (int j = 0; j < minor_segments; ++j) {
+      const double v = 2 * M_PI * j / minor_segments;
+      const double ring = major_radius + minor_radius * std::cos(v);
+      arrays.positions.emplace_back(ring * std::cos(u), ring * std::sin(u),
+                                    minor_radius * std::sin(v));
+    }
+  }
+  auto at = [&](int i, int j) {
+    return (i % major_segments) * minor_segments + (j % minor_segments);
+  };
+  for (int i = 0; i < major_segments; ++i)
+    for (int j = 0; j < minor_segments; ++j) {
+      // (u, v) is a positively oriented chart of the outward normal: quads (i,j) (i,j+1) (i+1,j+1).
+      arrays.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      arrays.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  mesh_from_arrays(arrays, mesh);
+  if (vcg::tri::Stat<Mesh>::ComputeMeshVolume(mesh) < 0) vcg::tri::Clean<Mesh>::FlipMesh(mesh);
+  vcg::tri::UpdateTopology<Mesh>::FaceFace(mesh);
+  vcg::tri::UpdateBounding<Mesh>::Box(mesh);
+}
+
+namespace {
+
+double distance_to_circle(const Point3 &p, const Point3 &centre, double radius) {
+  const double dx = p[0] - centre[0], dy = p[1] - centre[1], dz = p[2] - centre[2];
+  const double radial = std::sqrt(dx * dx + dy * dy) - radius;
+  return std::sqrt(radial * radial + dz * dz);
+}
+
+// Polynomial smooth minimum (blend width k): rings that come closer than k merge smoothly.
+double smooth_min(double a, double b, double k) {
+  const double h = std::clamp(0.5 + 0.5 * (b - a) / k, 0.0, 1.0);
+  return b * (1 - h) + a * h - k * h * (1 - h);
+}
+
+} // namespace
+
+void make_implicit_torus(Mesh &mesh, double major_radius, double minor_radius, int resolution,
+                         bool remesh) {
+  if (!(major_radius > minor_radius && minor_radius > 0))
+    throw ArgumentError("a torus of revolution needs radii R > r > 0");
+  if (resolution < 6) throw ArgumentError("resolution must be at least 6");
+  const double voxel = 2 * M_PI * minor_radius / resolution;
+  const double extent = major_radius + minor_radius;
+  const vcg::Box3d box(Point3(-extent, -extent, -minor_radius),
+                       Point3(extent, extent, minor_radius));
+  extract_isosurface(
+      [&](const Point3 &p) {
+        return distance_to_circle(p, Point3(0, 0, 0), major_radius) - minor_radius;
+      },
+      box, voxel, mesh, remesh);
+}
+
+void make_genus_surface(Mesh &mesh, int genus, int resolution, bool remesh) {
+  if (genus < 0 || genus > 64) throw ArgumentError("genus must be between 0 and 64");
+  if (resolution < 10) throw ArgumentError("resolution must be at least 10");
+  const double ring = 1.0, tube = 0.35, spacing = 2.6, blend = 0.15;
+  const double voxel = 2 * (ring + tube) / resolution;
+  if (genus == 0) {
+    const vcg::Box3d box(Point3(-1, -1, -1), Point3(1, 1, 1));
+    extract_isosurface([](const Point3 &p) { return p.Norm() - 1.0; }, box, voxel, mesh, remesh);
+    return;
+  }
+  const double reach = ring + tube;
+  const vcg::Box3d box(Point3(-reach, -reach, -tube),
+                       Point3(spacing * (genus - 1) + reach, reach, tube));
+  extract_isosurface(
+      [&](const Point3 &p) {
+        // Only the nearest two rings matter for the blend.
+        const int nearest = std::clamp(int(std::lround(p[0] / spacing)), 0, genus - 1);
+        double d = distance_to_circle(p, Point3(spacing * nearest, 0, 0), ring);
+        for (int k : {nearest - 1, nearest + 1})
+          if (k >= 0 && k < genus)
+            d = smooth_min(d, distance_to_circle(p, Point3(spacing * k, 0, 0), ring), blend);
+        return d - tube;
+      },
+      box, voxel, mesh, remesh);
+}
+
+} // namespace meromorph

@@ -1,0 +1,31 @@
+// The project's own test surfaces, deterministic: spheres, tori of revolution (whose conformal
+// modulus is known exactly) and closed surfaces of any genus.
+//
+// In:  shape parameters (below); all lengths in model units.
+// Out: a closed, connected, consistently and outward oriented triangle mesh, compact.
+#pragma once
+
+#include "mesh.h"
+
+namespace meromorph {
+
+// Icosphere: an icosahedron subdivided `subdivisions` times and projected on the sphere;
+// 10 * 4^s + 2 vertices.
+void make_icosphere(Mesh &mesh, int subdivisions, double radius = 1.0);
+
+// Torus of revolution around the z axis, radii R > r (exact modulus i sqrt(R^2 - r^2) / r),
+// as a regular grid of `major_segments` x `minor_segments` quads split into triangles.
+void make_grid_torus(Mesh &mesh, double major_radius, double minor_radius, int major_segments,
+                     int minor_segments);
+
+// The same torus of revolution triangulated by marching cubes and isotropic remeshing, with
+// about `resolution` edges around the minor circle: a different, irregular triangulation.
+// With `remesh` false, marching cubes' own triangles are kept (obtuse and needle-shaped ones).
+void make_implicit_torus(Mesh &mesh, double major_radius, double minor_radius, int resolution,
+                         bool remesh = true);
+
+// A closed surface of genus `genus` (0..): `genus` rings of tubes in a row, each ring blended with
+// the next; genus 0 is a sphere. `resolution` is about the number of edges across one ring.
+void make_genus_surface(Mesh &mesh, int genus, int resolution, bool remesh = true);
+
+} // namespace meromorph
