@@ -50,9 +50,12 @@ TEST(BadFiles, TruncatedOff) {
   TempDir dir;
   const std::string eight = file_bytes(test::data_path("eight.off"));
   // Cut mid-line, and cut at a line's end.
-  expect_read_error<InputError>(dir.write("cut_in_vertices.off", eight.substr(0, 2000)),
-                                "ends in the middle of vertex 70 of the 766 vertices its header "
-                                "announces (truncated?)");
+  expect_read_error<InputError>(dir.write("cut_early.off", eight.substr(0, 2000)),
+                                "more than a file of 2000 bytes can hold (truncated, or a wrong "
+                                "header)");
+  expect_read_error<InputError>(
+      dir.write("cut_in_vertices.off", "OFF\n# " + std::string(100, '-') + "\n3 1 0\n0 0 0\n1 0"),
+      "ends in the middle of vertex 1 of the 3 vertices its header announces (truncated?)");
   expect_read_error<InputError>(dir.write("cut_in_faces.off", eight.substr(0, eight.size() - 500)),
                                 "of the 1536 faces its header announces (truncated?)");
   const size_t line_end = eight.rfind('\n', eight.size() - 500) + 1;
@@ -78,6 +81,23 @@ TEST(BadFiles, PlyHeaderLiesAboutItsCounts) {
                            "property list uchar int vertex_indices\nend_header\n"
                            "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
       "ends before all the vertices and faces its header announces");
+}
+
+TEST(BadFiles, HeaderCountsLargerThanTheFileCanHold) {
+  TempDir dir;
+  expect_read_error<InputError>(dir.write("huge.off", "OFF\n999999999999 1 0\n0 0 0\n"),
+                                "more than a file of 27 bytes can hold");
+  expect_read_error<InputError>(
+      dir.write("huge.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\n"
+                            "property float x\nproperty float y\nproperty float z\n"
+                            "element face 2\nproperty list uchar int vertex_indices\n"
+                            "end_header\n0 0 0\n"),
+      "more vertices and faces than a file of");
+  expect_read_error<InputError>(dir.write("overflow.ply",
+                                          "ply\nformat ascii 1.0\nelement vertex 999999999999\n"
+                                          "property float x\nproperty float y\nproperty float z\n"
+                                          "end_header\n0 0 0\n"),
+                                "negative or too large count");
 }
 
 TEST(BadFiles, IndicesOutOfRangeNameTheLine) {

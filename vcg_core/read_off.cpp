@@ -27,6 +27,11 @@ MeshArrays read_off(const std::string &path, const std::string &text,
   const long face_count = lines.integer(first_count + 1);
   if (vertex_count < 0 || face_count < 0)
     lines.fail("the vertex and face counts must not be negative");
+  // Each vertex takes at least 6 bytes ("0 0 0\n") and each face at least 8 ("3 0 1 2\n").
+  if (double(vertex_count) * 6 + double(face_count) * 8 > double(text.size()))
+    lines.fail("the header announces " + std::to_string(vertex_count) + " vertices and " +
+               std::to_string(face_count) + " faces, more than a file of " +
+               std::to_string(text.size()) + " bytes can hold (truncated, or a wrong header)");
 
   MeshArrays arrays;
   arrays.positions.reserve(size_t(vertex_count));

@@ -2,6 +2,7 @@
 #include "format_readers.h"
 
 #include <cstring>
+#include <filesystem>
 #include <string>
 
 #include <wrap/io_trimesh/import_ply.h>
@@ -37,10 +38,31 @@ std::string explain_ply_error(int code) {
   }
 }
 
+// The header's element counts must fit in the file: each value takes at least one byte. Catches
+// headers that lie about their counts before anything is allocated.
+void check_header_counts(const std::string &path) {
+  vcg::ply::PlyFile header;
+  if (header.Open(path.c_str(), vcg::ply::PlyFile::MODE_READ) != 0) return; // the importer says why
+  std::error_code error;
+  const double file_size = double(std::filesystem::file_size(path, error));
+  double minimum = 0;
+  for (const vcg::ply::PlyElement &element : header.elements) {
+    if (element.number < 0)
+      throw InputError(path + ": the PLY header gives element '" + element.name +
+                       "' a negative or too large count");
+    minimum += double(element.props.size()) * double(element.number);
+  }
+  if (minimum > file_size)
+    throw InputError(path + ": the PLY header announces more vertices and faces than a file of " +
+                     std::to_string(std::uintmax_t(file_size)) +
+                     " bytes can hold (truncated, or a wrong header)");
+}
+
 } // namespace
 
 void read_ply(const std::string &path, Mesh &mesh, std::vector<std::string> &notes) {
   using Importer = vcg::tri::io::ImporterPLY<Mesh>;
+  check_header_counts(path);
   int mask = 0;
   mesh.Clear();
   const int code = Importer::Open(mesh, path.c_str(), mask);

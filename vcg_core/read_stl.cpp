@@ -22,6 +22,7 @@ MeshArrays weld_corners(const std::vector<Point3> &corners, std::vector<std::str
   }
   for (size_t t = 0; t + 2 < corners.size(); t += 3)
     arrays.triangles.push_back({corner_vertex[t], corner_vertex[t + 1], corner_vertex[t + 2]});
+  if (corners.empty()) return arrays;
   notes.push_back("STL stores no shared vertices: welded " + std::to_string(corners.size()) +
                   " triangle corners at identical positions into " +
                   std::to_string(arrays.positions.size()) + " vertices");

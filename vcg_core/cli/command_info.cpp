@@ -79,7 +79,8 @@ int run_info(const InfoOptions &options) {
     std::cerr << "meromorph: " << options.input
               << " cannot be parameterized: " << main_finding->message
               << (others ? " (and " + std::to_string(others) +
-                               " more problems; the full list is on standard output)"
+                               (others == 1 ? " more problem" : " more problems") +
+                               "; the full list is on standard output)"
                          : std::string())
               << "\n";
     return int(ExitCode::cannot_parameterize);
