@@ -1,0 +1,109 @@
+// `meromorph forms INPUT [--report R.json] [--solver cholmod|ldlt] [--repair] [--quiet]`:
+// holomorphic 1-forms, periods, modulus or Riemann matrix.
+#include <chrono>
+#include <fstream>
+#include <iostream>
+
+#include "commands.h"
+#include "errors.h"
+#include "holomorphic_pipeline.h"
+#include "mesh_reader.h"
+#include "mesh_writer.h"
+#include "repair.h"
+#include "report_json.h"
+#include "terminal_progress.h"
+
+namespace meromorph::cli {
+namespace {
+
+struct FormsOptions {
+  std::string input;
+  std::string report;
+  std::string solver = "cholmod";
+  bool repair = false;
+  bool quiet = false;
+};
+
+nlohmann::json complex_matrix(const Eigen::MatrixXcd &matrix) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (long i = 0; i < matrix.rows(); ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (long j = 0; j < matrix.cols(); ++j)
+      row.push_back({matrix(i, j).real(), matrix(i, j).imag()});
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+int run_forms(const FormsOptions &options) {
+  if (!options.report.empty()) refuse_to_overwrite(options.report, {options.input});
+  const SolverKind solver = solver_from_name(options.solver);
+  const auto start = std::chrono::steady_clock::now();
+  Mesh mesh;
+  const MeshSource source = read_mesh(options.input, mesh);
+  std::vector<std::string> repairs;
+  if (options.repair) repairs = repair_mesh(mesh);
+  const double read_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+  TerminalProgress bar(options.quiet);
+  const HolomorphicForms forms = compute_holomorphic_forms(mesh, solver, bar.progress());
+  bar.finish();
+
+  nlohmann::json timings = {{"read", read_ms}};
+  for (const auto &[stage, ms] : forms.timings_ms)
+    timings[stage] = ms;
+  nlohmann::json report = {
+      {"input", source_json(source)},
+      {"repairs", repairs},
+      {"genus", forms.genus},
+      {"euler", 2 - 2 * forms.genus},
+      {"solver", solver_name(solver)},
+      {"loop_periods", complex_matrix(forms.loop_periods)},
+      {"a_periods", complex_matrix(forms.a_periods)},
+      {"b_periods", complex_matrix(forms.b_periods)},
+      {"residuals",
+       {{"closedness", forms.closedness_residual},
+        {"coclosedness", forms.coclosedness_residual},
+        {"conjugate_fit", forms.conjugate_residual},
+        {"intersection_rounding", forms.wedge_rounding}}},
+      {"non_holomorphicity",
+       {{"mean", forms.non_holomorphicity_mean}, {"max", forms.non_holomorphicity_max}}},
+      {"timings_ms", timings},
+      {"version", MEROMORPH_VERSION}};
+  if (forms.modulus) report["modulus"] = {forms.modulus->real(), forms.modulus->imag()};
+  if (forms.genus >= 2) report["riemann_matrix"] = complex_matrix(forms.riemann_matrix);
+
+  if (!options.report.empty()) {
+    std::ofstream(options.report) << report.dump(2) << "\n";
+  }
+  if (!options.quiet || options.report.empty()) {
+    std::cout << "genus " << forms.genus;
+    if (forms.modulus)
+      std::cout << ", modulus " << forms.modulus->real()
+                << (forms.modulus->imag() < 0 ? " - " : " + ") << std::abs(forms.modulus->imag())
+                << "i";
+    if (forms.genus >= 2) std::cout << ", Riemann matrix (see the report)";
+    std::cout << ", non-holomorphicity " << forms.non_holomorphicity_mean << "\n";
+    if (options.report.empty()) std::cout << report.dump(2) << "\n";
+  }
+  return int(ExitCode::done);
+}
+
+} // namespace
+
+Command add_forms_command(CLI::App &app) {
+  auto options = std::make_shared<FormsOptions>();
+  CLI::App *forms = app.add_subcommand(
+      "forms", "Holomorphic 1-forms of a closed surface: periods, the modulus (genus 1) or the "
+               "Riemann matrix (genus >= 2), with residuals and timings.");
+  forms->add_option("INPUT", options->input, "mesh file (.ply, .obj, .off, .stl)")->required();
+  forms->add_option("--report", options->report, "write the JSON report here (else to stdout)");
+  forms->add_option("--solver", options->solver, "cholmod (default) or ldlt")
+      ->check(CLI::IsMember({"cholmod", "ldlt"}));
+  forms->add_flag("--repair", options->repair, "apply the safe repairs first (see info --help)");
+  forms->add_flag("--quiet", options->quiet, "no progress bar");
+  return [options] { return run_forms(*options); };
+}
+
+} // namespace meromorph::cli

@@ -1,0 +1,29 @@
+// Closed 1-forms as vectors on faces, and the face geometry they need.
+//
+// In:  a mesh, its oriented edges, and a closed 1-form (one value per edge).
+// Out: per face, the unique vector a in the face's plane with <a, p_j - p_i> = form(ij) on its
+//      three sides (the gradient of the linear function the form integrates to on that face);
+//      face unit normals and areas. The Hodge star of a face vector is n x a.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "mesh.h"
+#include "mesh_edges.h"
+
+namespace meromorph {
+
+struct FaceGeometry {
+  std::vector<Eigen::Vector3d> normals; // unit
+  std::vector<double> areas;
+};
+
+FaceGeometry face_geometry(const Mesh &mesh);
+
+// Face vectors, one row per face (F x 3).
+Eigen::MatrixX3d face_vectors(const Mesh &mesh, const MeshEdges &edges,
+                              const FaceGeometry &geometry, const Eigen::VectorXd &form);
+
+} // namespace meromorph

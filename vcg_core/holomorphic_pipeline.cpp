@@ -1,0 +1,151 @@
+#include "holomorphic_pipeline.h"
+
+#include <chrono>
+
+#include <Eigen/Dense>
+
+#include "cotan_laplacian.h"
+#include "errors.h"
+#include "face_vectors.h"
+#include "harmonic_forms.h"
+#include "holomorphic_forms.h"
+#include "periods.h"
+#include "validation.h"
+
+namespace meromorph {
+namespace {
+
+class StageClock {
+public:
+  explicit StageClock(std::vector<std::pair<std::string, double>> &timings) : timings_(timings) {}
+  void done(const std::string &stage) {
+    const auto now = std::chrono::steady_clock::now();
+    timings_.push_back({stage, std::chrono::duration<double, std::milli>(now - start_).count()});
+    start_ = now;
+  }
+
+private:
+  std::vector<std::pair<std::string, double>> &timings_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+double closedness(const MeshEdges &edges, const Eigen::VectorXd &form) {
+  double worst = 0;
+  for (size_t f = 0; f < edges.face_edges.size(); ++f) {
+    double sum = 0;
+    for (int k = 0; k < 3; ++k)
+      sum += edges.face_signs[f][k] * form[edges.face_edges[f][k]];
+    worst = std::max(worst, std::abs(sum));
+  }
+  return worst;
+}
+
+} // namespace
+
+HolomorphicForms compute_holomorphic_forms(const Mesh &mesh, SolverKind solver,
+                                           const Progress &progress) {
+  const Validation validation = validate_mesh(mesh);
+  if (!validation.ok()) throw InputError(validation.findings.front().message);
+
+  HolomorphicForms out;
+  StageClock clock(out.timings_ms);
+  const int vertex_count = int(mesh.vert.size());
+
+  progress.report(0.0, "edges and cotangent weights");
+  out.edges = build_mesh_edges(mesh);
+  out.weights = cotan_weights(mesh, out.edges);
+  const Eigen::SparseMatrix<double> laplacian =
+      cotan_laplacian(vertex_count, out.edges, out.weights);
+  clock.done("laplacian");
+
+  progress.report(0.1, "factoring the Laplacian");
+  const std::unique_ptr<LaplacianSolver> factored = factor_laplacian(laplacian, solver);
+  clock.done("factorization");
+
+  progress.report(0.5, "homology basis");
+  out.homology = tree_cotree(mesh, out.edges);
+  out.genus = out.homology.genus;
+  clock.done("homology");
+  if (out.genus == 0) return out;
+
+  progress.report(0.6, "harmonic forms");
+  out.harmonic =
+      harmonic_forms(out.homology.dual_forms, vertex_count, out.edges, out.weights, *factored);
+  clock.done("harmonic");
+
+  progress.report(0.8, "holomorphic forms and periods");
+  const FaceGeometry geometry = face_geometry(mesh);
+  std::vector<Eigen::MatrixX3d> vectors;
+  for (const Eigen::VectorXd &h : out.harmonic) {
+    vectors.push_back(face_vectors(mesh, out.edges, geometry, h));
+    out.closedness_residual = std::max(out.closedness_residual, closedness(out.edges, h));
+    const Eigen::VectorXd divergence = weighted_divergence(vertex_count, out.edges, out.weights, h);
+    double scale = 0;
+    for (int e = 0; e < out.edges.edge_count(); ++e)
+      scale = std::max(scale, std::abs(out.weights[e] * h[e]));
+    out.coclosedness_residual = std::max(
+        out.coclosedness_residual, divergence.tail(vertex_count - 1).cwiseAbs().maxCoeff() / scale);
+  }
+  const ConjugateFit fit = conjugate_coefficients(vectors, geometry);
+  out.conjugate = fit.coefficients;
+  out.conjugate_residual = fit.relative_residual;
+
+  const int n = 2 * out.genus;
+  // Periods of tau_j = h_j + i *h_j along the primal loops.
+  Eigen::MatrixXd real_periods(n, n);
+  for (int j = 0; j < n; ++j)
+    for (int k = 0; k < n; ++k)
+      real_periods(j, k) = integrate(out.harmonic[j], out.homology.primal_loops[k]);
+  out.loop_periods =
+      real_periods.cast<std::complex<double>>() +
+      std::complex<double>(0, 1) * (out.conjugate * real_periods).cast<std::complex<double>>();
+
+  // Coordinates in the omega basis: the loop integrals of omega are +-delta.
+  Eigen::VectorXd loop_sign(n);
+  for (int k = 0; k < n; ++k)
+    loop_sign[k] = integrate(out.homology.dual_forms[k], out.homology.primal_loops[k]);
+
+  out.wedge = wedge_matrix(vectors, geometry, &out.wedge_rounding);
+  out.symplectic = symplectic_basis(out.wedge);
+  const Eigen::MatrixXd basis = out.symplectic.cast<double>();
+  const Eigen::MatrixXd basis_inverse = basis.inverse();
+
+  // phi_k = holomorphic form of alpha_k = sum_j P_jk tau_j; its periods along the canonical cycles.
+  const int g = out.genus;
+  out.a_periods.resize(g, g);
+  out.b_periods.resize(g, g);
+  for (int k = 0; k < g; ++k) {
+    Eigen::VectorXcd coordinates = Eigen::VectorXcd::Zero(n);
+    for (int j = 0; j < n; ++j)
+      coordinates += basis(j, k) * out.loop_periods.row(j).transpose().cwiseQuotient(
+                                       loop_sign.cast<std::complex<double>>());
+    const Eigen::VectorXcd periods = basis_inverse.cast<std::complex<double>>() * coordinates;
+    out.a_periods.row(k) = periods.head(g).transpose();
+    out.b_periods.row(k) = periods.tail(g).transpose();
+  }
+  out.riemann_matrix = out.a_periods.inverse() * out.b_periods;
+  if (out.riemann_matrix.imag().trace() < 0) { // the opposite orientation convention: b -> -b
+    out.b_periods = -out.b_periods;
+    out.riemann_matrix = -out.riemann_matrix;
+  }
+  if (g == 1) out.modulus = reduce_modulus(out.riemann_matrix(0, 0));
+
+  // Non-holomorphicity of phi_1.
+  Eigen::VectorXd first = basis.col(0);
+  const Eigen::MatrixX3d real_part = combine(vectors, first);
+  const Eigen::MatrixX3d imaginary_part = combine(vectors, out.conjugate.transpose() * first);
+  const LocalCoefficients local = local_coefficients(mesh, geometry, real_part, imaginary_part);
+  double weighted = 0, total_area = 0;
+  for (size_t f = 0; f < local.f.size(); ++f) {
+    const double ratio = std::abs(local.g[f]) / std::abs(local.f[f]);
+    weighted += geometry.areas[f] * ratio;
+    total_area += geometry.areas[f];
+    out.non_holomorphicity_max = std::max(out.non_holomorphicity_max, ratio);
+  }
+  out.non_holomorphicity_mean = weighted / total_area;
+  clock.done("holomorphic");
+  progress.report(1.0, "done");
+  return out;
+}
+
+} // namespace meromorph

@@ -1,0 +1,53 @@
+// The holomorphic 1-forms of a closed surface and their periods, stage by stage.
+//
+// In:  a mesh that validation accepts (closed, connected, oriented manifold), the solver to use,
+//      and progress. Throws InputError naming the problem otherwise.
+// Out: `HolomorphicForms`: the homology basis (2g loops), closed, harmonic and conjugate forms, the
+//      canonical basis, the periods of the normalized holomorphic forms along it, the modulus
+//      (genus 1, reduced) or the Riemann matrix (genus >= 2), the residuals that measure how
+//      discrete the result is, and the time of each stage in milliseconds.
+#pragma once
+
+#include <complex>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "homology_basis.h"
+#include "laplacian_solver.h"
+#include "mesh.h"
+#include "mesh_edges.h"
+#include "progress.h"
+
+namespace meromorph {
+
+struct HolomorphicForms {
+  int genus = 0;
+  MeshEdges edges;
+  std::vector<double> weights;
+  HomologyBasis homology;
+  std::vector<Eigen::VectorXd> harmonic;       // h_j, 2g of them
+  Eigen::MatrixXd conjugate;                   // *h_j ~ sum_k C_jk h_k
+  Eigen::MatrixXcd loop_periods;               // tau_j along primal loop k (2g x 2g)
+  Eigen::MatrixXi wedge;                       // integral of omega_j ^ omega_k
+  Eigen::MatrixXi symplectic;                  // canonical basis in omega coordinates
+  Eigen::MatrixXcd a_periods, b_periods;       // phi_j along a_k, b_k (g x g)
+  std::optional<std::complex<double>> modulus; // genus 1, reduced
+  Eigen::MatrixXcd riemann_matrix;             // g x g (genus >= 1)
+
+  double closedness_residual = 0;   // max over faces and forms of |sum around the face|
+  double coclosedness_residual = 0; // max over vertices of |div h| / max |w h|
+  double conjugate_residual = 0;    // relative L2 error of the conjugate fit
+  double wedge_rounding = 0;        // distance of the intersection numbers to integers
+  double non_holomorphicity_mean = 0, non_holomorphicity_max = 0; // |g| / |f|, area-weighted mean
+  std::vector<std::pair<std::string, double>> timings_ms;
+};
+
+HolomorphicForms compute_holomorphic_forms(const Mesh &mesh,
+                                           SolverKind solver = SolverKind::cholmod,
+                                           const Progress &progress = {});
+
+} // namespace meromorph

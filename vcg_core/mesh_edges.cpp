@@ -1,0 +1,48 @@
+#include "mesh_edges.h"
+
+#include <algorithm>
+#include <unordered_map>
+
+#include "errors.h"
+
+namespace meromorph {
+
+MeshEdges build_mesh_edges(const Mesh &mesh) {
+  MeshEdges edges;
+  const int face_count = int(mesh.face.size());
+  edges.face_edges.assign(face_count, {-1, -1, -1});
+  edges.face_signs.assign(face_count, {0, 0, 0});
+  std::unordered_map<std::uint64_t, int> edge_of;
+  edge_of.reserve(size_t(face_count) * 2);
+  auto key = [](int a, int b) {
+    return (std::uint64_t(std::min(a, b)) << 32) | std::uint32_t(std::max(a, b));
+  };
+  for (int f = 0; f < face_count; ++f) {
+    const MeshFace &face = mesh.face[f];
+    for (int k = 0; k < 3; ++k) {
+      const int from = index_of(mesh, face.cV(k)), to = index_of(mesh, face.cV((k + 1) % 3));
+      auto [it, inserted] = edge_of.emplace(key(from, to), edges.edge_count());
+      if (inserted) {
+        edges.vertices.push_back({from, to});
+        edges.faces.push_back({f, -1});
+        edges.face_edges[f][k] = it->second;
+        edges.face_signs[f][k] = 1;
+      } else {
+        const int e = it->second;
+        if (edges.vertices[e][0] != to || edges.faces[e][1] != -1)
+          throw InputError("edge " + std::to_string(from) + "-" + std::to_string(to) +
+                           " is not shared by exactly two consistently oriented faces");
+        edges.faces[e][1] = f;
+        edges.face_edges[f][k] = e;
+        edges.face_signs[f][k] = -1;
+      }
+    }
+  }
+  for (int e = 0; e < edges.edge_count(); ++e)
+    if (edges.faces[e][1] < 0)
+      throw InputError("edge " + std::to_string(edges.vertices[e][0]) + "-" +
+                       std::to_string(edges.vertices[e][1]) + " lies on a boundary");
+  return edges;
+}
+
+} // namespace meromorph
