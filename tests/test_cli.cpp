@@ -1,4 +1,7 @@
 // The command-line tool as a user runs it: version, help, exit codes, JSON, make.
+#include <cmath>
+#include <fstream>
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -82,6 +85,37 @@ TEST(Cli, MakeWritesSurfacesThatInfoAccepts) {
     ASSERT_EQ(info.exit_code, 0) << info.err;
     EXPECT_EQ(nlohmann::json::parse(info.out)["topology"]["genus"], genus[i]) << makes[i].back();
   }
+}
+
+TEST(Cli, FormsWritesAReportWithTheModulus) {
+  test::TempDir dir;
+  ASSERT_EQ(run_cli({"make", "torus", "-R", "2", "-r", "1", "--resolution", "40", "-o",
+                     dir.path("torus.ply")})
+                .exit_code,
+            0);
+  const test::RunResult r =
+      run_cli({"forms", dir.path("torus.ply"), "--report", dir.path("report.json"), "--quiet"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream stream(dir.path("report.json"));
+  const nlohmann::json report = nlohmann::json::parse(stream);
+  EXPECT_EQ(report["genus"], 1);
+  EXPECT_NEAR(report["modulus"][1].get<double>(), std::sqrt(3.0), 0.01);
+  EXPECT_NEAR(report["modulus"][0].get<double>(), 0.0, 0.01);
+  for (const char *stage : {"read", "laplacian", "factorization", "harmonic", "holomorphic"})
+    EXPECT_TRUE(report["timings_ms"].contains(stage)) << stage;
+  EXPECT_LT(report["residuals"]["closedness"].get<double>(), 1e-12);
+  EXPECT_LT(report["non_holomorphicity"]["mean"].get<double>(), 0.1);
+
+  const test::RunResult genus2 = run_cli({"forms", test::data_path("eight.off"), "--quiet"});
+  ASSERT_EQ(genus2.exit_code, 0) << genus2.err;
+  const nlohmann::json report2 = nlohmann::json::parse(genus2.out.substr(genus2.out.find('{')));
+  EXPECT_EQ(report2["riemann_matrix"].size(), 2u);
+
+  const test::RunResult open = run_cli({"forms", test::data_path("eight.hole.off")});
+  EXPECT_EQ(open.exit_code, 3);
+  EXPECT_NE(open.err.find("boundary loop"), std::string::npos) << open.err;
+  EXPECT_EQ(run_cli({"forms", dir.path("torus.ply"), "--report", dir.path("torus.ply")}).exit_code,
+            2);
 }
 
 } // namespace
