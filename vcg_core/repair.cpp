@@ -15,11 +15,7 @@ std::string count(int n, const char *one, const char *many) {
 int remove_zero_area_faces(Mesh &mesh) {
   int removed = 0;
   for (MeshFace &face : mesh.face) {
-    if (face.IsD()) continue;
-    const Point3 &a = face.cP(0), &b = face.cP(1), &c = face.cP(2);
-    const double longest =
-        std::max({(b - a).SquaredNorm(), (c - b).SquaredNorm(), (a - c).SquaredNorm()});
-    if (((b - a) ^ (c - a)).Norm() <= 2 * zero_area_tolerance * longest) {
+    if (!face.IsD() && has_zero_area(face)) {
       vcg::tri::Allocator<Mesh>::DeleteFace(mesh, face);
       ++removed;
     }

@@ -1,5 +1,7 @@
 #include "topology.h"
 
+#include "validation.h"
+
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/append.h>
 
@@ -8,8 +10,7 @@ namespace meromorph {
 void copy_with_face_adjacency(const Mesh &mesh, Mesh &copy) {
   vcg::tri::Append<Mesh, Mesh>::MeshCopy(copy, const_cast<Mesh &>(mesh));
   for (MeshFace &face : copy.face)
-    if (!face.IsD() && (face.V(0) == face.V(1) || face.V(1) == face.V(2) || face.V(2) == face.V(0)))
-      vcg::tri::Allocator<Mesh>::DeleteFace(copy, face);
+    if (!face.IsD() && repeats_a_vertex(face)) vcg::tri::Allocator<Mesh>::DeleteFace(copy, face);
   vcg::tri::UpdateTopology<Mesh>::FaceFace(copy);
 }
 

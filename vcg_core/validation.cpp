@@ -54,6 +54,18 @@ const Finding *Validation::find(FindingKind kind) const {
   return nullptr;
 }
 
+bool repeats_a_vertex(const MeshFace &face) {
+  return face.cV(0) == face.cV(1) || face.cV(1) == face.cV(2) || face.cV(2) == face.cV(0);
+}
+
+bool has_zero_area(const MeshFace &face) {
+  const Point3 &a = face.cP(0), &b = face.cP(1), &c = face.cP(2);
+  const double twice_area = ((b - a) ^ (c - a)).Norm();
+  const double longest =
+      std::max({(b - a).SquaredNorm(), (c - b).SquaredNorm(), (a - c).SquaredNorm()});
+  return std::isfinite(twice_area) && twice_area <= 2 * zero_area_tolerance * longest;
+}
+
 namespace {
 
 std::string plural(size_t n, const char *one, const char *many) {
@@ -93,15 +105,9 @@ void check_faces(const Mesh &mesh, Validation &out) {
   Finding flat{FindingKind::zero_area_faces, true};
   for (size_t f = 0; f < mesh.face.size(); ++f) {
     const MeshFace &face = mesh.face[f];
-    if (face.cV(0) == face.cV(1) || face.cV(1) == face.cV(2) || face.cV(2) == face.cV(0)) {
+    if (repeats_a_vertex(face))
       repeated.faces.push_back(int(f));
-      continue;
-    }
-    const Point3 &a = face.cP(0), &b = face.cP(1), &c = face.cP(2);
-    const double twice_area = ((b - a) ^ (c - a)).Norm();
-    const double longest =
-        std::max({(b - a).SquaredNorm(), (c - b).SquaredNorm(), (a - c).SquaredNorm()});
-    if (std::isfinite(twice_area) && twice_area <= 2 * zero_area_tolerance * longest)
+    else if (has_zero_area(face))
       flat.faces.push_back(int(f));
   }
   if (!repeated.faces.empty()) {

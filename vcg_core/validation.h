@@ -55,6 +55,11 @@ struct Validation {
 // Faces whose area is at most this fraction of their longest edge squared count as zero-area.
 constexpr double zero_area_tolerance = 1e-12;
 
+// A face that uses one vertex twice.
+bool repeats_a_vertex(const MeshFace &face);
+// A face whose area is at most zero_area_tolerance times its longest edge squared.
+bool has_zero_area(const MeshFace &face);
+
 Validation validate_mesh(const Mesh &mesh);
 
 // One paragraph for the user: every finding, and what to do about it.
