@@ -130,6 +130,24 @@ HolomorphicForms compute_holomorphic_forms(const Mesh &mesh, SolverKind solver,
   }
   if (g == 1) out.modulus = reduce_modulus(out.riemann_matrix(0, 0));
 
+  // Edge values of phi_k = sum_j P_jk tau_j, then of the normalized psi = A^-1 phi.
+  std::vector<Eigen::VectorXcd> tau;
+  for (int j = 0; j < n; ++j) {
+    Eigen::VectorXd conjugate = Eigen::VectorXd::Zero(out.edges.edge_count());
+    for (int l = 0; l < n; ++l)
+      conjugate += out.conjugate(j, l) * out.harmonic[l];
+    tau.push_back(out.harmonic[j].cast<std::complex<double>>() +
+                  std::complex<double>(0, 1) * conjugate.cast<std::complex<double>>());
+  }
+  const Eigen::MatrixXcd a_inverse = out.a_periods.inverse();
+  for (int m = 0; m < g; ++m) {
+    Eigen::VectorXcd psi = Eigen::VectorXcd::Zero(out.edges.edge_count());
+    for (int k = 0; k < g; ++k)
+      for (int j = 0; j < n; ++j)
+        psi += a_inverse(m, k) * basis(j, k) * tau[j];
+    out.normalized.push_back(std::move(psi));
+  }
+
   // Non-holomorphicity of phi_1.
   Eigen::VectorXd first = basis.col(0);
   const Eigen::MatrixX3d real_part = combine(vectors, first);

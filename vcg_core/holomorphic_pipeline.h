@@ -37,6 +37,7 @@ struct HolomorphicForms {
   Eigen::MatrixXcd a_periods, b_periods;       // phi_j along a_k, b_k (g x g)
   std::optional<std::complex<double>> modulus; // genus 1, reduced
   Eigen::MatrixXcd riemann_matrix;             // g x g (genus >= 1)
+  std::vector<Eigen::VectorXcd> normalized;    // psi_m per edge: A-periods delta, B-periods Omega
 
   double closedness_residual = 0;   // max over faces and forms of |sum around the face|
   double coclosedness_residual = 0; // max over vertices of |div h| / max |w h|

@@ -19,37 +19,57 @@ const char *solver_name(SolverKind kind) {
 
 namespace {
 
-// L without row and column 0.
-Eigen::SparseMatrix<double> pinned(const Eigen::SparseMatrix<double> &laplacian) {
-  const int n = int(laplacian.rows()) - 1;
+// Free vertices numbered densely; pinned ones get -1.
+std::vector<int> free_numbering(int size, const std::vector<int> &pinned) {
+  std::vector<int> numbering(size, 0);
+  for (int p : pinned)
+    numbering.at(p) = -1;
+  int next = 0;
+  for (int &n : numbering)
+    if (n == 0) n = next++;
+  return numbering;
+}
+
+// L restricted to the free vertices.
+Eigen::SparseMatrix<double> restricted(const Eigen::SparseMatrix<double> &laplacian,
+                                       const std::vector<int> &numbering, int free_count) {
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(size_t(laplacian.nonZeros()));
   for (int column = 0; column < laplacian.outerSize(); ++column)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(laplacian, column); it; ++it)
-      if (it.row() > 0 && it.col() > 0)
-        entries.emplace_back(int(it.row()) - 1, int(it.col()) - 1, it.value());
-  Eigen::SparseMatrix<double> reduced(n, n);
+    for (Eigen::SparseMatrix<double>::InnerIterator it(laplacian, column); it; ++it) {
+      const int row = numbering[it.row()], col = numbering[it.col()];
+      if (row >= 0 && col >= 0) entries.emplace_back(row, col, it.value());
+    }
+  Eigen::SparseMatrix<double> reduced(free_count, free_count);
   reduced.setFromTriplets(entries.begin(), entries.end());
   return reduced;
 }
 
 template <class Factorization> class PinnedSolver : public LaplacianSolver {
 public:
-  explicit PinnedSolver(const Eigen::SparseMatrix<double> &laplacian) {
-    factorization_.compute(pinned(laplacian));
+  PinnedSolver(const Eigen::SparseMatrix<double> &laplacian, const std::vector<int> &pinned)
+      : numbering_(free_numbering(int(laplacian.rows()), pinned)),
+        free_count_(int(laplacian.rows()) - int(pinned.size())) {
+    factorization_.compute(restricted(laplacian, numbering_, free_count_));
     if (factorization_.info() != Eigen::Success)
       throw Error(ExitCode::internal_failure,
                   "the Laplacian could not be factored (is the mesh connected, without "
                   "degenerate faces?)");
   }
   Eigen::VectorXd solve(const Eigen::VectorXd &b) const override {
-    const Eigen::Index n = b.size();
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
-    x.tail(n - 1) = factorization_.solve(b.tail(n - 1));
+    Eigen::VectorXd free_b(free_count_);
+    for (size_t v = 0; v < numbering_.size(); ++v)
+      if (numbering_[v] >= 0) free_b[numbering_[v]] = b[long(v)];
+    const Eigen::VectorXd free_x = factorization_.solve(free_b);
+    Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
+    for (size_t v = 0; v < numbering_.size(); ++v)
+      if (numbering_[v] >= 0) x[long(v)] = free_x[numbering_[v]];
     return x;
   }
 
 private:
+  std::vector<int> numbering_;
+  int free_count_;
   // Eigen's solve() is const, but CHOLMOD's wrapper keeps workspace in the object.
   mutable Factorization factorization_;
 };
@@ -57,12 +77,11 @@ private:
 } // namespace
 
 std::unique_ptr<LaplacianSolver> factor_laplacian(const Eigen::SparseMatrix<double> &laplacian,
-                                                  SolverKind kind) {
+                                                  SolverKind kind, const std::vector<int> &pinned) {
+  using Matrix = Eigen::SparseMatrix<double>;
   if (kind == SolverKind::cholmod)
-    return std::make_unique<PinnedSolver<Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>>>>(
-        laplacian);
-  return std::make_unique<PinnedSolver<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>>(
-      laplacian);
+    return std::make_unique<PinnedSolver<Eigen::CholmodSupernodalLLT<Matrix>>>(laplacian, pinned);
+  return std::make_unique<PinnedSolver<Eigen::SimplicialLDLT<Matrix>>>(laplacian, pinned);
 }
 
 } // namespace meromorph

@@ -2,13 +2,17 @@
 //
 // In:  the V x V cotangent Laplacian of a connected mesh (singular: its kernel is the constants)
 //      and which factorization to use.
-// Out: a solver for L x = b with b summing to zero; the solution has x[0] = 0 (vertex 0 is pinned,
-//      which makes the reduced matrix symmetric positive definite). CHOLMOD's supernodal Cholesky
-//      (on OpenBLAS) is the default; Eigen's SimplicialLDLT is there to check it against.
+// Out: a solver for L x = b at the free vertices, with x = 0 at the pinned vertices (default:
+// vertex
+//      0 alone, which with b summing to zero solves the singular system; pinning a set of vertices
+//      gives Dirichlet problems: put -L_free,pinned x_pinned into b). The reduced matrix is
+//      symmetric positive definite. CHOLMOD's supernodal Cholesky (on OpenBLAS) is the default;
+//      Eigen's SimplicialLDLT is there to check it against.
 #pragma once
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
@@ -27,6 +31,7 @@ public:
 };
 
 std::unique_ptr<LaplacianSolver> factor_laplacian(const Eigen::SparseMatrix<double> &laplacian,
-                                                  SolverKind kind = SolverKind::cholmod);
+                                                  SolverKind kind = SolverKind::cholmod,
+                                                  const std::vector<int> &pinned = {0});
 
 } // namespace meromorph

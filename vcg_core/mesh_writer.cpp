@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include <vcg/complex/append.h>
 #include <wrap/io_trimesh/export_obj.h>
 #include <wrap/io_trimesh/export_off.h>
 #include <wrap/io_trimesh/export_ply.h>
@@ -43,9 +44,35 @@ void write_mesh(const Mesh &mesh, const std::string &path, const WriteOptions &o
   const std::string temporary = path + ".meromorph-partial";
   int code = 0;
   switch (format) {
-  case MeshFormat::ply:
-    code = vcg::tri::io::ExporterPLY<Mesh>::Save(writable, temporary.c_str(), mask, options.binary);
+  case MeshFormat::ply: {
+    vcg::tri::io::PlyInfo info;
+    info.mask = mask;
+    Mesh copy; // named attributes go on a copy: the caller's mesh is not changed
+    const bool extra = !options.vertex_properties.empty();
+    if (extra) vcg::tri::Append<Mesh, Mesh>::MeshCopy(copy, writable);
+    for (const VertexProperty &property : options.vertex_properties) {
+      vcg::ply::PropDescriptor descriptor;
+      descriptor.elemname = "vertex";
+      descriptor.propname = property.name.c_str();
+      descriptor.stotype1 = descriptor.memtype1 =
+          property.byte ? vcg::ply::T_UCHAR : vcg::ply::T_INT;
+      info.VertDescriptorVec.push_back(descriptor);
+      info.VertAttrNameVec.push_back(property.name);
+      if (property.byte) {
+        auto handle =
+            vcg::tri::Allocator<Mesh>::AddPerVertexAttribute<unsigned char>(copy, property.name);
+        for (size_t v = 0; v < copy.vert.size(); ++v)
+          handle[v] = (unsigned char)property.values.at(v);
+      } else {
+        auto handle = vcg::tri::Allocator<Mesh>::AddPerVertexAttribute<int>(copy, property.name);
+        for (size_t v = 0; v < copy.vert.size(); ++v)
+          handle[v] = property.values.at(v);
+      }
+    }
+    code = vcg::tri::io::ExporterPLY<Mesh>::Save(extra ? copy : writable, temporary.c_str(),
+                                                 options.binary, info);
     break;
+  }
   case MeshFormat::obj:
     code = vcg::tri::io::ExporterOBJ<Mesh>::Save(writable, temporary.c_str(), mask);
     break;

@@ -2,7 +2,8 @@
 //
 // In:  a mesh, an output path (.ply, .obj, .off or .stl), and the paths that must not be written.
 // Out: the file, through vcglib's exporters (binary PLY by default, with per-vertex texture
-//      coordinates, quality and per-wedge texture coordinates when asked for).
+//      coordinates, quality, per-wedge texture coordinates and extra integer per-vertex
+//      properties when asked for).
 // Errors: ArgumentError when the output is one of the protected inputs (same file, even through
 //      another path or a link) or has an unsupported extension; InputError when writing fails.
 #pragma once
@@ -14,11 +15,19 @@
 
 namespace meromorph {
 
+// An extra per-vertex integer property written to PLY files (as int, or uchar when `byte`).
+struct VertexProperty {
+  std::string name;
+  std::vector<int> values;
+  bool byte = false;
+};
+
 struct WriteOptions {
   bool binary = true;
   bool vertex_texcoords = false;
   bool vertex_quality = false;
   bool wedge_texcoords = false;
+  std::vector<VertexProperty> vertex_properties; // PLY only
 };
 
 // Throws ArgumentError if `output` names the same file as any of `inputs`.

@@ -41,4 +41,76 @@ nlohmann::json source_json(const MeshSource &source) {
   return {{"path", source.path}, {"format", format_name(source.format)}, {"notes", source.notes}};
 }
 
+nlohmann::json complex_matrix_json(const Eigen::MatrixXcd &matrix) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (long i = 0; i < matrix.rows(); ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (long j = 0; j < matrix.cols(); ++j)
+      row.push_back({matrix(i, j).real(), matrix(i, j).imag()});
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+namespace {
+
+nlohmann::json statistics_json(const QualityStatistics &s) {
+  return {{"faces", s.faces},
+          {"quasi_conformal_mean", s.quasi_conformal_mean},
+          {"quasi_conformal_p95", s.quasi_conformal_p95},
+          {"quasi_conformal_max", s.quasi_conformal_max},
+          {"angle_error_mean_degrees", s.angle_error_mean_degrees},
+          {"folded_faces", s.folded_faces}};
+}
+
+nlohmann::json vector_json(const Eigen::Vector3d &v) {
+  return {v[0], v[1], v[2]};
+}
+
+} // namespace
+
+nlohmann::json parameterization_json(const Parameterization &map) {
+  nlohmann::json branch_points = nlohmann::json::array();
+  for (const BranchPoint &b : map.branch_points)
+    branch_points.push_back({{"vertex", b.vertex},
+                             {"position", vector_json(b.position)},
+                             {"sphere", vector_json(b.sphere)},
+                             {"ramification", b.local_degree}});
+  nlohmann::json timings = nlohmann::json::object();
+  for (const auto &[stage, ms] : map.timings_ms)
+    timings[stage] = ms;
+  nlohmann::json report = {
+      {"genus", map.genus},
+      {"euler", map.euler},
+      {"degree", map.degree},
+      {"image_area_over_4pi", map.area_over_4pi},
+      {"method", map.method},
+      {"branch_points", branch_points},
+      {"ramification_total", map.ramification},
+      {"snapped_branch_points", map.snapped_branch_points},
+      {"untangled_vertices", map.untangled_vertices},
+      {"riemann_hurwitz_ok", map.riemann_hurwitz_ok},
+      {"layers",
+       {{"count", map.sheets.count},
+        {"coverage", map.sheets.coverage},
+        {"cut_faces", map.sheets.cut_faces}}},
+      {"mobius",
+       {{"applied", map.mobius_applied},
+        {"centroid_before", vector_json(map.mobius.centroid_before)},
+        {"centroid_after", vector_json(map.mobius.centroid_after)},
+        {"newton_steps", map.mobius.steps}}},
+      {"distortion",
+       {{"overall", statistics_json(map.quality.overall)},
+        {"away_from_branch_points", statistics_json(map.quality.away_from_branch_points)}}},
+      {"non_holomorphicity_mean", map.non_holomorphicity_mean},
+      {"timings_ms", timings}};
+  if (map.modulus) report["modulus"] = {map.modulus->real(), map.modulus->imag()};
+  if (map.genus >= 2) report["riemann_matrix"] = complex_matrix_json(map.riemann_matrix);
+  if (map.genus == 0)
+    report["genus0"] = {{"pole_face", map.puncture_face}, {"raised_weights", map.raised_weights}};
+  if (map.genus == 1) report["origin_vertex"] = map.origin_vertex;
+  if (map.genus >= 2) report["form_pair"] = map.form_pair;
+  return report;
+}
+
 } // namespace meromorph

@@ -1,6 +1,6 @@
 // JSON views of the core's results, shared by the CLI reports and the C ABI.
 //
-// In:  a Topology, a Validation, a MeshSource and the list of repairs.
+// In:  a Topology, a Validation, a MeshSource, a Parameterization.
 // Out: nlohmann::json objects with the field names documented in the README (`info --json`).
 #pragma once
 
@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "mesh_reader.h"
+#include "parameterization.h"
 #include "topology.h"
 #include "validation.h"
 
@@ -18,5 +19,11 @@ namespace meromorph {
 nlohmann::json topology_json(const Topology &topology);
 nlohmann::json findings_json(const Validation &validation);
 nlohmann::json source_json(const MeshSource &source);
+
+// The REPORT.json of `meromorph param` (design.md section 3), without input, repairs and version.
+nlohmann::json parameterization_json(const Parameterization &map);
+
+// [[re, im], ...] rows of a complex matrix.
+nlohmann::json complex_matrix_json(const Eigen::MatrixXcd &matrix);
 
 } // namespace meromorph

@@ -24,17 +24,6 @@ struct FormsOptions {
   bool quiet = false;
 };
 
-nlohmann::json complex_matrix(const Eigen::MatrixXcd &matrix) {
-  nlohmann::json rows = nlohmann::json::array();
-  for (long i = 0; i < matrix.rows(); ++i) {
-    nlohmann::json row = nlohmann::json::array();
-    for (long j = 0; j < matrix.cols(); ++j)
-      row.push_back({matrix(i, j).real(), matrix(i, j).imag()});
-    rows.push_back(row);
-  }
-  return rows;
-}
-
 int run_forms(const FormsOptions &options) {
   if (!options.report.empty()) refuse_to_overwrite(options.report, {options.input});
   const SolverKind solver = solver_from_name(options.solver);
@@ -59,9 +48,9 @@ int run_forms(const FormsOptions &options) {
       {"genus", forms.genus},
       {"euler", 2 - 2 * forms.genus},
       {"solver", solver_name(solver)},
-      {"loop_periods", complex_matrix(forms.loop_periods)},
-      {"a_periods", complex_matrix(forms.a_periods)},
-      {"b_periods", complex_matrix(forms.b_periods)},
+      {"loop_periods", complex_matrix_json(forms.loop_periods)},
+      {"a_periods", complex_matrix_json(forms.a_periods)},
+      {"b_periods", complex_matrix_json(forms.b_periods)},
       {"residuals",
        {{"closedness", forms.closedness_residual},
         {"coclosedness", forms.coclosedness_residual},
@@ -72,7 +61,7 @@ int run_forms(const FormsOptions &options) {
       {"timings_ms", timings},
       {"version", MEROMORPH_VERSION}};
   if (forms.modulus) report["modulus"] = {forms.modulus->real(), forms.modulus->imag()};
-  if (forms.genus >= 2) report["riemann_matrix"] = complex_matrix(forms.riemann_matrix);
+  if (forms.genus >= 2) report["riemann_matrix"] = complex_matrix_json(forms.riemann_matrix);
 
   if (!options.report.empty()) {
     std::ofstream(options.report) << report.dump(2) << "\n";

@@ -17,5 +17,6 @@ using Command = std::function<int()>;
 Command add_info_command(CLI::App &app);
 Command add_make_command(CLI::App &app);
 Command add_forms_command(CLI::App &app);
+Command add_param_command(CLI::App &app);
 
 } // namespace meromorph::cli

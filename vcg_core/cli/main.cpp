@@ -16,7 +16,8 @@ int main(int argc, char **argv) {
   app.require_subcommand(1);
 
   std::map<CLI::App *, cli::Command> commands;
-  for (auto add : {cli::add_info_command, cli::add_make_command, cli::add_forms_command}) {
+  for (auto add : {cli::add_info_command, cli::add_make_command, cli::add_forms_command,
+                   cli::add_param_command}) {
     cli::Command run = add(app);
     commands[app.get_subcommands({}).back()] = run;
   }

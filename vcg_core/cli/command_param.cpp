@@ -1,0 +1,168 @@
+// `meromorph param INPUT -o OUT.ply [--sphere SPHERE.ply] [--report REPORT.json] ...`: the
+// conformal map onto the sphere, written as texture coordinates, a layered sphere and a JSON
+// report.
+#include <chrono>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "commands.h"
+#include "errors.h"
+#include "mesh_reader.h"
+#include "mesh_writer.h"
+#include "parameterization.h"
+#include "repair.h"
+#include "report_json.h"
+#include "terminal_progress.h"
+
+namespace meromorph::cli {
+namespace {
+
+struct ParamOptions {
+  std::string input, output, sphere, report;
+  std::string uv = "spherical";
+  std::string solver = "cholmod";
+  bool no_mobius = false, repair = false, strict = false, quiet = false;
+  int origin = -1;
+  std::vector<int> forms{0, 1};
+  double layer_gap = 0.0;
+  int puncture_face = -1;
+};
+
+int run_param(const ParamOptions &options) {
+  for (const std::string &output : {options.output, options.sphere, options.report})
+    if (!output.empty()) refuse_to_overwrite(output, {options.input});
+  if (!options.sphere.empty() && format_from_extension(options.sphere) != MeshFormat::ply)
+    throw ArgumentError(options.sphere + ": the layered sphere is written as PLY (.ply)");
+  if (options.forms.size() != 2) throw ArgumentError("--forms takes two indices, like --forms 0,1");
+
+  ParameterizeOptions settings;
+  settings.uv = options.uv == "stereographic" ? UvKind::stereographic : UvKind::spherical;
+  settings.mobius = !options.no_mobius;
+  settings.origin_vertex = options.origin;
+  settings.form_pair = {options.forms[0], options.forms[1]};
+  settings.layer_gap = options.layer_gap;
+  settings.puncture_face = options.puncture_face;
+  settings.solver = solver_from_name(options.solver);
+
+  const auto start = std::chrono::steady_clock::now();
+  Mesh mesh;
+  const MeshSource source = read_mesh(options.input, mesh);
+  std::vector<std::string> repairs;
+  if (options.repair) repairs = repair_mesh(mesh);
+  const double read_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+  TerminalProgress bar(options.quiet);
+  const Parameterization map = parameterize(mesh, settings, bar.progress());
+  bar.finish();
+
+  // OUT.ply: the surface with per-vertex and per-wedge texture coordinates.
+  for (size_t v = 0; v < mesh.vert.size(); ++v) {
+    mesh.vert[v].T().U() = map.uv.vertex[v][0];
+    mesh.vert[v].T().V() = map.uv.vertex[v][1];
+  }
+  for (size_t f = 0; f < mesh.face.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      mesh.face[f].WT(k).U() = map.uv.wedge[f][k][0];
+      mesh.face[f].WT(k).V() = map.uv.wedge[f][k][1];
+      mesh.face[f].WT(k).N() = 0;
+    }
+  WriteOptions surface;
+  surface.vertex_texcoords = surface.wedge_texcoords = true;
+  write_mesh(mesh, options.output, surface, {options.input});
+
+  if (!options.sphere.empty()) {
+    Mesh layered;
+    vcg::tri::Append<Mesh, Mesh>::MeshCopy(layered, mesh);
+    for (size_t v = 0; v < layered.vert.size(); ++v)
+      layered.vert[v].P() = Point3(map.layered[v][0], map.layered[v][1], map.layered[v][2]);
+    WriteOptions sphere;
+    sphere.vertex_properties = {{"layer", map.sheets.vertex_layer, false},
+                                {"branch", map.branch_flag, true}};
+    write_mesh(layered, options.sphere, sphere, {options.input});
+  }
+
+  nlohmann::json report = parameterization_json(map);
+  report["input"] = source_json(source);
+  report["repairs"] = repairs;
+  report["timings_ms"]["read"] = read_ms;
+  report["version"] = MEROMORPH_VERSION;
+  if (!options.report.empty()) std::ofstream(options.report) << report.dump(2) << "\n";
+
+  const double total_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if (!options.quiet) {
+    std::ostringstream line;
+    line << std::fixed << std::setprecision(2);
+    line << options.input << ": genus " << map.genus << ", degree " << map.degree << ", "
+         << map.branch_points.size() << " branch points (ramification " << map.ramification
+         << "), Riemann-Hurwitz " << (map.riemann_hurwitz_ok ? "holds" : "FAILS") << ", "
+         << map.sheets.count << (map.sheets.count == 1 ? " layer" : " layers") << "; angle error "
+         << map.quality.overall.angle_error_mean_degrees << " deg, quasi-conformal mean "
+         << map.quality.overall.quasi_conformal_mean << ", folded faces "
+         << map.quality.away_from_branch_points.folded_faces << " away from branch points ("
+         << map.quality.overall.folded_faces << " in all); " << std::setprecision(0) << total_ms
+         << " ms";
+    std::cout << line.str() << "\n";
+  }
+  if (!map.riemann_hurwitz_ok) {
+    std::cerr << "meromorph: warning: Riemann-Hurwitz does not hold: chi = " << map.euler
+              << " but 2 * degree - ramification = " << 2 * map.degree - map.ramification
+              << " (image area " << map.area_over_4pi << " x 4 pi); the branch points or the "
+              << "degree were not measured reliably on this mesh\n";
+    if (options.strict) return int(ExitCode::internal_failure);
+  }
+  return int(ExitCode::done);
+}
+
+} // namespace
+
+Command add_param_command(CLI::App &app) {
+  auto options = std::make_shared<ParamOptions>();
+  CLI::App *param = app.add_subcommand(
+      "param", "Map a closed surface conformally onto the sphere: texture coordinates, branch "
+               "points, layers, and a report.");
+  param->add_option("INPUT", options->input, "mesh file (.ply, .obj, .off, .stl)")->required();
+  param
+      ->add_option("-o,--output", options->output,
+                   "the surface with per-vertex (texture_u, texture_v) and per-wedge texture "
+                   "coordinates (.ply recommended)")
+      ->required();
+  param->add_option("--sphere", options->sphere,
+                    "the layered sphere: same vertices and faces on the sphere, with per-vertex "
+                    "'layer' and 'branch' (local degree at branch points) properties (.ply)");
+  param->add_option("--report", options->report, "JSON report");
+  param->add_option("--uv", options->uv, "spherical (longitude, latitude) or stereographic")
+      ->check(CLI::IsMember({"spherical", "stereographic"}))
+      ->capture_default_str();
+  param->add_flag("--no-mobius", options->no_mobius,
+                  "keep the map as computed instead of centring it by a Moebius transformation");
+  param
+      ->add_option("--origin", options->origin,
+                   "genus 1: the vertex where the map has its double pole (z = 0); default: the "
+                   "first vertex whose corners are all acute")
+      ->capture_default_str();
+  param
+      ->add_option("--forms", options->forms,
+                   "genus >= 2: indices i,j of the normalized holomorphic forms in "
+                   "(psi_i + psi_j) / (psi_i - psi_j)")
+      ->delimiter(',')
+      ->capture_default_str();
+  param
+      ->add_option("--layer-gap", options->layer_gap,
+                   "place layer k on the sphere of radius 1 + G*k so the layers can be seen")
+      ->capture_default_str();
+  param->add_option("--pole-face", options->puncture_face,
+                    "genus 0: the face mapped around the north pole (default: the best-shaped face "
+                    "of about median area)");
+  param->add_option("--solver", options->solver, "cholmod (default) or ldlt")
+      ->check(CLI::IsMember({"cholmod", "ldlt"}));
+  param->add_flag("--repair", options->repair, "apply the safe repairs first (see info --help)");
+  param->add_flag("--strict", options->strict, "exit with code 1 when Riemann-Hurwitz fails");
+  param->add_flag("--quiet", options->quiet, "no progress bar and no summary line");
+  return [options] { return run_param(*options); };
+}
+
+} // namespace meromorph::cli

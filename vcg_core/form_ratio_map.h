@@ -1,0 +1,27 @@
+// Genus >= 2: the ratio of two holomorphic 1-forms, a meromorphic function of degree 2g - 2.
+//
+// In:  a mesh, its edges, and the numerator and denominator forms (complex values per edge).
+// Out: per face, F = f_numerator / f_denominator from the local coefficients f of f dz + g dzbar
+//      (the ratio does not depend on the frame); per vertex, the area-weighted mean of the sphere
+//      points of its faces' values, normalized (averaging on the sphere is well behaved at poles),
+//      as a value of the extended plane.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "mesh.h"
+#include "mesh_edges.h"
+#include "sphere_geometry.h"
+
+namespace meromorph {
+
+// `face_values`, if given, receives F per face, three times (as the side midpoints of
+// branch_points.h: the face's value stands for the values inside it).
+std::vector<PlaneValue> form_ratio_map(const Mesh &mesh, const MeshEdges &edges,
+                                       const Eigen::VectorXcd &numerator,
+                                       const Eigen::VectorXcd &denominator,
+                                       std::vector<PlaneValue> *face_values = nullptr);
+
+} // namespace meromorph

@@ -1,0 +1,103 @@
+#include "genus0_map.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "cotan_laplacian.h"
+#include "errors.h"
+#include "face_vectors.h"
+#include "sphere_geometry.h"
+
+namespace meromorph {
+
+namespace {
+
+// The pole is modelled by 1 / (w - centroid) in the face's own plane: accurate for a small,
+// well-shaped face. Among the faces of about median area, the one with the largest smallest angle.
+int best_shaped_face(const Mesh &mesh, const FaceGeometry &geometry) {
+  std::vector<double> areas = geometry.areas;
+  std::nth_element(areas.begin(), areas.begin() + long(areas.size() / 2), areas.end());
+  const double median = areas[areas.size() / 2];
+  int best = 0;
+  double best_angle = -1;
+  for (size_t f = 0; f < mesh.face.size(); ++f) {
+    if (geometry.areas[f] < 0.5 * median || geometry.areas[f] > 2 * median) continue;
+    double smallest = M_PI;
+    for (int k = 0; k < 3; ++k) {
+      const Point3 u = mesh.face[f].cP((k + 1) % 3) - mesh.face[f].cP(k);
+      const Point3 w = mesh.face[f].cP((k + 2) % 3) - mesh.face[f].cP(k);
+      smallest = std::min(smallest, std::atan2((u ^ w).Norm(), u * w));
+    }
+    if (smallest > best_angle) {
+      best_angle = smallest;
+      best = int(f);
+    }
+  }
+  return best;
+}
+
+} // namespace
+
+Genus0Map genus0_map(const Mesh &mesh, const MeshEdges &edges, const std::vector<double> &weights,
+                     SolverKind solver, int puncture_face) {
+  Genus0Map out;
+  const FaceGeometry geometry = face_geometry(mesh);
+  if (puncture_face < 0) puncture_face = best_shaped_face(mesh, geometry);
+  if (puncture_face >= int(mesh.face.size()))
+    throw ArgumentError("puncture face " + std::to_string(puncture_face) + " does not exist");
+  out.puncture_face = puncture_face;
+
+  // Strictly positive weights: a floor relative to the typical weight.
+  std::vector<double> positive = weights;
+  std::vector<double> sorted;
+  for (double w : weights)
+    if (w > 0) sorted.push_back(w);
+  std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
+  const double floor = 1e-3 * sorted[sorted.size() / 2];
+  for (double &w : positive)
+    if (w < floor) {
+      w = floor;
+      ++out.raised_weights;
+    }
+  const Eigen::SparseMatrix<double> laplacian =
+      cotan_laplacian(int(mesh.vert.size()), edges, positive);
+
+  // The pole triangle: 1 / (w - c) at the puncture face's corners, in the face's own frame.
+  const MeshFace &face = mesh.face[puncture_face];
+  std::vector<int> corners;
+  Eigen::Vector3d p[3];
+  for (int k = 0; k < 3; ++k) {
+    corners.push_back(index_of(mesh, face.cV(k)));
+    p[k] = Eigen::Vector3d(face.cP(k)[0], face.cP(k)[1], face.cP(k)[2]);
+  }
+  const Eigen::Vector3d centroid = (p[0] + p[1] + p[2]) / 3.0;
+  const Eigen::Vector3d e1 = (p[1] - p[0]).normalized();
+  const Eigen::Vector3d e2 = geometry.normals[puncture_face].cross(e1);
+  const double size = std::sqrt(geometry.areas[puncture_face]);
+  Eigen::VectorXd fixed_u = Eigen::VectorXd::Zero(long(mesh.vert.size()));
+  Eigen::VectorXd fixed_v = fixed_u;
+  for (int k = 0; k < 3; ++k) {
+    const Complex w((p[k] - centroid).dot(e1) / size, (p[k] - centroid).dot(e2) / size);
+    const Complex z = 1.0 / w;
+    fixed_u[corners[k]] = z.real();
+    fixed_v[corners[k]] = z.imag();
+  }
+
+  // Dirichlet problem: L_free z_free = -L_free,pinned z_pinned.
+  const std::unique_ptr<LaplacianSolver> factored = factor_laplacian(laplacian, solver, corners);
+  const Eigen::VectorXd u = factored->solve(-(laplacian * fixed_u)) + fixed_u;
+  const Eigen::VectorXd v = factored->solve(-(laplacian * fixed_v)) + fixed_v;
+
+  // Scale so that the median |z| is 1 (a Moebius scaling; centring comes later).
+  std::vector<double> radii(mesh.vert.size());
+  for (size_t i = 0; i < radii.size(); ++i)
+    radii[i] = std::hypot(u[long(i)], v[long(i)]);
+  std::nth_element(radii.begin(), radii.begin() + long(radii.size() / 2), radii.end());
+  const double scale = radii[radii.size() / 2] > 0 ? 1.0 / radii[radii.size() / 2] : 1.0;
+  out.values.reserve(mesh.vert.size());
+  for (size_t i = 0; i < mesh.vert.size(); ++i)
+    out.values.push_back({Complex(u[long(i)], v[long(i)]) * scale, false});
+  return out;
+}
+
+} // namespace meromorph

@@ -1,0 +1,39 @@
+// Genus 1: the Weierstrass P-function of the flat coordinate, a degree-2 map onto the sphere.
+//
+// In:  a closed genus-1 mesh, its edges, the normalized holomorphic form psi (per edge) with its
+//      periods (A-period 1, B-period tau), and the origin vertex (where z = 0: a double pole; -1:
+//      the first vertex whose corners are all acute).
+// Out: z per vertex by integrating psi along a breadth-first tree from the origin (defined up to
+//      the lattice), F = P(z) per vertex (single-valued: P is doubly periodic) as a sphere point,
+//      the P-function object, and the four branch values: P at the three half periods and infinity.
+//      A piecewise-linear map branches only at vertices: for each half period, the 12 vertices
+//      nearest it are the candidates to take its critical value (see place_critical_value); and P
+//      at the midpoint of every face side, to measure winding numbers (branch_points.h).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "mesh.h"
+#include "mesh_edges.h"
+#include "sphere_geometry.h"
+#include "weierstrass_p.h"
+
+namespace meromorph {
+
+struct Genus1Map {
+  std::vector<Complex> flat;      // z per vertex
+  std::vector<PlaneValue> values; // P(z) per vertex
+  WeierstrassP p_function;
+  std::array<PlaneValue, 4> branch_values;
+  std::array<std::vector<int>, 3> branch_candidates; // per half period, nearest first
+  std::vector<PlaneValue> side_midpoints; // P at the midpoint of the side opposite each corner
+  int origin_vertex = -1;
+};
+
+Genus1Map genus1_map(const Mesh &mesh, const MeshEdges &edges, const Eigen::VectorXcd &psi,
+                     Complex period_a, Complex period_b, int origin_vertex);
+
+} // namespace meromorph

@@ -1,0 +1,101 @@
+#include "mobius_centering.h"
+
+#include <Eigen/Dense>
+
+namespace meromorph {
+namespace {
+
+Eigen::Vector3d translate(const Eigen::Vector3d &x, const Eigen::Vector3d &c) {
+  const Eigen::Vector3d d = x - c;
+  const double d2 = d.squaredNorm();
+  if (d2 < 1e-300) return -c.normalized(); // the point at c goes to the antipode of c's direction
+  return ((1 - c.squaredNorm()) * d / d2 - c).normalized();
+}
+
+Eigen::Vector3d translated_centroid(const std::vector<Eigen::Vector3d> &points,
+                                    const std::vector<double> &weights, const Eigen::Vector3d &c) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  double total = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    sum += weights[i] * translate(points[i], c);
+    total += weights[i];
+  }
+  return sum / total;
+}
+
+} // namespace
+
+Eigen::Vector3d centroid(const std::vector<Eigen::Vector3d> &points,
+                         const std::vector<double> &weights) {
+  return translated_centroid(points, weights, Eigen::Vector3d::Zero());
+}
+
+namespace {
+
+std::vector<Eigen::Vector3d> project(const std::vector<PlaneValue> &values) {
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(values.size());
+  for (const PlaneValue &v : values)
+    points.push_back(to_sphere(v));
+  return points;
+}
+
+// The plane form of the ball translation by c: fitted through three well-separated points.
+Mobius translation_matrix(const Eigen::Vector3d &c) {
+  const Eigen::Vector3d axes[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
+                                   {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+  Complex from[3], to[3];
+  int found = 0;
+  for (const Eigen::Vector3d &p : axes) {
+    const Eigen::Vector3d image = translate(p, c);
+    if (p.z() > 0.5 || image.z() > 0.5) continue; // keep away from infinity
+    from[found] = to_plane(p);
+    to[found] = to_plane(image);
+    if (++found == 3) break;
+  }
+  if (found < 3) return Mobius{};
+  return Mobius::through(from, to);
+}
+
+} // namespace
+
+MobiusCentering center_on_sphere(std::vector<PlaneValue> &values,
+                                 const std::vector<double> &weights) {
+  MobiusCentering out;
+  const std::vector<PlaneValue> original = values;
+  std::vector<Eigen::Vector3d> points = project(values);
+  out.centroid_before = centroid(points, weights);
+  Eigen::Vector3d current = out.centroid_before;
+  for (; out.steps < 100 && current.norm() > 1e-12; ++out.steps) {
+    // Newton step on c -> centroid after translating by c, Jacobian by central differences.
+    Eigen::Matrix3d jacobian;
+    const double h = 1e-6;
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d step = h * Eigen::Vector3d::Unit(k);
+      jacobian.col(k) = (translated_centroid(points, weights, step) -
+                         translated_centroid(points, weights, -step)) /
+                        (2 * h);
+    }
+    Eigen::Vector3d c = -jacobian.fullPivLu().solve(current);
+    if (!c.allFinite()) c = 0.5 * current;
+    if (c.norm() > 0.9) c *= 0.9 / c.norm();
+    for (int halving = 0; halving < 30; ++halving) {
+      if (translated_centroid(points, weights, c).norm() < current.norm()) break;
+      c *= 0.5;
+    }
+    out.transformation = translation_matrix(c).after(out.transformation);
+    for (size_t i = 0; i < values.size(); ++i)
+      values[i] = out.transformation.apply(original[i]);
+    points = project(values);
+    const Eigen::Vector3d next = centroid(points, weights);
+    if (next.norm() >= current.norm()) {
+      current = next;
+      break;
+    }
+    current = next;
+  }
+  out.centroid_after = current;
+  return out;
+}
+
+} // namespace meromorph

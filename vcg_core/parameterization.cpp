@@ -1,0 +1,183 @@
+#include "parameterization.h"
+
+#include <chrono>
+
+#include "branch_points.h"
+#include "branch_snapping.h"
+#include "errors.h"
+#include "face_vectors.h"
+#include "fold_untangling.h"
+#include "form_ratio_map.h"
+#include "genus0_map.h"
+#include "genus1_map.h"
+#include "holomorphic_pipeline.h"
+#include "topology.h"
+#include "validation.h"
+
+namespace meromorph {
+namespace {
+
+std::vector<double> vertex_areas(const Mesh &mesh) {
+  const FaceGeometry geometry = face_geometry(mesh);
+  std::vector<double> areas(mesh.vert.size(), 0.0);
+  for (size_t f = 0; f < mesh.face.size(); ++f)
+    for (int k = 0; k < 3; ++k)
+      areas[index_of(mesh, mesh.face[f].cV(k))] += geometry.areas[f] / 3;
+  return areas;
+}
+
+} // namespace
+
+Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &options,
+                              const Progress &progress) {
+  const Validation validation = validate_mesh(mesh);
+  if (!validation.ok()) {
+    const Finding *main = &validation.findings.front();
+    for (const Finding &f : validation.findings)
+      if (!f.repairable) {
+        main = &f;
+        break;
+      }
+    throw InputError(main->message);
+  }
+  if (options.layer_gap < 0) throw ArgumentError("the layer gap must not be negative");
+
+  Parameterization out;
+  auto clock = std::chrono::steady_clock::now();
+  auto lap = [&](const std::string &stage) {
+    const auto now = std::chrono::steady_clock::now();
+    out.timings_ms.push_back(
+        {stage, std::chrono::duration<double, std::milli>(now - clock).count()});
+    clock = now;
+  };
+
+  const HolomorphicForms forms =
+      compute_holomorphic_forms(mesh, options.solver, progress.range(0.0, 0.6));
+  for (const auto &timing : forms.timings_ms)
+    out.timings_ms.push_back(timing);
+  clock = std::chrono::steady_clock::now();
+  out.genus = forms.genus;
+  out.euler = 2 - 2 * out.genus;
+  out.non_holomorphicity_mean = forms.non_holomorphicity_mean;
+
+  progress.report(0.6, "meromorphic function");
+  std::vector<PlaneValue> values, critical_values;
+  std::array<std::vector<int>, 3> critical_candidates; // genus 1
+  std::vector<PlaneValue> side_midpoints;              // genus >= 1 (branch_points.h)
+  if (out.genus == 0) {
+    Genus0Map map =
+        genus0_map(mesh, forms.edges, forms.weights, options.solver, options.puncture_face);
+    if (options.puncture_face < 0) {
+      // Parts far from the pole crowd into a tiny spot, where rounding can fold faces and the
+      // pole model is least accurate. Solve again with the pole at the face that the centred map
+      // puts on the north pole: the new map is nearly centred, so nothing is crowded.
+      std::vector<PlaneValue> centred = map.values;
+      if (center_on_sphere(centred, vertex_areas(mesh)).centroid_before.norm() > 1e-3) {
+        int pole_face = -1;
+        for (size_t f = 0; f < mesh.face.size() && pole_face < 0; ++f) {
+          Eigen::Vector3d corner[3];
+          bool finite = true;
+          for (int k = 0; k < 3; ++k) {
+            const PlaneValue &value = centred[index_of(mesh, mesh.face[f].cV(k))];
+            finite &= !value.infinite;
+            corner[k] = to_sphere(value);
+          }
+          const Eigen::Vector3d north(0, 0, 1);
+          if (finite && corner[0].cross(corner[1]).dot(north) > 0 &&
+              corner[1].cross(corner[2]).dot(north) > 0 &&
+              corner[2].cross(corner[0]).dot(north) > 0)
+            pole_face = int(f);
+        }
+        if (pole_face >= 0)
+          map = genus0_map(mesh, forms.edges, forms.weights, options.solver, pole_face);
+      }
+    }
+    values = map.values;
+    out.puncture_face = map.puncture_face;
+    out.raised_weights = map.raised_weights;
+    out.method = "genus 0: harmonic map with a simple pole (strictly positive weights), inverse "
+                 "stereographic projection";
+  } else if (out.genus == 1) {
+    out.modulus = forms.modulus;
+    out.riemann_matrix = forms.riemann_matrix;
+    const Genus1Map map = genus1_map(mesh, forms.edges, forms.normalized[0], Complex(1, 0),
+                                     forms.riemann_matrix(0, 0), options.origin_vertex);
+    values = map.values;
+    out.origin_vertex = map.origin_vertex;
+    critical_values.assign(map.branch_values.begin(), map.branch_values.begin() + 3);
+    critical_candidates = map.branch_candidates;
+    side_midpoints = map.side_midpoints;
+    out.method = "genus 1: Weierstrass P-function of the flat coordinate";
+  } else {
+    const auto [i, j] = options.form_pair;
+    if (i < 0 || j < 0 || i >= out.genus || j >= out.genus || i == j)
+      throw ArgumentError("the form pair must be two different indices between 0 and " +
+                          std::to_string(out.genus - 1));
+    out.riemann_matrix = forms.riemann_matrix;
+    values = form_ratio_map(mesh, forms.edges, forms.normalized[i] + forms.normalized[j],
+                            forms.normalized[i] - forms.normalized[j], &side_midpoints);
+    out.form_pair = options.form_pair;
+    out.method = "genus " + std::to_string(out.genus) + ": ratio (psi_" + std::to_string(i) +
+                 " + psi_" + std::to_string(j) + ") / (psi_" + std::to_string(i) + " - psi_" +
+                 std::to_string(j) + ") of normalized holomorphic 1-forms";
+  }
+  lap("meromorphic");
+
+  if (options.mobius) {
+    progress.report(0.7, "Moebius normalisation");
+    out.mobius = center_on_sphere(values, vertex_areas(mesh));
+    out.mobius_applied = true;
+    for (PlaneValue &value : critical_values)
+      value = out.mobius.transformation.apply(value);
+    for (PlaneValue &value : side_midpoints)
+      value = out.mobius.transformation.apply(value);
+    lap("mobius");
+  }
+
+  // A piecewise-linear map branches only at vertices; decided on the centred map, where nothing
+  // is crowded. Genus 1 knows its critical points; for genus >= 2 they are found from the folds.
+  std::vector<Eigen::Vector3d> midpoints;
+  for (const PlaneValue &value : side_midpoints)
+    midpoints.push_back(to_sphere(value));
+  if (out.genus == 1) {
+    for (int k = 0; k < 3; ++k)
+      place_critical_value(mesh, values, critical_candidates[k], critical_values[k], midpoints);
+    out.snapped_branch_points = 3;
+  } else if (out.genus >= 2) {
+    out.snapped_branch_points = snap_branch_points(mesh, values);
+  }
+  lap("branch_placement");
+  out.sphere.reserve(values.size());
+  for (const PlaneValue &value : values)
+    out.sphere.push_back(to_sphere(value));
+
+  progress.report(0.8, "branch points and layers");
+  Branching branching = analyse_branching(mesh, out.sphere, out.euler, midpoints);
+  out.untangled_vertices = untangle_folds(mesh, out.sphere, branching.branch_vertices);
+  if (out.untangled_vertices) branching = analyse_branching(mesh, out.sphere, out.euler, midpoints);
+  out.degree = branching.degree;
+  out.area_over_4pi = branching.area_over_4pi;
+  out.ramification = branching.ramification;
+  out.riemann_hurwitz_ok = branching.riemann_hurwitz_ok;
+  out.branch_flag.assign(mesh.vert.size(), 0);
+  for (int v : branching.branch_vertices) {
+    const Point3 &p = mesh.vert[v].cP();
+    out.branch_points.push_back(
+        {v, Eigen::Vector3d(p[0], p[1], p[2]), out.sphere[v], branching.local_degree[v]});
+    out.branch_flag[v] = branching.local_degree[v];
+  }
+  out.sheets = label_sheets(mesh, forms.edges, out.sphere, branching.branch_vertices, out.degree);
+  out.layered = out.sphere;
+  for (size_t v = 0; v < out.layered.size(); ++v)
+    out.layered[v] *= 1.0 + options.layer_gap * out.sheets.vertex_layer[v];
+  lap("branching");
+
+  progress.report(0.9, "texture coordinates and distortion");
+  out.uv = texture_coordinates(mesh, out.sphere, options.uv);
+  out.quality = measure_map_quality(mesh, out.sphere, branching.branch_vertices);
+  lap("texture_and_quality");
+  progress.report(1.0, "done");
+  return out;
+}
+
+} // namespace meromorph

@@ -1,0 +1,80 @@
+// The main job: a conformal map of a closed surface of any genus onto the sphere.
+//
+// In:  a mesh that validation accepts, options, progress (cancellable).
+// Out: `Parameterization`: the map as a unit-sphere position per vertex (genus 0: a degree-1 map;
+//      genus 1: the Weierstrass P-function of the flat coordinate, degree 2; genus g >= 2: the
+//      ratio (psi_i + psi_j) / (psi_i - psi_j) of two normalized holomorphic forms, degree 2g - 2
+//      for a generic pair), Moebius-centred unless asked not to; its degree, branch points with
+//      local degrees and the Riemann-Hurwitz check; layers (sheets) and the layered-sphere
+//      positions; texture coordinates per vertex and per wedge; distortion; modulus or Riemann
+//      matrix; timings. Nothing is forced: what is reported is what was measured.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "laplacian_solver.h"
+#include "map_quality.h"
+#include "mesh.h"
+#include "mobius_centering.h"
+#include "progress.h"
+#include "sheets.h"
+#include "sphere_geometry.h"
+#include "texture_coordinates.h"
+
+namespace meromorph {
+
+struct ParameterizeOptions {
+  UvKind uv = UvKind::spherical;
+  bool mobius = true;
+  int origin_vertex = -1;             // genus 1: where z = 0, the double pole of P (-1: automatic)
+  std::array<int, 2> form_pair{0, 1}; // genus >= 2: (psi_i + psi_j) / (psi_i - psi_j)
+  double layer_gap = 0.0;             // layer k on the sphere of radius 1 + gap * k
+  int puncture_face = -1;             // genus 0: the face at the pole (-1: automatic)
+  SolverKind solver = SolverKind::cholmod;
+};
+
+struct BranchPoint {
+  int vertex = -1;
+  Eigen::Vector3d position;
+  Eigen::Vector3d sphere;
+  int local_degree = 1; // e; the point is a branch point of order e - 1
+};
+
+struct Parameterization {
+  int genus = 0;
+  int euler = 2;
+  int degree = 0;
+  std::string method;
+  double area_over_4pi = 0;
+  int ramification = 0;
+  bool riemann_hurwitz_ok = false;
+  std::vector<BranchPoint> branch_points;
+  std::optional<Complex> modulus;
+  Eigen::MatrixXcd riemann_matrix;
+  double non_holomorphicity_mean = 0;
+  bool mobius_applied = false;
+  MobiusCentering mobius;
+  MapQuality quality;
+  Sheets sheets;
+  std::vector<Eigen::Vector3d> sphere;  // unit sphere
+  std::vector<Eigen::Vector3d> layered; // radius 1 + gap * layer
+  std::vector<int> branch_flag;         // local degree at branch vertices, 0 elsewhere
+  TextureCoordinates uv;
+  std::vector<std::pair<std::string, double>> timings_ms;
+  // What the method used.
+  int puncture_face = -1, raised_weights = 0, origin_vertex = -1;
+  int snapped_branch_points = 0; // vertices moved onto a critical value (branch_snapping.h)
+  int untangled_vertices = 0;    // sliver corners moved to unfold them (fold_untangling.h)
+  std::array<int, 2> form_pair{-1, -1};
+};
+
+Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &options = {},
+                              const Progress &progress = {});
+
+} // namespace meromorph
