@@ -45,7 +45,7 @@ bool not_positive(const Incidence &in, const std::vector<Eigen::Vector3d> &spher
 }
 
 int winding(const Incidence &in, const std::vector<Eigen::Vector3d> &sphere, int v,
-            const std::vector<Eigen::Vector3d> &side_midpoints = {}) {
+            const CornerPaths &side_midpoints = {}) {
   double total = 0;
   for (int f : in.faces_of_vertex[v]) {
     const auto &c = in.corners[f];
@@ -59,7 +59,7 @@ int winding(const Incidence &in, const std::vector<Eigen::Vector3d> &sphere, int
 
 int place_critical_value(const Mesh &mesh, std::vector<PlaneValue> &values,
                          const std::vector<int> &candidates, const PlaneValue &critical_value,
-                         const std::vector<Eigen::Vector3d> &side_midpoints) {
+                         const CornerPaths &side_midpoints) {
   const Incidence in = incidence(mesh);
   std::vector<Eigen::Vector3d> sphere;
   for (const PlaneValue &v : values)
@@ -89,15 +89,39 @@ int place_critical_value(const Mesh &mesh, std::vector<PlaneValue> &values,
   return best;
 }
 
-int snap_branch_points(const Mesh &mesh, std::vector<PlaneValue> &plane_values,
-                       const std::vector<PlaneValue> &critical_plane_values) {
+namespace {
+
+// The spot's vertices in a conformal coordinate of the surface: their projection on the plane
+// through the first vertex, normal to the mean normal of its faces.
+std::vector<Complex> local_coordinates(const Mesh &mesh, const Incidence &in,
+                                       const std::vector<int> &vertices) {
+  const int centre = vertices.front();
+  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
+  for (int f : in.faces_of_vertex[centre]) {
+    const Point3 n = vcg::NormalizedTriangleNormal(mesh.face[f]);
+    normal += Eigen::Vector3d(n[0], n[1], n[2]);
+  }
+  normal.normalize();
+  const Eigen::Vector3d seed =
+      std::abs(normal.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  const Eigen::Vector3d e1 = normal.cross(seed).normalized(), e2 = normal.cross(e1);
+  const Point3 &origin = mesh.vert[centre].cP();
+  std::vector<Complex> z;
+  for (int v : vertices) {
+    const Point3 d = mesh.vert[v].cP() - origin;
+    const Eigen::Vector3d offset(d[0], d[1], d[2]);
+    z.emplace_back(offset.dot(e1), offset.dot(e2));
+  }
+  return z;
+}
+
+} // namespace
+
+int snap_branch_points(const Mesh &mesh, std::vector<PlaneValue> &plane_values) {
   const Incidence in = incidence(mesh);
   std::vector<Eigen::Vector3d> sphere;
   for (const PlaneValue &v : plane_values)
     sphere.push_back(to_sphere(v));
-  std::vector<Eigen::Vector3d> critical_values;
-  for (const PlaneValue &v : critical_plane_values)
-    critical_values.push_back(to_sphere(v));
   const int vertex_count = int(mesh.vert.size());
   std::vector<char> trouble(vertex_count, 0);
   for (size_t f = 0; f < in.corners.size(); ++f)
@@ -128,63 +152,74 @@ int snap_branch_points(const Mesh &mesh, std::vector<PlaneValue> &plane_values,
           }
     }
     if (spot.size() > 64) continue; // not a lone critical point: leave it as measured
-    // Faces near the spot, whose orientation is judged.
-    std::set<int> nearby_vertices(spot.begin(), spot.end());
+    // Two rings around the spot: where the model is fitted and orientation judged.
+    std::set<int> ring(spot.begin(), spot.end());
+    for (int pass = 0; pass < 2; ++pass) {
+      const std::set<int> inner = ring;
+      for (int v : inner)
+        for (int f : in.faces_of_vertex[v])
+          for (int w : in.corners[f])
+            ring.insert(w);
+    }
+    std::set<int> nearby_faces;
     for (int v : spot)
       for (int f : in.faces_of_vertex[v])
         for (int w : in.corners[f])
-          nearby_vertices.insert(w);
-    std::set<int> nearby_faces;
-    for (int v : nearby_vertices)
-      for (int f : in.faces_of_vertex[v])
-        nearby_faces.insert(f);
-    auto folded_nearby = [&] {
+          for (int g : in.faces_of_vertex[w])
+            nearby_faces.insert(g);
+    auto bad_nearby = [&] {
       int count = 0;
       for (int f : nearby_faces)
         count += not_positive(in, sphere, f);
       return count;
     };
 
-    std::vector<Eigen::Vector3d> values = critical_values;
-    std::vector<PlaneValue> exact = critical_plane_values;
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for (int v : nearby_vertices) {
-      values.push_back(sphere[v]);
-      exact.push_back(plane_values[v]);
-      mean += sphere[v];
+    // Near a critical point p the map is F(z) = c + k (z - p)^2 = A + B z + C z^2: fit A, B, C
+    // by least squares in a chart of the sphere centred at the spot's image, and read off
+    // p = -B / 2C and the critical value c = A - B^2 / 4C.
+    std::vector<int> vertices(spot.begin(), spot.end());
+    for (int v : ring)
+      if (std::find(spot.begin(), spot.end(), v) == spot.end()) vertices.push_back(v);
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (int v : vertices)
+      centre += sphere[v];
+    centre.normalize();
+    const std::vector<Complex> z = local_coordinates(mesh, in, vertices);
+    Eigen::MatrixXcd design(long(vertices.size()), 3);
+    Eigen::VectorXcd image(long(vertices.size()));
+    for (size_t i = 0; i < vertices.size(); ++i) {
+      design.row(long(i)) << 1.0, z[i], z[i] * z[i];
+      image[long(i)] = chart_at(centre, sphere[vertices[i]]);
     }
-    if (mean.norm() > 0) {
-      values.push_back(mean.normalized());
-      exact.push_back(to_plane_value(mean.normalized()));
-    }
-    // Exact critical values only count when they lie near the spot.
-    const double reach = [&] {
-      double r = 0;
-      for (int v : nearby_vertices)
-        r = std::max(r, (sphere[v] - mean.normalized()).norm());
-      return 3 * r;
-    }();
+    const Eigen::VectorXcd abc = design.colPivHouseholderQr().solve(image);
+    if (std::abs(abc[2]) == 0 || !abc.allFinite()) continue;
+    const Complex p = -abc[1] / (2.0 * abc[2]);
+    const Complex c = abc[0] - abc[1] * abc[1] / (4.0 * abc[2]);
+    const Eigen::Vector3d critical = from_chart(centre, c);
 
-    int best_folded = folded_nearby(), best_vertex = -1;
-    size_t best_value = 0;
-    for (int v : spot) {
+    // The vertices nearest p are the candidates; the one that then winds twice with the fewest
+    // folded or flat faces around wins, if it improves on leaving the spot alone.
+    std::vector<std::pair<double, int>> by_distance;
+    for (size_t i = 0; i < vertices.size(); ++i)
+      by_distance.push_back({std::abs(z[i] - p), vertices[i]});
+    std::sort(by_distance.begin(), by_distance.end());
+    const std::pair<int, int> before{2, bad_nearby()};
+    std::pair<int, int> best = before;
+    int best_vertex = -1;
+    for (size_t i = 0; i < std::min<size_t>(6, by_distance.size()); ++i) {
+      const int v = by_distance[i].second;
       const Eigen::Vector3d original = sphere[v];
-      for (size_t i = 0; i < values.size(); ++i) {
-        if (i < critical_values.size() && (values[i] - mean.normalized()).norm() > reach) continue;
-        sphere[v] = values[i];
-        const int count = folded_nearby();
-        if (count < best_folded ||
-            (count == best_folded && best_vertex >= 0 && i < critical_values.size())) {
-          best_folded = count;
-          best_vertex = v;
-          best_value = i;
-        }
+      sphere[v] = critical;
+      const std::pair<int, int> score{winding(in, sphere, v) == 2 ? 0 : 1, bad_nearby()};
+      if (score.second < best.second || (score.second == best.second && score.first < best.first)) {
+        best = score;
+        best_vertex = v;
       }
       sphere[v] = original;
     }
     if (best_vertex >= 0) {
-      sphere[best_vertex] = values[best_value];
-      plane_values[best_vertex] = exact[best_value];
+      sphere[best_vertex] = critical;
+      plane_values[best_vertex] = to_plane_value(critical);
       ++moved;
     }
   }

@@ -39,7 +39,7 @@ int best_shaped_face(const Mesh &mesh, const FaceGeometry &geometry) {
 } // namespace
 
 Genus0Map genus0_map(const Mesh &mesh, const MeshEdges &edges, const std::vector<double> &weights,
-                     SolverKind solver, int puncture_face) {
+                     SolverKind solver, int puncture_face, const std::vector<char> &raise) {
   Genus0Map out;
   const FaceGeometry geometry = face_geometry(mesh);
   if (puncture_face < 0) puncture_face = best_shaped_face(mesh, geometry);
@@ -47,16 +47,16 @@ Genus0Map genus0_map(const Mesh &mesh, const MeshEdges &edges, const std::vector
     throw ArgumentError("puncture face " + std::to_string(puncture_face) + " does not exist");
   out.puncture_face = puncture_face;
 
-  // Strictly positive weights: a floor relative to the typical weight.
+  // Strictly positive weights on the chosen edges: a floor relative to the typical weight.
   std::vector<double> positive = weights;
   std::vector<double> sorted;
   for (double w : weights)
     if (w > 0) sorted.push_back(w);
   std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
   const double floor = 1e-3 * sorted[sorted.size() / 2];
-  for (double &w : positive)
-    if (w < floor) {
-      w = floor;
+  for (size_t e = 0; e < positive.size(); ++e)
+    if (positive[e] < floor && (raise.empty() || raise[e])) {
+      positive[e] = floor;
       ++out.raised_weights;
     }
   const Eigen::SparseMatrix<double> laplacian =
@@ -97,6 +97,14 @@ Genus0Map genus0_map(const Mesh &mesh, const MeshEdges &edges, const std::vector
   out.values.reserve(mesh.vert.size());
   for (size_t i = 0; i < mesh.vert.size(); ++i)
     out.values.push_back({Complex(u[long(i)], v[long(i)]) * scale, false});
+  // Orientation in the plane: every face but the pole face must turn counter-clockwise.
+  for (size_t f = 0; f < mesh.face.size(); ++f) {
+    if (int(f) == puncture_face) continue;
+    Complex z[3];
+    for (int k = 0; k < 3; ++k)
+      z[k] = out.values[index_of(mesh, mesh.face[f].cV(k))].w;
+    if (std::imag(std::conj(z[1] - z[0]) * (z[2] - z[0])) <= 0) out.folded_faces.push_back(int(f));
+  }
   return out;
 }
 

@@ -28,9 +28,15 @@ struct Genus0Map {
   std::vector<PlaneValue> values;
   int puncture_face = -1;
   int raised_weights = 0;
+  std::vector<int> folded_faces; // in the plane, before projection
 };
 
+// `raise` (one flag per edge; empty: every edge) says which weights get the positive floor: the
+// plain cotangent map is the most conformal, but with negative weights it may fold;
+// `folded_faces` lists the faces turned over in the plane, so that a caller can raise the weights
+// around them only, and all of them as the last resort.
 Genus0Map genus0_map(const Mesh &mesh, const MeshEdges &edges, const std::vector<double> &weights,
-                     SolverKind solver, int puncture_face = -1);
+                     SolverKind solver, int puncture_face = -1,
+                     const std::vector<char> &raise = {});
 
 } // namespace meromorph

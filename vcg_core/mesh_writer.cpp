@@ -46,10 +46,21 @@ void write_mesh(const Mesh &mesh, const std::string &path, const WriteOptions &o
   switch (format) {
   case MeshFormat::ply: {
     vcg::tri::io::PlyInfo info;
-    info.mask = mask;
     Mesh copy; // named attributes go on a copy: the caller's mesh is not changed
-    const bool extra = !options.vertex_properties.empty();
+    const bool extra = !options.vertex_properties.empty() || options.vertex_texcoords;
     if (extra) vcg::tri::Append<Mesh, Mesh>::MeshCopy(copy, writable);
+    if (options.vertex_texcoords) {
+      // vcglib's PLY exporter writes double texture coordinates under a float header; write them
+      // as the float properties texture_u, texture_v (the names MeshLab reads) instead.
+      mask &= ~vcg::tri::io::Mask::IOM_VERTTEXCOORD;
+      for (const char *name : {"texture_u", "texture_v"}) {
+        auto handle = vcg::tri::Allocator<Mesh>::AddPerVertexAttribute<float>(copy, name);
+        for (size_t v = 0; v < copy.vert.size(); ++v)
+          handle[v] = float(name[8] == 'u' ? copy.vert[v].T().U() : copy.vert[v].T().V());
+        info.AddPerVertexFloatAttribute(name);
+      }
+    }
+    info.mask = mask;
     for (const VertexProperty &property : options.vertex_properties) {
       vcg::ply::PropDescriptor descriptor;
       descriptor.elemname = "vertex";

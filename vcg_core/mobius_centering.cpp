@@ -76,13 +76,26 @@ MobiusCentering center_on_sphere(std::vector<PlaneValue> &values,
                          translated_centroid(points, weights, -step)) /
                         (2 * h);
     }
-    Eigen::Vector3d c = -jacobian.fullPivLu().solve(current);
-    if (!c.allFinite()) c = 0.5 * current;
-    if (c.norm() > 0.9) c *= 0.9 / c.norm();
-    for (int halving = 0; halving < 30; ++halving) {
-      if (translated_centroid(points, weights, c).norm() < current.norm()) break;
-      c *= 0.5;
+    Eigen::Vector3d newton = -jacobian.fullPivLu().solve(current);
+    if (!newton.allFinite()) newton = Eigen::Vector3d::Zero();
+    if (newton.norm() > 0.95) newton *= 0.95 / newton.norm();
+    // Far from centred (mass crowded at one spot), Newton's model is poor: also try pushing
+    // straight away from the centroid by steps of several sizes, and keep the best.
+    std::vector<Eigen::Vector3d> candidates;
+    for (double scale = 1.0; scale > 1e-6; scale *= 0.5)
+      candidates.push_back(scale * newton);
+    for (double size : {0.99, 0.95, 0.9, 0.8, 0.6, 0.4, 0.2, 0.1})
+      candidates.push_back(size * current.normalized());
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    double best = current.norm();
+    for (const Eigen::Vector3d &candidate : candidates) {
+      const double norm = translated_centroid(points, weights, candidate).norm();
+      if (norm < best) {
+        best = norm;
+        c = candidate;
+      }
     }
+    if (c.norm() == 0) break;
     out.transformation = translation_matrix(c).after(out.transformation);
     for (size_t i = 0; i < values.size(); ++i)
       values[i] = out.transformation.apply(original[i]);

@@ -1,6 +1,7 @@
 #include "parameterization.h"
 
 #include <chrono>
+#include <set>
 
 #include "branch_points.h"
 #include "branch_snapping.h"
@@ -24,6 +25,15 @@ std::vector<double> vertex_areas(const Mesh &mesh) {
     for (int k = 0; k < 3; ++k)
       areas[index_of(mesh, mesh.face[f].cV(k))] += geometry.areas[f] / 3;
   return areas;
+}
+
+double smallest_angle(const MeshFace &face) {
+  double smallest = M_PI;
+  for (int k = 0; k < 3; ++k) {
+    const Point3 u = face.cP((k + 1) % 3) - face.cP(k), w = face.cP((k + 2) % 3) - face.cP(k);
+    smallest = std::min(smallest, std::atan2((u ^ w).Norm(), u * w));
+  }
+  return smallest;
 }
 
 } // namespace
@@ -63,33 +73,62 @@ Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &optio
   progress.report(0.6, "meromorphic function");
   std::vector<PlaneValue> values, critical_values;
   std::array<std::vector<int>, 3> critical_candidates; // genus 1
-  std::vector<PlaneValue> side_midpoints;              // genus >= 1 (branch_points.h)
+  std::vector<PlaneValue> side_midpoints;              // genus 1 (branch_points.h)
+
   if (out.genus == 0) {
-    Genus0Map map =
-        genus0_map(mesh, forms.edges, forms.weights, options.solver, options.puncture_face);
+    // The plain cotangent map is the most conformal; if it folds (negative weights on meshes with
+    // many obtuse triangles), the map with strictly positive weights cannot.
+    // Weights are raised only near folds (two rings), round by round; all of them at the end.
+    auto solve = [&](int pole_face) {
+      std::vector<char> raise(forms.edges.edge_count(), 0);
+      Genus0Map attempt =
+          genus0_map(mesh, forms.edges, forms.weights, options.solver, pole_face, raise);
+      for (int round = 0; round < 4 && !attempt.folded_faces.empty(); ++round) {
+        std::set<int> near;
+        for (int f : attempt.folded_faces)
+          for (int k = 0; k < 3; ++k)
+            near.insert(index_of(mesh, mesh.face[f].cV(k)));
+        for (int ring = 0; ring < 2; ++ring) {
+          std::set<int> grown = near;
+          for (int e = 0; e < forms.edges.edge_count(); ++e)
+            if (near.count(forms.edges.vertices[e][0]) || near.count(forms.edges.vertices[e][1])) {
+              grown.insert(forms.edges.vertices[e][0]);
+              grown.insert(forms.edges.vertices[e][1]);
+            }
+          near = grown;
+        }
+        for (int e = 0; e < forms.edges.edge_count(); ++e)
+          if (near.count(forms.edges.vertices[e][0]) && near.count(forms.edges.vertices[e][1]))
+            raise[e] = 1;
+        attempt = genus0_map(mesh, forms.edges, forms.weights, options.solver, pole_face, raise);
+      }
+      if (!attempt.folded_faces.empty())
+        attempt = genus0_map(mesh, forms.edges, forms.weights, options.solver, pole_face, {});
+      return attempt;
+    };
+    Genus0Map map = solve(options.puncture_face);
     if (options.puncture_face < 0) {
       // Parts far from the pole crowd into a tiny spot, where rounding can fold faces and the
       // pole model is least accurate. Solve again with the pole at the face that the centred map
       // puts on the north pole: the new map is nearly centred, so nothing is crowded.
       std::vector<PlaneValue> centred = map.values;
       if (center_on_sphere(centred, vertex_areas(mesh)).centroid_before.norm() > 1e-3) {
+        // Any face the centred map puts near the north pole will do; the best-shaped of those
+        // models the pole most accurately.
         int pole_face = -1;
-        for (size_t f = 0; f < mesh.face.size() && pole_face < 0; ++f) {
-          Eigen::Vector3d corner[3];
-          bool finite = true;
-          for (int k = 0; k < 3; ++k) {
-            const PlaneValue &value = centred[index_of(mesh, mesh.face[f].cV(k))];
-            finite &= !value.infinite;
-            corner[k] = to_sphere(value);
-          }
-          const Eigen::Vector3d north(0, 0, 1);
-          if (finite && corner[0].cross(corner[1]).dot(north) > 0 &&
-              corner[1].cross(corner[2]).dot(north) > 0 &&
-              corner[2].cross(corner[0]).dot(north) > 0)
+        double best_angle = -1;
+        for (size_t f = 0; f < mesh.face.size(); ++f) {
+          bool near_north = true;
+          for (int k = 0; k < 3; ++k)
+            near_north &= to_sphere(centred[index_of(mesh, mesh.face[f].cV(k))]).z() > 0.9;
+          if (!near_north) continue;
+          const double angle = smallest_angle(mesh.face[f]);
+          if (angle > best_angle) {
+            best_angle = angle;
             pole_face = int(f);
+          }
         }
-        if (pole_face >= 0)
-          map = genus0_map(mesh, forms.edges, forms.weights, options.solver, pole_face);
+        if (pole_face >= 0) map = solve(pole_face);
       }
     }
     values = map.values;
@@ -115,7 +154,7 @@ Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &optio
                           std::to_string(out.genus - 1));
     out.riemann_matrix = forms.riemann_matrix;
     values = form_ratio_map(mesh, forms.edges, forms.normalized[i] + forms.normalized[j],
-                            forms.normalized[i] - forms.normalized[j], &side_midpoints);
+                            forms.normalized[i] - forms.normalized[j]);
     out.form_pair = options.form_pair;
     out.method = "genus " + std::to_string(out.genus) + ": ratio (psi_" + std::to_string(i) +
                  " + psi_" + std::to_string(j) + ") / (psi_" + std::to_string(i) + " - psi_" +
@@ -131,20 +170,26 @@ Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &optio
       value = out.mobius.transformation.apply(value);
     for (PlaneValue &value : side_midpoints)
       value = out.mobius.transformation.apply(value);
+
     lap("mobius");
   }
 
   // A piecewise-linear map branches only at vertices; decided on the centred map, where nothing
   // is crowded. Genus 1 knows its critical points; for genus >= 2 they are found from the folds.
-  std::vector<Eigen::Vector3d> midpoints;
+  CornerPaths midpoints;
   for (const PlaneValue &value : side_midpoints)
-    midpoints.push_back(to_sphere(value));
+    midpoints.middle.push_back(to_sphere(value));
+
   if (out.genus == 1) {
     for (int k = 0; k < 3; ++k)
       place_critical_value(mesh, values, critical_candidates[k], critical_values[k], midpoints);
     out.snapped_branch_points = 3;
   } else if (out.genus >= 2) {
-    out.snapped_branch_points = snap_branch_points(mesh, values);
+    for (int pass = 0; pass < 4; ++pass) {
+      const int moved = snap_branch_points(mesh, values);
+      out.snapped_branch_points += moved;
+      if (!moved) break;
+    }
   }
   lap("branch_placement");
   out.sphere.reserve(values.size());
@@ -154,7 +199,25 @@ Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &optio
   progress.report(0.8, "branch points and layers");
   Branching branching = analyse_branching(mesh, out.sphere, out.euler, midpoints);
   out.untangled_vertices = untangle_folds(mesh, out.sphere, branching.branch_vertices);
-  if (out.untangled_vertices) branching = analyse_branching(mesh, out.sphere, out.euler, midpoints);
+  if (options.mobius && (out.untangled_vertices || out.snapped_branch_points)) {
+    // The vertices moved above shift the centroid a little: centre once more.
+    for (size_t v = 0; v < values.size(); ++v)
+      if (!values[v].infinite && (to_sphere(values[v]) - out.sphere[v]).norm() > 1e-15)
+        values[v] = to_plane_value(out.sphere[v]);
+    const MobiusCentering again = center_on_sphere(values, vertex_areas(mesh));
+    out.mobius.transformation = again.transformation.after(out.mobius.transformation);
+    out.mobius.centroid_after = again.centroid_after;
+    out.mobius.steps += again.steps;
+    for (PlaneValue &value : side_midpoints)
+      value = again.transformation.apply(value);
+    midpoints.middle.clear();
+    for (const PlaneValue &value : side_midpoints)
+      midpoints.middle.push_back(to_sphere(value));
+    for (size_t v = 0; v < values.size(); ++v)
+      out.sphere[v] = to_sphere(values[v]);
+  }
+  if (out.untangled_vertices || options.mobius)
+    branching = analyse_branching(mesh, out.sphere, out.euler, midpoints);
   out.degree = branching.degree;
   out.area_over_4pi = branching.area_over_4pi;
   out.ramification = branching.ramification;

@@ -52,6 +52,12 @@ bool folded_image(const Eigen::Vector3d &a, const Eigen::Vector3d &b, const Eige
   return signed_solid_angle(a, b, c) < -1e-9 * chord;
 }
 
+Eigen::Vector3d from_chart(const Eigen::Vector3d &p, const Complex &w) {
+  const Eigen::Quaterniond rotation =
+      Eigen::Quaterniond::FromTwoVectors(p, Eigen::Vector3d(0, 0, -1));
+  return rotation.inverse() * to_sphere(w);
+}
+
 PlaneValue to_plane_value(const Eigen::Vector3d &p) {
   if (p.z() >= 1.0 || std::hypot(p.x(), p.y()) < 1e-300) {
     if (p.z() > 0) return {Complex(), true};

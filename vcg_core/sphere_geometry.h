@@ -48,6 +48,9 @@ Complex chart_at(const Eigen::Vector3d &p, const Eigen::Vector3d &q);
 
 PlaneValue to_plane_value(const Eigen::Vector3d &p); // the north pole gives infinity
 
+// The sphere point whose coordinate in the chart centred at p is w (inverse of chart_at).
+Eigen::Vector3d from_chart(const Eigen::Vector3d &p, const Complex &w);
+
 // A Moebius transformation w -> (a w + b) / (c w + d), acting on the extended plane.
 struct Mobius {
   Complex a{1, 0}, b{0, 0}, c{0, 0}, d{1, 0};

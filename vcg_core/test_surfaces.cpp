@@ -89,28 +89,85 @@ void make_implicit_torus(Mesh &mesh, double major_radius, double minor_radius, i
       box, voxel, mesh, remesh);
 }
 
+namespace {
+
+double distance_to_segment(const Point3 &p, const Point3 &a, const Point3 &b) {
+  const Point3 ab = b - a;
+  const double t = std::clamp(((p - a) * ab) / ab.SquaredNorm(), 0.0, 1.0);
+  return (p - (a + ab * t)).Norm();
+}
+
+} // namespace
+
+void make_tentacle_blob(Mesh &mesh, int tentacles, double length, int resolution) {
+  if (tentacles < 0 || tentacles > 32) throw ArgumentError("tentacles must be between 0 and 32");
+  if (length < 1.0 || length > 20.0)
+    throw ArgumentError("tentacle length must be between 1 and 20");
+  if (resolution < 10) throw ArgumentError("resolution must be at least 10");
+  // Directions spread by the golden-angle spiral.
+  std::vector<Point3> tips;
+  for (int k = 0; k < tentacles; ++k) {
+    const double z = 1.0 - 2.0 * (k + 0.5) / tentacles, r = std::sqrt(1 - z * z);
+    const double phi = k * M_PI * (3.0 - std::sqrt(5.0));
+    tips.push_back(Point3(r * std::cos(phi), r * std::sin(phi), z) * length);
+  }
+  const double tube = 0.12, voxel = 2.0 / resolution;
+  vcg::Box3d box(Point3(-1, -1, -1), Point3(1, 1, 1));
+  for (const Point3 &tip : tips) {
+    box.Add(tip + Point3(tube, tube, tube));
+    box.Add(tip - Point3(tube, tube, tube));
+  }
+  extract_isosurface(
+      [&](const Point3 &p) {
+        double d = p.Norm() - 1.0;
+        for (const Point3 &tip : tips)
+          d = smooth_min(d, distance_to_segment(p, Point3(0, 0, 0), tip) - tube, 0.2);
+        return d;
+      },
+      box, voxel, mesh);
+}
+
 void make_genus_surface(Mesh &mesh, int genus, int resolution, bool remesh) {
   if (genus < 0 || genus > 64) throw ArgumentError("genus must be between 0 and 64");
   if (resolution < 10) throw ArgumentError("resolution must be at least 10");
-  const double ring = 1.0, tube = 0.35, spacing = 2.6, blend = 0.15;
-  const double voxel = 2 * (ring + tube) / resolution;
+  const double blend = 0.15;
+  const double voxel = 2 * 1.35 / resolution;
   if (genus == 0) {
     const vcg::Box3d box(Point3(-1, -1, -1), Point3(1, 1, 1));
     extract_isosurface([](const Point3 &p) { return p.Norm() - 1.0; }, box, voxel, mesh, remesh);
     return;
   }
-  const double reach = ring + tube;
-  const vcg::Box3d box(Point3(-reach, -reach, -tube),
-                       Point3(spacing * (genus - 1) + reach, reach, tube));
+  // Rings of different sizes and tube radii along a gently bending row, each overlapping the next:
+  // no symmetry, so for genus >= 3 the surface is not hyperelliptic (a generic conformal class).
+  struct Ring {
+    Point3 centre;
+    double radius, tube;
+  };
+  std::vector<Ring> rings;
+  for (int k = 0; k < genus; ++k) {
+    Ring ring{Point3(0, 0, 0), 1.0 + 0.2 * std::sin(1.3 * k + 0.5),
+              0.33 + 0.05 * std::cos(1.7 * k)};
+    if (k > 0) {
+      const Ring &previous = rings.back();
+      const double step = previous.radius + ring.radius + 0.5 * (previous.tube + ring.tube);
+      const double turn = 0.35 * std::sin(0.9 * k);
+      ring.centre = previous.centre + Point3(step * std::cos(turn), step * std::sin(turn), 0);
+    }
+    rings.push_back(ring);
+  }
+  vcg::Box3d box;
+  for (const Ring &ring : rings) {
+    const double reach = ring.radius + ring.tube;
+    box.Add(ring.centre + Point3(reach, reach, ring.tube));
+    box.Add(ring.centre - Point3(reach, reach, ring.tube));
+  }
   extract_isosurface(
       [&](const Point3 &p) {
-        // Only the nearest two rings matter for the blend.
-        const int nearest = std::clamp(int(std::lround(p[0] / spacing)), 0, genus - 1);
-        double d = distance_to_circle(p, Point3(spacing * nearest, 0, 0), ring);
-        for (int k : {nearest - 1, nearest + 1})
-          if (k >= 0 && k < genus)
-            d = smooth_min(d, distance_to_circle(p, Point3(spacing * k, 0, 0), ring), blend);
-        return d - tube;
+        double d = distance_to_circle(p, rings[0].centre, rings[0].radius) - rings[0].tube;
+        for (size_t k = 1; k < rings.size(); ++k)
+          d = smooth_min(d, distance_to_circle(p, rings[k].centre, rings[k].radius) - rings[k].tube,
+                         blend);
+        return d;
       },
       box, voxel, mesh, remesh);
 }

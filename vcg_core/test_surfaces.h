@@ -24,8 +24,14 @@ void make_grid_torus(Mesh &mesh, double major_radius, double minor_radius, int m
 void make_implicit_torus(Mesh &mesh, double major_radius, double minor_radius, int resolution,
                          bool remesh = true);
 
-// A closed surface of genus `genus` (0..): `genus` rings of tubes in a row, each ring blended with
-// the next; genus 0 is a sphere. `resolution` is about the number of edges across one ring.
+// A closed surface of genus `genus` (0..): `genus` rings of tubes of different sizes along a gently
+// bending row, each blended with the next (no symmetry: for genus >= 3 not hyperelliptic); genus 0
+// is a sphere. `resolution` is about the number of edges across one ring.
 void make_genus_surface(Mesh &mesh, int genus, int resolution, bool remesh = true);
+
+// Genus 0 with long thin parts: a ball with `tentacles` tubes of radius 0.12 reaching `length`
+// from its centre in well-spread directions, blended in (marching cubes + isotropic remeshing).
+// The hard case for conformal maps to the sphere: thin parts shrink exponentially.
+void make_tentacle_blob(Mesh &mesh, int tentacles, double length, int resolution);
 
 } // namespace meromorph

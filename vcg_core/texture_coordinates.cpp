@@ -34,6 +34,7 @@ TextureCoordinates texture_coordinates(const Mesh &mesh, const std::vector<Eigen
     }
   }
   out.wedge.resize(mesh.face.size());
+  out.around_pole.assign(mesh.face.size(), 0);
   for (size_t f = 0; f < mesh.face.size(); ++f) {
     int corner_vertex[3];
     for (int k = 0; k < 3; ++k) {
@@ -41,6 +42,12 @@ TextureCoordinates texture_coordinates(const Mesh &mesh, const std::vector<Eigen
       out.wedge[f][k] = out.vertex[corner_vertex[k]];
     }
     if (kind != UvKind::spherical) continue;
+    const Eigen::Vector3d &a = sphere[corner_vertex[0]], &b = sphere[corner_vertex[1]],
+                          &c = sphere[corner_vertex[2]];
+    for (const Eigen::Vector3d pole : {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0, 0, -1)})
+      if (a.cross(b).dot(pole) > 0 && b.cross(c).dot(pole) > 0 && c.cross(a).dot(pole) > 0 &&
+          pole.dot(a + b + c) > 0)
+        out.around_pole[f] = 1;
     auto &w = out.wedge[f];
     // Unwrap across phi = +-pi: lift the corners on the u < 1/2 side by one turn.
     double low = 2, high = -1;

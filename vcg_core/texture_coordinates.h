@@ -5,9 +5,11 @@
 //      Spherical: u = phi / 2 pi + 1/2, v = theta / pi (phi the longitude, theta the angle from the
 //      north pole), as in the paper's figures. Wedges are seam-correct: a face that straddles
 //      phi = +-pi gets its corners unwrapped (u may exceed 1, for a repeating texture), and a
-//      corner at a pole takes the longitude of the face's other corners. Stereographic: the plane
-//      coordinate w of sphere_geometry.h, (u, v) = (Re w, Im w), capped at 1e6 in magnitude near
-//      the north pole; wedges equal the vertex values.
+//      corner at a pole takes the longitude of the face's other corners. A face whose image
+//      contains a pole has corners all around it in longitude: no wedge layout keeps it from
+//      spanning the texture; `around_pole` marks those faces (a few per layer). Stereographic: the
+//      plane coordinate w of sphere_geometry.h, (u, v) = (Re w, Im w), capped at 1e6 in magnitude
+//      near the north pole; wedges equal the vertex values.
 #pragma once
 
 #include <array>
@@ -24,6 +26,7 @@ enum class UvKind { spherical, stereographic };
 struct TextureCoordinates {
   std::vector<std::array<double, 2>> vertex;
   std::vector<std::array<std::array<double, 2>, 3>> wedge;
+  std::vector<char> around_pole; // per face
 };
 
 TextureCoordinates texture_coordinates(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere,

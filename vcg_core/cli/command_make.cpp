@@ -27,6 +27,9 @@ struct MakeOptions {
   int genus = 2;
   int resolution = 40;
   bool raw_marching_cubes = false;
+  // blob
+  int tentacles = 6;
+  double tentacle_length = 4.0;
 };
 
 int finish(Mesh &mesh, const MakeOptions &options) {
@@ -107,7 +110,17 @@ Command add_make_command(CLI::App &app) {
                        "keep marching cubes' triangles (many obtuse and needle-shaped ones): a "
                        "stress test; default remeshes them isotropically");
 
-  return [options, sphere, torus, genus]() {
+  CLI::App *blob = make->add_subcommand(
+      "blob", "Genus 0 with long thin parts: a ball with tentacles (the hard case for maps to the "
+              "sphere).");
+  add_common(blob, *options);
+  blob->add_option("--tentacles", options->tentacles, "number of tentacles")->capture_default_str();
+  blob->add_option("--length", options->tentacle_length, "tentacle length (ball radius 1)")
+      ->capture_default_str();
+  blob->add_option("--resolution", options->resolution, "edges across the ball")
+      ->capture_default_str();
+
+  return [options, sphere, torus, genus, blob]() {
     Mesh mesh;
     if (sphere->parsed()) {
       make_icosphere(mesh, options->subdivisions, options->radius);
@@ -124,6 +137,8 @@ Command add_make_command(CLI::App &app) {
                 : int(std::lround(minor * options->major_radius / options->minor_radius));
         make_grid_torus(mesh, options->major_radius, options->minor_radius, major, minor);
       }
+    } else if (blob->parsed()) {
+      make_tentacle_blob(mesh, options->tentacles, options->tentacle_length, options->resolution);
     } else {
       make_genus_surface(mesh, options->genus, options->resolution, !options->raw_marching_cubes);
     }

@@ -1,0 +1,203 @@
+// The main job against exact results: degree, branch points and Riemann-Hurwitz, layers that each
+// cover the sphere once, no folds away from branch points, Moebius centring, seam-correct wedges.
+#include <cmath>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "errors.h"
+#include "genus1_map.h"
+#include "holomorphic_pipeline.h"
+#include "mesh_reader.h"
+#include "mobius_centering.h"
+#include "parameterization.h"
+#include "test_support.h"
+#include "test_surfaces.h"
+
+namespace meromorph {
+namespace {
+
+std::vector<double> vertex_areas(const Mesh &mesh) {
+  std::vector<double> areas(mesh.vert.size(), 0.0);
+  for (const MeshFace &f : mesh.face) {
+    const double area = ((f.cP(1) - f.cP(0)) ^ (f.cP(2) - f.cP(0))).Norm() / 2;
+    for (int k = 0; k < 3; ++k)
+      areas[index_of(mesh, f.cV(k))] += area / 3;
+  }
+  return areas;
+}
+
+void expect_valid_map(const Mesh &mesh, const Parameterization &map, int degree,
+                      const std::string &name) {
+  EXPECT_EQ(map.degree, degree) << name;
+  EXPECT_NEAR(map.area_over_4pi, degree, 0.01) << name;
+  EXPECT_TRUE(map.riemann_hurwitz_ok) << name << ": ramification " << map.ramification;
+  EXPECT_EQ(map.euler, 2 * map.degree - map.ramification) << name;
+  EXPECT_EQ(map.sheets.count, degree) << name;
+  for (double coverage : map.sheets.coverage)
+    EXPECT_NEAR(coverage, 1.0, 0.05) << name;
+  EXPECT_EQ(map.quality.away_from_branch_points.folded_faces, 0) << name;
+  // Moebius centring: the area-weighted centroid of the image is the origin.
+  EXPECT_LT(centroid(map.sphere, vertex_areas(mesh)).norm(), 1e-6) << name;
+  for (const Eigen::Vector3d &p : map.sphere)
+    ASSERT_NEAR(p.norm(), 1.0, 1e-9) << name;
+  // Seam-correct wedges: no face spans more than half the texture.
+  int around_pole = 0;
+  for (size_t f = 0; f < map.uv.wedge.size(); ++f) {
+    const auto &wedge = map.uv.wedge[f];
+    if (map.uv.around_pole[f]) { // the faces whose image holds a pole (a few per layer)
+      ++around_pole;
+      continue;
+    }
+    double low_u = 9, high_u = -9, low_v = 9, high_v = -9;
+    for (const auto &uv : wedge) {
+      low_u = std::min(low_u, uv[0]);
+      high_u = std::max(high_u, uv[0]);
+      low_v = std::min(low_v, uv[1]);
+      high_v = std::max(high_v, uv[1]);
+    }
+    ASSERT_LE(high_u - low_u, 0.5) << name;
+    ASSERT_LE(high_v - low_v, 0.5) << name;
+  }
+  EXPECT_LE(around_pole, 2 * degree + 2) << name;
+}
+
+TEST(Parameterization, ClosedSharedMeshes) {
+  struct Case {
+    const char *name;
+    int genus, degree, branch_points;
+  };
+  for (const Case &c :
+       {Case{"sphere.off", 0, 1, 0}, Case{"maxplanck.nf25k.off", 0, 1, 0},
+        Case{"torus.off", 1, 2, 4}, Case{"knot.obj", 1, 2, 4}, Case{"kitten.nf20k.off", 1, 2, 4},
+        Case{"kitten.nv40k.off", 1, 2, 4}, Case{"eight.off", 2, 2, 6}}) {
+    Mesh mesh;
+    test::load(test::data_path(c.name), mesh);
+    const Parameterization map = parameterize(mesh);
+    EXPECT_EQ(map.genus, c.genus) << c.name;
+    expect_valid_map(mesh, map, c.degree, c.name);
+    EXPECT_EQ(int(map.branch_points.size()), c.branch_points) << c.name;
+    for (const BranchPoint &b : map.branch_points)
+      EXPECT_EQ(b.local_degree, 2) << c.name;
+  }
+}
+
+TEST(Parameterization, GeneratedSurfacesOfGenusZeroToTwo) {
+  Mesh sphere, torus, implicit_torus, genus2;
+  make_genus_surface(sphere, 0, 24);
+  make_grid_torus(torus, 2.0, 1.0, 64, 32);
+  make_implicit_torus(implicit_torus, 2.0, 1.0, 24);
+  make_genus_surface(genus2, 2, 30);
+  expect_valid_map(sphere, parameterize(sphere), 1, "genus 0");
+  expect_valid_map(torus, parameterize(torus), 2, "grid torus");
+  expect_valid_map(implicit_torus, parameterize(implicit_torus), 2, "implicit torus");
+  const Parameterization map = parameterize(genus2);
+  expect_valid_map(genus2, map, 2, "genus 2");
+  EXPECT_EQ(map.branch_points.size(), 6u) << "genus 2: 2g + 2 branch points";
+}
+
+TEST(Parameterization, GenusZeroConvergesToConformalUnderRefinement) {
+  double previous = 1e9;
+  for (int subdivisions : {2, 3, 4}) {
+    Mesh mesh;
+    make_icosphere(mesh, subdivisions);
+    const Parameterization map = parameterize(mesh);
+    expect_valid_map(mesh, map, 1, "icosphere");
+    const double error = map.quality.overall.angle_error_mean_degrees;
+    EXPECT_LT(error, 0.7 * previous) << subdivisions;
+    previous = error;
+  }
+}
+
+TEST(Parameterization, TorusBranchPointsSitAtTheHalfPeriods) {
+  Mesh mesh;
+  make_grid_torus(mesh, 2.0, 1.0, 64, 32);
+  const Parameterization map = parameterize(mesh);
+  ASSERT_EQ(map.branch_points.size(), 4u);
+  const HolomorphicForms forms = compute_holomorphic_forms(mesh);
+  const Genus1Map flat = genus1_map(mesh, forms.edges, forms.normalized[0], Complex(1, 0),
+                                    forms.riemann_matrix(0, 0), map.origin_vertex);
+  double longest_edge = 0;
+  for (int e = 0; e < forms.edges.edge_count(); ++e)
+    longest_edge = std::max(longest_edge, std::abs(forms.normalized[0][e]));
+  // Each half period and the origin have a branch vertex within one ring.
+  std::vector<Complex> targets{Complex(0, 0)};
+  for (const Complex &h : flat.p_function.half_periods())
+    targets.push_back(h);
+  for (const Complex &target : targets) {
+    double nearest = 1e9;
+    for (const BranchPoint &b : map.branch_points)
+      nearest = std::min(nearest, flat.p_function.lattice_distance(flat.flat[b.vertex] - target));
+    EXPECT_LE(nearest, 1.01 * longest_edge) << target;
+  }
+}
+
+TEST(Parameterization, WithoutMoebiusTheCentroidIsLeftAlone) {
+  Mesh mesh;
+  make_grid_torus(mesh, 2.0, 1.0, 64, 32);
+  ParameterizeOptions options;
+  options.mobius = false;
+  const Parameterization map = parameterize(mesh, options);
+  EXPECT_FALSE(map.mobius_applied);
+  EXPECT_GT(centroid(map.sphere, vertex_areas(mesh)).norm(), 1e-3);
+  EXPECT_EQ(map.degree, 2);
+}
+
+TEST(Parameterization, RefusesWhatValidationRefuses) {
+  for (const char *name : {"eight.hole.off", "face.off", "bunny.off"}) {
+    Mesh mesh;
+    test::load(test::data_path(name), mesh);
+    EXPECT_THROW(parameterize(mesh), InputError) << name;
+  }
+  Mesh mesh;
+  make_grid_torus(mesh, 2.0, 1.0, 20, 10);
+  ParameterizeOptions options;
+  options.origin_vertex = 100000;
+  EXPECT_THROW(parameterize(mesh, options), ArgumentError);
+}
+
+TEST(ParamCommand, WritesSurfaceSphereAndReport) {
+  test::TempDir dir;
+  const std::string input = test::data_path("eight.off");
+  const test::RunResult r =
+      test::run_cli({"param", input, "-o", dir.path("out.ply"), "--sphere", dir.path("sphere.ply"),
+                     "--report", dir.path("report.json"), "--layer-gap", "0.25", "--quiet"});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::ifstream report_stream(dir.path("report.json"));
+  const nlohmann::json report = nlohmann::json::parse(report_stream);
+  EXPECT_EQ(report["genus"], 2);
+  EXPECT_EQ(report["degree"], 2);
+  EXPECT_TRUE(report["riemann_hurwitz_ok"].get<bool>());
+  EXPECT_EQ(report["branch_points"].size(), 6u);
+  for (const char *key : {"euler", "method", "mobius", "distortion", "repairs", "timings_ms",
+                          "version", "riemann_matrix"})
+    EXPECT_TRUE(report.contains(key)) << key;
+
+  // The surface keeps the input's vertices; the sphere file adds layer and branch.
+  Mesh surface, layered;
+  test::load(dir.path("out.ply"), surface);
+  test::load(dir.path("sphere.ply"), layered);
+  EXPECT_EQ(surface.VN(), 766);
+  EXPECT_EQ(layered.VN(), 766);
+  std::ifstream sphere_stream(dir.path("sphere.ply"), std::ios::binary);
+  std::string header;
+  for (std::string line; std::getline(sphere_stream, line) && line != "end_header";)
+    header += line + "\n";
+  EXPECT_NE(header.find("property int layer"), std::string::npos) << header;
+  EXPECT_NE(header.find("property uchar branch"), std::string::npos) << header;
+  double largest = 0;
+  for (const MeshVertex &v : layered.vert)
+    largest = std::max(largest, v.cP().Norm());
+  EXPECT_NEAR(largest, 1.25, 1e-6) << "layer 1 on the sphere of radius 1 + gap";
+
+  // Never over the input; open surfaces refused with exit code 3.
+  EXPECT_EQ(test::run_cli({"param", input, "-o", input}).exit_code, 2);
+  const test::RunResult open =
+      test::run_cli({"param", test::data_path("eight.open.off"), "-o", dir.path("x.ply")});
+  EXPECT_EQ(open.exit_code, 3);
+  EXPECT_NE(open.err.find("boundary loop"), std::string::npos) << open.err;
+}
+
+} // namespace
+} // namespace meromorph
