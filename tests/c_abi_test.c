@@ -1,0 +1,151 @@
+/* The C ABI from plain C99: a torus of revolution, and every kind of misuse. Exits non-zero on
+ * the first failed check; prints "N passed, 0 failed" at the end. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "meromorph.h"
+
+static int passed = 0;
+
+#define CHECK(condition)                                                                          \
+  do {                                                                                            \
+    if (!(condition)) {                                                                           \
+      printf("FAILED line %d: %s (last error: %s)\n", __LINE__, #condition, meromorph_last_error()); \
+      printf("%d passed, 1 failed\n", passed);                                                    \
+      exit(1);                                                                                    \
+    }                                                                                             \
+    ++passed;                                                                                     \
+  } while (0)
+
+enum { MAJOR = 48, MINOR = 24, V = MAJOR * MINOR, F = 2 * V };
+static double positions[3 * V];
+static int32_t triangles[3 * F];
+
+static void make_torus(void) {
+  const double pi = 3.14159265358979323846;
+  int i, j;
+  for (i = 0; i < MAJOR; ++i)
+    for (j = 0; j < MINOR; ++j) {
+      const double u = 2 * pi * i / MAJOR, v = 2 * pi * j / MINOR, ring = 2.0 + cos(v);
+      double *p = positions + 3 * (i * MINOR + j);
+      p[0] = ring * cos(u);
+      p[1] = ring * sin(u);
+      p[2] = sin(v);
+    }
+  for (i = 0; i < MAJOR; ++i)
+    for (j = 0; j < MINOR; ++j) {
+      const int32_t a = i * MINOR + j, b = ((i + 1) % MAJOR) * MINOR + j;
+      const int32_t c = ((i + 1) % MAJOR) * MINOR + (j + 1) % MINOR, d = i * MINOR + (j + 1) % MINOR;
+      int32_t *t = triangles + 6 * a;
+      t[0] = a; t[1] = b; t[2] = c;
+      t[3] = a; t[4] = c; t[5] = d;
+    }
+}
+
+static int calls = 0;
+static int cancel_at_third_call(double fraction, const char *stage, void *user) {
+  (void)fraction;
+  (void)stage;
+  (void)user;
+  return ++calls < 3;
+}
+
+int main(void) {
+  meromorph_options options;
+  meromorph_result *result = NULL;
+  double *sphere, *uv, *corners;
+  int32_t *layers, branch_vertices[8], branch_degrees[8];
+  meromorph_distortion distortion;
+  size_t v, branch_count;
+  float *float_positions;
+
+  CHECK(meromorph_abi_version() == MEROMORPH_ABI_VERSION);
+  CHECK(strlen(meromorph_version()) > 0);
+  make_torus();
+  meromorph_default_options(&options);
+  options.layer_gap = 0.5;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_OK);
+  CHECK(result != NULL);
+  CHECK(meromorph_genus(result) == 1);
+  CHECK(meromorph_degree(result) == 2);
+  CHECK(meromorph_riemann_hurwitz_ok(result) == 1);
+  CHECK(meromorph_vertex_count(result) == V);
+  CHECK(meromorph_triangle_count(result) == F);
+
+  sphere = malloc(sizeof(double) * 3 * V);
+  uv = malloc(sizeof(double) * 2 * V);
+  corners = malloc(sizeof(double) * 6 * F);
+  layers = malloc(sizeof(int32_t) * V);
+  CHECK(meromorph_sphere_positions(result, sphere) == MEROMORPH_OK);
+  for (v = 0; v < V; ++v)
+    CHECK(fabs(sqrt(sphere[3 * v] * sphere[3 * v] + sphere[3 * v + 1] * sphere[3 * v + 1] +
+                    sphere[3 * v + 2] * sphere[3 * v + 2]) - 1.0) < 1e-9);
+  CHECK(meromorph_vertex_uvs(result, uv) == MEROMORPH_OK);
+  for (v = 0; v < V; ++v) CHECK(uv[2 * v] >= 0 && uv[2 * v] <= 1 && uv[2 * v + 1] >= 0 && uv[2 * v + 1] <= 1);
+  CHECK(meromorph_corner_uvs(result, corners) == MEROMORPH_OK);
+  CHECK(meromorph_layers(result, layers) == MEROMORPH_OK);
+  for (v = 0; v < V; ++v) CHECK(layers[v] == 0 || layers[v] == 1);
+  CHECK(meromorph_layered_positions(result, sphere) == MEROMORPH_OK);
+  for (v = 0; v < V; ++v) {
+    const double r = sqrt(sphere[3 * v] * sphere[3 * v] + sphere[3 * v + 1] * sphere[3 * v + 1] +
+                          sphere[3 * v + 2] * sphere[3 * v + 2]);
+    CHECK(fabs(r - (1.0 + 0.5 * layers[v])) < 1e-9);
+  }
+  branch_count = meromorph_branch_point_count(result);
+  CHECK(branch_count == 4);
+  CHECK(meromorph_branch_points(result, branch_vertices, branch_degrees) == MEROMORPH_OK);
+  for (v = 0; v < branch_count; ++v) CHECK(branch_degrees[v] == 2 && branch_vertices[v] < V);
+  CHECK(meromorph_get_distortion(result, &distortion) == MEROMORPH_OK);
+  CHECK(distortion.folded_faces_away_from_branch_points == 0);
+  CHECK(distortion.quasi_conformal_mean >= 1.0);
+  CHECK(strstr(meromorph_report_json(result), "\"degree\": 2") != NULL);
+  meromorph_result_free(result);
+  result = NULL;
+
+  /* The same mesh in single precision, without options. */
+  float_positions = malloc(sizeof(float) * 3 * V);
+  for (v = 0; v < 3 * V; ++v) float_positions[v] = (float)positions[v];
+  CHECK(meromorph_parameterize_f(float_positions, V, triangles, F, NULL, &result) == MEROMORPH_OK);
+  CHECK(meromorph_degree(result) == 2);
+  meromorph_result_free(result);
+  result = NULL;
+
+  /* Misuse: a clear status and message, never a crash. */
+  CHECK(meromorph_parameterize_d(NULL, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(strstr(meromorph_last_error(), "positions") != NULL);
+  CHECK(meromorph_parameterize_d(positions, V, NULL, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, NULL) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, 0, &options, &result) == MEROMORPH_ERROR_INPUT);
+  CHECK(strstr(meromorph_last_error(), "no faces") != NULL);
+  CHECK(result == NULL);
+  triangles[3 * 7 + 1] = V + 5;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_INPUT);
+  CHECK(strstr(meromorph_last_error(), "face 7 refers to vertex") != NULL);
+  triangles[3 * 7 + 1] = -1;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_INPUT);
+  make_torus();
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F - 1, &options, &result) == MEROMORPH_ERROR_INPUT);
+  CHECK(strstr(meromorph_last_error(), "boundary loop") != NULL);
+  options.origin_vertex = V + 100;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  meromorph_default_options(&options);
+  options.struct_size = 4;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  meromorph_default_options(&options);
+  options.progress = cancel_at_third_call;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_CANCELLED);
+  CHECK(result == NULL);
+  CHECK(meromorph_sphere_positions(NULL, sphere) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_degree(NULL) == -1);
+  meromorph_result_free(NULL);
+
+  free(sphere);
+  free(uv);
+  free(corners);
+  free(layers);
+  free(float_positions);
+  printf("%d passed, 0 failed\n", passed);
+  return 0;
+}

@@ -1,0 +1,242 @@
+// The C ABI (meromorph.h) over the core: arrays in, the parameterization out, errors as codes.
+#include "meromorph.h"
+
+#include <cstring>
+#include <new>
+#include <string>
+
+#include "errors.h"
+#include "mesh_from_arrays.h"
+#include "parameterization.h"
+#include "report_json.h"
+
+struct meromorph_result {
+  meromorph::Parameterization map;
+  std::string report;
+  size_t triangles = 0;
+};
+
+namespace {
+
+thread_local std::string last_error;
+
+meromorph_status fail(meromorph_status status, const std::string &message) {
+  last_error = message;
+  return status;
+}
+
+template <class Scalar>
+meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
+                              const int32_t *triangles, size_t triangle_count,
+                              const meromorph_options *options, meromorph_result **result) {
+  using namespace meromorph;
+  last_error.clear();
+  if (!result) return fail(MEROMORPH_ERROR_ARGUMENT, "result pointer is NULL");
+  *result = nullptr;
+  if (!positions && vertex_count)
+    return fail(MEROMORPH_ERROR_ARGUMENT, "positions pointer is NULL");
+  if (!triangles && triangle_count)
+    return fail(MEROMORPH_ERROR_ARGUMENT, "triangles pointer is NULL");
+  if (vertex_count == 0 || triangle_count == 0)
+    return fail(MEROMORPH_ERROR_INPUT,
+                "the mesh has no " + std::string(vertex_count ? "faces" : "vertices"));
+  meromorph_options settings;
+  meromorph_default_options(&settings);
+  if (options) {
+    if (options->struct_size < offsetof(meromorph_options, progress))
+      return fail(
+          MEROMORPH_ERROR_ARGUMENT,
+          "options.struct_size is too small (not initialized with meromorph_default_options?)");
+    std::memcpy(&settings, options, std::min(options->struct_size, sizeof(settings)));
+  }
+  try {
+    MeshArrays arrays;
+    arrays.positions.reserve(vertex_count);
+    for (size_t v = 0; v < vertex_count; ++v)
+      arrays.positions.emplace_back(double(positions[3 * v]), double(positions[3 * v + 1]),
+                                    double(positions[3 * v + 2]));
+    arrays.triangles.reserve(triangle_count);
+    for (size_t t = 0; t < triangle_count; ++t)
+      arrays.triangles.push_back({triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]});
+    Mesh mesh;
+    mesh_from_arrays(arrays, mesh);
+
+    ParameterizeOptions parameters;
+    parameters.uv = settings.uv_kind == 1 ? UvKind::stereographic : UvKind::spherical;
+    parameters.mobius = settings.mobius != 0;
+    parameters.origin_vertex = settings.origin_vertex;
+    parameters.form_pair = {settings.form_pair[0], settings.form_pair[1]};
+    parameters.layer_gap = settings.layer_gap;
+    parameters.puncture_face = settings.pole_face;
+    Progress progress;
+    if (settings.progress) {
+      const meromorph_progress_fn callback = settings.progress;
+      void *user = settings.progress_user;
+      progress = Progress([callback, user](double fraction, const std::string &stage) {
+        return callback(fraction, stage.c_str(), user) != 0;
+      });
+    }
+    auto *out = new meromorph_result;
+    try {
+      out->map = meromorph::parameterize(mesh, parameters, progress);
+      nlohmann::json report = parameterization_json(out->map);
+      report["version"] = MEROMORPH_VERSION;
+      out->report = report.dump(2);
+      out->triangles = triangle_count;
+    } catch (...) {
+      delete out;
+      throw;
+    }
+    *result = out;
+    return MEROMORPH_OK;
+  } catch (const Cancelled &) {
+    return fail(MEROMORPH_ERROR_CANCELLED, "cancelled by the progress callback");
+  } catch (const ArgumentError &error) {
+    return fail(MEROMORPH_ERROR_ARGUMENT, error.what());
+  } catch (const InputError &error) {
+    return fail(MEROMORPH_ERROR_INPUT, error.what());
+  } catch (const std::bad_alloc &) {
+    return fail(MEROMORPH_ERROR_INTERNAL, "out of memory");
+  } catch (const std::exception &error) {
+    return fail(MEROMORPH_ERROR_INTERNAL, error.what());
+  } catch (...) {
+    return fail(MEROMORPH_ERROR_INTERNAL, "unknown internal failure");
+  }
+}
+
+} // namespace
+
+extern "C" {
+
+int meromorph_abi_version(void) {
+  return MEROMORPH_ABI_VERSION;
+}
+const char *meromorph_version(void) {
+  return MEROMORPH_VERSION;
+}
+const char *meromorph_last_error(void) {
+  return last_error.c_str();
+}
+
+void meromorph_default_options(meromorph_options *options) {
+  if (!options) return;
+  std::memset(options, 0, sizeof(*options));
+  options->struct_size = sizeof(meromorph_options);
+  options->uv_kind = 0;
+  options->mobius = 1;
+  options->origin_vertex = -1;
+  options->form_pair[0] = 0;
+  options->form_pair[1] = 1;
+  options->layer_gap = 0.0;
+  options->pole_face = -1;
+}
+
+meromorph_status meromorph_parameterize_d(const double *positions, size_t vertex_count,
+                                          const int32_t *triangles, size_t triangle_count,
+                                          const meromorph_options *options,
+                                          meromorph_result **result) {
+  return parameterize(positions, vertex_count, triangles, triangle_count, options, result);
+}
+
+meromorph_status meromorph_parameterize_f(const float *positions, size_t vertex_count,
+                                          const int32_t *triangles, size_t triangle_count,
+                                          const meromorph_options *options,
+                                          meromorph_result **result) {
+  return parameterize(positions, vertex_count, triangles, triangle_count, options, result);
+}
+
+void meromorph_result_free(meromorph_result *result) {
+  delete result;
+}
+
+size_t meromorph_vertex_count(const meromorph_result *r) {
+  return r ? r->map.sphere.size() : 0;
+}
+size_t meromorph_triangle_count(const meromorph_result *r) {
+  return r ? r->triangles : 0;
+}
+int meromorph_genus(const meromorph_result *r) {
+  return r ? r->map.genus : -1;
+}
+int meromorph_degree(const meromorph_result *r) {
+  return r ? r->map.degree : -1;
+}
+int meromorph_riemann_hurwitz_ok(const meromorph_result *r) {
+  return r ? r->map.riemann_hurwitz_ok : 0;
+}
+
+#define MEROMORPH_CHECK(result, buffer)                                                            \
+  if (!(result)) return fail(MEROMORPH_ERROR_ARGUMENT, "result is NULL");                          \
+  if (!(buffer)) return fail(MEROMORPH_ERROR_ARGUMENT, "output buffer is NULL")
+
+meromorph_status meromorph_sphere_positions(const meromorph_result *r, double *xyz) {
+  MEROMORPH_CHECK(r, xyz);
+  for (size_t v = 0; v < r->map.sphere.size(); ++v)
+    for (int k = 0; k < 3; ++k)
+      xyz[3 * v + k] = r->map.sphere[v][k];
+  return MEROMORPH_OK;
+}
+
+meromorph_status meromorph_layered_positions(const meromorph_result *r, double *xyz) {
+  MEROMORPH_CHECK(r, xyz);
+  for (size_t v = 0; v < r->map.layered.size(); ++v)
+    for (int k = 0; k < 3; ++k)
+      xyz[3 * v + k] = r->map.layered[v][k];
+  return MEROMORPH_OK;
+}
+
+meromorph_status meromorph_vertex_uvs(const meromorph_result *r, double *uv) {
+  MEROMORPH_CHECK(r, uv);
+  for (size_t v = 0; v < r->map.uv.vertex.size(); ++v)
+    for (int k = 0; k < 2; ++k)
+      uv[2 * v + k] = r->map.uv.vertex[v][k];
+  return MEROMORPH_OK;
+}
+
+meromorph_status meromorph_corner_uvs(const meromorph_result *r, double *uv) {
+  MEROMORPH_CHECK(r, uv);
+  for (size_t f = 0; f < r->map.uv.wedge.size(); ++f)
+    for (int c = 0; c < 3; ++c)
+      for (int k = 0; k < 2; ++k)
+        uv[6 * f + 2 * c + k] = r->map.uv.wedge[f][c][k];
+  return MEROMORPH_OK;
+}
+
+meromorph_status meromorph_layers(const meromorph_result *r, int32_t *layer) {
+  MEROMORPH_CHECK(r, layer);
+  for (size_t v = 0; v < r->map.sheets.vertex_layer.size(); ++v)
+    layer[v] = r->map.sheets.vertex_layer[v];
+  return MEROMORPH_OK;
+}
+
+size_t meromorph_branch_point_count(const meromorph_result *r) {
+  return r ? r->map.branch_points.size() : 0;
+}
+
+meromorph_status meromorph_branch_points(const meromorph_result *r, int32_t *vertices,
+                                         int32_t *degrees) {
+  MEROMORPH_CHECK(r, vertices);
+  for (size_t i = 0; i < r->map.branch_points.size(); ++i) {
+    vertices[i] = r->map.branch_points[i].vertex;
+    if (degrees) degrees[i] = r->map.branch_points[i].local_degree;
+  }
+  return MEROMORPH_OK;
+}
+
+meromorph_status meromorph_get_distortion(const meromorph_result *r, meromorph_distortion *d) {
+  MEROMORPH_CHECK(r, d);
+  const auto &all = r->map.quality.overall;
+  d->angle_error_mean_degrees = all.angle_error_mean_degrees;
+  d->quasi_conformal_mean = all.quasi_conformal_mean;
+  d->quasi_conformal_p95 = all.quasi_conformal_p95;
+  d->quasi_conformal_max = all.quasi_conformal_max;
+  d->folded_faces_away_from_branch_points = r->map.quality.away_from_branch_points.folded_faces;
+  d->folded_faces = all.folded_faces;
+  return MEROMORPH_OK;
+}
+
+const char *meromorph_report_json(const meromorph_result *r) {
+  return r ? r->report.c_str() : "";
+}
+
+} // extern "C"
