@@ -62,6 +62,7 @@ int run_param(const ParamOptions &options) {
   for (size_t v = 0; v < mesh.vert.size(); ++v) {
     mesh.vert[v].T().U() = map.uv.vertex[v][0];
     mesh.vert[v].T().V() = map.uv.vertex[v][1];
+    mesh.vert[v].Q() = map.sheets.vertex_layer[v]; // the layer, as MeshLab's quality
   }
   for (size_t f = 0; f < mesh.face.size(); ++f)
     for (int k = 0; k < 3; ++k) {
@@ -70,7 +71,7 @@ int run_param(const ParamOptions &options) {
       mesh.face[f].WT(k).N() = 0;
     }
   WriteOptions surface;
-  surface.vertex_texcoords = surface.wedge_texcoords = true;
+  surface.vertex_texcoords = surface.wedge_texcoords = surface.vertex_quality = true;
   write_mesh(mesh, options.output, surface, {options.input});
 
   if (!options.sphere.empty()) {
@@ -128,7 +129,7 @@ Command add_param_command(CLI::App &app) {
   param
       ->add_option("-o,--output", options->output,
                    "the surface with per-vertex (texture_u, texture_v) and per-wedge texture "
-                   "coordinates (.ply recommended)")
+                   "coordinates, and the layer of each vertex as its quality (.ply recommended)")
       ->required();
   param->add_option("--sphere", options->sphere,
                     "the layered sphere: same vertices and faces on the sphere, with per-vertex "

@@ -1,0 +1,128 @@
+// The MeshLab plugin in the real MeshLab: meshlabserver under xvfb-run loads it from the build tree
+// (a copy of meshlabserver beside a plugins/ folder with the system plugins and ours).
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <sys/wait.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "mesh_reader.h"
+#include "test_support.h"
+
+namespace meromorph {
+namespace {
+
+namespace fs = std::filesystem;
+
+class MeshLab {
+public:
+  MeshLab() {
+    fs::create_directories(dir_.path("plugins"));
+    fs::copy_file("/usr/bin/meshlabserver", dir_.path("meshlabserver"));
+    fs::permissions(dir_.path("meshlabserver"), fs::perms::owner_all);
+    for (const auto &entry : fs::directory_iterator("/usr/lib/x86_64-linux-gnu/meshlab/plugins"))
+      fs::create_symlink(entry.path(), dir_.path("plugins/" + entry.path().filename().string()));
+    fs::create_symlink(MEROMORPH_MESHLAB_PLUGIN, dir_.path("plugins/libfilter_meromorph.so"));
+  }
+  // Runs meshlabserver with `arguments`; returns the exit code, the output in `log`.
+  int run(const std::string &arguments, std::string &log) const {
+    const std::string command =
+        "cd '" + dir_.path("") + "' && LD_LIBRARY_PATH=/usr/lib/x86_64-linux-gnu/meshlab " +
+        "timeout 300 xvfb-run -a ./meshlabserver " + arguments + " > run.log 2>&1";
+    const int status = std::system(command.c_str());
+    std::ifstream stream(dir_.path("run.log"));
+    std::stringstream text;
+    text << stream.rdbuf();
+    log = text.str();
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  std::string path(const std::string &name) const { return dir_.path(name); }
+
+private:
+  test::TempDir dir_;
+};
+
+const std::string script = std::string(MEROMORPH_SOURCE_DIR) +
+                           "/meshlab_plugin/examples/conformal_spherical_parameterization.mlx";
+
+void expect_same_as_cli(const MeshLab &meshlab, const std::string &input, int branch_points) {
+  std::string log;
+  // MeshLab's own float copy of the input, so that MeshLab and the CLI see the same numbers.
+  ASSERT_EQ(meshlab.run("-i " + input + " -o " + meshlab.path("input.ply"), log), 0) << log;
+  ASSERT_EQ(meshlab.run("-i " + meshlab.path("input.ply") + " -o " + meshlab.path("meshlab.ply") +
+                            " -m vt vq vf -s " + script,
+                        log),
+            0)
+      << log;
+  EXPECT_NE(log.find("Conformal spherical parameterization: genus"), std::string::npos) << log;
+  const test::RunResult cli =
+      test::run_cli({"param", meshlab.path("input.ply"), "-o", meshlab.path("cli.ply"), "--report",
+                     meshlab.path("cli.json"), "--quiet"});
+  ASSERT_EQ(cli.exit_code, 0) << cli.err;
+
+  Mesh from_meshlab, from_cli;
+  test::load(meshlab.path("meshlab.ply"), from_meshlab);
+  test::load(meshlab.path("cli.ply"), from_cli);
+  ASSERT_EQ(from_meshlab.VN(), from_cli.VN());
+  std::ifstream report_stream(meshlab.path("cli.json"));
+  const nlohmann::json report = nlohmann::json::parse(report_stream);
+  std::set<int> branch;
+  for (const auto &b : report["branch_points"])
+    branch.insert(b["vertex"].get<int>());
+  EXPECT_EQ(int(branch.size()), branch_points);
+  std::set<int> selected;
+  for (size_t v = 0; v < from_meshlab.vert.size(); ++v) {
+    const MeshVertex &a = from_meshlab.vert[v], &b = from_cli.vert[v];
+    EXPECT_NEAR(a.cT().U(), b.cT().U(), 1e-6) << v;
+    EXPECT_NEAR(a.cT().V(), b.cT().V(), 1e-6) << v;
+    EXPECT_EQ(a.cQ(), b.cQ()) << "quality holds the layer, vertex " << v;
+    if (a.IsS()) selected.insert(int(v));
+  }
+  EXPECT_EQ(selected, branch) << "the selected vertices are the branch vertices";
+}
+
+TEST(MeshLabPlugin, TorusAndGenusTwoMatchTheCommandLine) {
+  const MeshLab meshlab;
+  const test::RunResult made = test::run_cli({"make", "torus", "-R", "2", "-r", "1", "--resolution",
+                                              "20", "-o", meshlab.path("torus.ply")});
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  expect_same_as_cli(meshlab, meshlab.path("torus.ply"), 4);
+  expect_same_as_cli(meshlab, test::data_path("eight.off"), 6);
+}
+
+TEST(MeshLabPlugin, OpenMeshFailsWithTheReasonInTheLog) {
+  const MeshLab meshlab;
+  std::string log;
+  EXPECT_NE(meshlab.run("-i " + test::data_path("eight.hole.off") + " -o " + meshlab.path("x.ply") +
+                            " -s " + script,
+                        log),
+            0);
+  EXPECT_NE(log.find("Conformal Spherical Parameterization failed: the surface is open"),
+            std::string::npos)
+      << log;
+  EXPECT_FALSE(fs::exists(meshlab.path("x.ply")));
+}
+
+TEST(MeshLabPlugin, FilterIsListedWithItsParameters) {
+  const MeshLab meshlab;
+  std::string log;
+  ASSERT_EQ(meshlab.run("-d " + meshlab.path("filters.txt"), log), 0) << log;
+  std::ifstream stream(meshlab.path("filters.txt"));
+  std::stringstream text;
+  text << stream.rdbuf();
+  const std::string dump = text.str();
+  const size_t at = dump.find("Conformal Spherical Parameterization");
+  ASSERT_NE(at, std::string::npos);
+  const std::string section = dump.substr(at, dump.find("\\section", at + 1) - at);
+  for (const char *label :
+       {"Texture coordinates", "Moebius normalization", "Genus 1: pole vertex",
+        "Genus >= 2: first form", "Genus >= 2: second form",
+        "Seam-correct wedge texture coordinates", "Create the layered sphere", "Layer gap"})
+    EXPECT_NE(section.find(label), std::string::npos) << label;
+}
+
+} // namespace
+} // namespace meromorph
