@@ -2,6 +2,6 @@
 # Set up, build, and run every test (GoogleTest through CTest).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-bash "$here/scripts/build.sh" -DMEROMORPH_BUILD_TESTS=ON -DMEROMORPH_BUILD_MESHLAB_PLUGIN=ON
+bash "$here/scripts/build.sh" -DMEROMORPH_BUILD_TESTS=ON -DMEROMORPH_BUILD_MESHLAB_PLUGIN=ON -DMEROMORPH_BUILD_BLENDER_ADDON=ON
 cd "$here/build"
 ctest --output-on-failure --parallel "$(nproc)"

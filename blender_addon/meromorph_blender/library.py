@@ -1,0 +1,129 @@
+# ctypes binding of libmeromorph (vcg_core/meromorph.h), shipped beside this file.
+#
+# In:  flat numpy arrays (float32 positions, int32 triangles) and options.
+# Out: a dict of numpy arrays (sphere and layered positions, per-vertex and per-corner UVs,
+#      layers, branch vertices and local degrees) and figures; MeromorphError with the library's
+#      message and status when the mesh cannot be mapped.
+import ctypes
+import json
+import os
+
+import numpy as np
+
+ABI_VERSION = 1
+STATUS_NAMES = {1: "internal failure", 2: "bad argument", 3: "cannot be mapped", 4: "cancelled"}
+
+PROGRESS = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_double, ctypes.c_char_p, ctypes.c_void_p)
+
+
+class Options(ctypes.Structure):
+    _fields_ = [
+        ("struct_size", ctypes.c_size_t),
+        ("uv_kind", ctypes.c_int),
+        ("mobius", ctypes.c_int),
+        ("origin_vertex", ctypes.c_int),
+        ("form_pair", ctypes.c_int * 2),
+        ("layer_gap", ctypes.c_double),
+        ("pole_face", ctypes.c_int),
+        ("progress", PROGRESS),
+        ("progress_user", ctypes.c_void_p),
+    ]
+
+
+class Distortion(ctypes.Structure):
+    _fields_ = [
+        ("angle_error_mean_degrees", ctypes.c_double),
+        ("quasi_conformal_mean", ctypes.c_double),
+        ("quasi_conformal_p95", ctypes.c_double),
+        ("quasi_conformal_max", ctypes.c_double),
+        ("folded_faces_away_from_branch_points", ctypes.c_int32),
+        ("folded_faces", ctypes.c_int32),
+    ]
+
+
+class MeromorphError(Exception):
+    def __init__(self, status, message):
+        super().__init__(message)
+        self.status = status
+
+
+_library = None
+
+
+def load():
+    global _library
+    if _library is None:
+        path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "libmeromorph.so")
+        lib = ctypes.CDLL(path)
+        lib.meromorph_last_error.restype = ctypes.c_char_p
+        lib.meromorph_version.restype = ctypes.c_char_p
+        lib.meromorph_report_json.restype = ctypes.c_char_p
+        lib.meromorph_parameterize_f.argtypes = [
+            ctypes.c_void_p, ctypes.c_size_t, ctypes.c_void_p, ctypes.c_size_t,
+            ctypes.POINTER(Options), ctypes.POINTER(ctypes.c_void_p)]
+        for name in ("vertex_count", "triangle_count", "branch_point_count"):
+            getattr(lib, "meromorph_" + name).restype = ctypes.c_size_t
+            getattr(lib, "meromorph_" + name).argtypes = [ctypes.c_void_p]
+        for name in ("genus", "degree", "riemann_hurwitz_ok"):
+            getattr(lib, "meromorph_" + name).argtypes = [ctypes.c_void_p]
+        for name in ("sphere_positions", "layered_positions", "vertex_uvs", "corner_uvs", "layers",
+                     "report_json", "result_free", "get_distortion"):
+            getattr(lib, "meromorph_" + name).argtypes = [ctypes.c_void_p] + (
+                [] if name in ("report_json", "result_free") else [ctypes.c_void_p])
+        lib.meromorph_branch_points.argtypes = [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
+        if lib.meromorph_abi_version() != ABI_VERSION:
+            raise MeromorphError(1, "libmeromorph has ABI %d, this add-on needs %d"
+                                 % (lib.meromorph_abi_version(), ABI_VERSION))
+        _library = lib
+    return _library
+
+
+def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
+                 form_pair=(0, 1), layer_gap=0.0, progress=None):
+    lib = load()
+    positions = np.ascontiguousarray(positions, dtype=np.float32).reshape(-1)
+    triangles = np.ascontiguousarray(triangles, dtype=np.int32).reshape(-1)
+    options = Options()
+    lib.meromorph_default_options(ctypes.byref(options))
+    options.uv_kind = uv_kind
+    options.mobius = 1 if mobius else 0
+    options.origin_vertex = origin_vertex
+    options.form_pair[0], options.form_pair[1] = form_pair
+    options.layer_gap = layer_gap
+    callback = PROGRESS(lambda fraction, stage, user: 1 if progress is None else progress(fraction))
+    options.progress = callback
+    result = ctypes.c_void_p()
+    status = lib.meromorph_parameterize_f(
+        positions.ctypes.data, positions.size // 3, triangles.ctypes.data, triangles.size // 3,
+        ctypes.byref(options), ctypes.byref(result))
+    if status != 0:
+        raise MeromorphError(status, lib.meromorph_last_error().decode("utf-8", "replace"))
+    try:
+        n = lib.meromorph_vertex_count(result)
+        t = lib.meromorph_triangle_count(result)
+        out = {
+            "sphere": np.empty(3 * n), "layered": np.empty(3 * n), "vertex_uv": np.empty(2 * n),
+            "corner_uv": np.empty(6 * t), "layer": np.empty(n, dtype=np.int32),
+        }
+        lib.meromorph_sphere_positions(result, out["sphere"].ctypes.data)
+        lib.meromorph_layered_positions(result, out["layered"].ctypes.data)
+        lib.meromorph_vertex_uvs(result, out["vertex_uv"].ctypes.data)
+        lib.meromorph_corner_uvs(result, out["corner_uv"].ctypes.data)
+        lib.meromorph_layers(result, out["layer"].ctypes.data)
+        count = lib.meromorph_branch_point_count(result)
+        out["branch_vertices"] = np.empty(count, dtype=np.int32)
+        out["branch_degrees"] = np.empty(count, dtype=np.int32)
+        if count:
+            lib.meromorph_branch_points(result, out["branch_vertices"].ctypes.data,
+                                        out["branch_degrees"].ctypes.data)
+        distortion = Distortion()
+        lib.meromorph_get_distortion(result, ctypes.byref(distortion))
+        out["angle_error"] = distortion.angle_error_mean_degrees
+        out["folded_away"] = distortion.folded_faces_away_from_branch_points
+        out["genus"] = lib.meromorph_genus(result)
+        out["degree"] = lib.meromorph_degree(result)
+        out["riemann_hurwitz_ok"] = bool(lib.meromorph_riemann_hurwitz_ok(result))
+        out["report"] = json.loads(lib.meromorph_report_json(result).decode("utf-8"))
+        return out
+    finally:
+        lib.meromorph_result_free(result)

@@ -1,0 +1,150 @@
+# The operator "Conformal Sphere Map": Blender's mesh in, UVs, selection and a layered sphere out.
+import time
+
+import bpy
+import numpy as np
+from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty
+
+from . import library
+
+
+def mesh_arrays(mesh):
+    """Vertex positions and loop triangles of `mesh` (as it is, without modifiers)."""
+    mesh.calc_loop_triangles()
+    positions = np.empty(3 * len(mesh.vertices), dtype=np.float32)
+    mesh.vertices.foreach_get("co", positions)
+    triangles = np.empty(3 * len(mesh.loop_triangles), dtype=np.int32)
+    mesh.loop_triangles.foreach_get("vertices", triangles)
+    loops = np.empty(3 * len(mesh.loop_triangles), dtype=np.int32)
+    mesh.loop_triangles.foreach_get("loops", loops)
+    return positions, triangles, loops
+
+
+def loop_uvs(mesh, loops, corner_uv):
+    """Per-loop UVs from the per-triangle-corner ones; a polygon split into several triangles is
+    kept on one side of the seam (its corners lifted by one turn together)."""
+    uv = np.zeros(2 * len(mesh.loops))
+    corner_uv = corner_uv.reshape(-1, 2)
+    uv.reshape(-1, 2)[loops] = corner_uv
+    per_loop = uv.reshape(-1, 2)
+    for polygon in mesh.polygons:
+        if polygon.loop_total <= 3:
+            continue
+        span = slice(polygon.loop_start, polygon.loop_start + polygon.loop_total)
+        u = per_loop[span, 0] % 1.0
+        if u.max() - u.min() > 0.5:
+            u = np.where(u < 0.5, u + 1.0, u)
+        per_loop[span, 0] = u
+    return uv
+
+
+class MESH_OT_conformal_sphere_map(bpy.types.Operator):
+    """Map the active mesh conformally onto the sphere: UVs, branch points, layered sphere"""
+    bl_idname = "mesh.meromorph_conformal_sphere_map"
+    bl_label = "Conformal Sphere Map"
+    bl_options = {"REGISTER", "UNDO"}
+
+    uv_kind: EnumProperty(
+        name="UV Kind", default="SPHERICAL",
+        items=[("SPHERICAL", "Spherical", "Longitude and latitude on the sphere"),
+               ("STEREOGRAPHIC", "Stereographic", "The plane seen from the north pole")])
+    mobius: BoolProperty(name="Moebius Normalization", default=True,
+                         description="Centre the map so the area spreads evenly over the sphere")
+    origin: IntProperty(name="Genus 1 Pole Vertex", default=-1, min=-1,
+                        description="Torus: the vertex at the double pole (-1: automatic)")
+    form_i: IntProperty(name="Form i", default=0, min=0,
+                        description="Genus 2 or more: the map is (psi_i + psi_j) / (psi_i - psi_j)")
+    form_j: IntProperty(name="Form j", default=1, min=0, description="Genus 2 or more: j")
+    uv_name: bpy.props.StringProperty(name="UV Map", default="Conformal Sphere")
+    create_sphere: BoolProperty(name="Create Layered Sphere", default=True,
+                                description="Add an object with the mesh on the sphere, by layer")
+    layer_gap: FloatProperty(name="Layer Gap", default=0.2, min=0.0, max=10.0,
+                             description="Layer k lies on the sphere of radius 1 + gap * k")
+    select_branch: BoolProperty(name="Select Branch Vertices", default=True)
+
+    @classmethod
+    def poll(cls, context):
+        return True  # errors are reported in words by execute()
+
+    def execute(self, context):
+        obj = context.active_object
+        if obj is None or obj.type != "MESH":
+            self.report({"ERROR"}, "No active mesh: select a mesh object first")
+            return {"CANCELLED"}
+        was_editing = obj.mode == "EDIT"
+        if was_editing:
+            bpy.ops.object.mode_set(mode="OBJECT")
+        try:
+            return self.run(context, obj)
+        finally:
+            if was_editing:
+                bpy.ops.object.mode_set(mode="EDIT")
+
+    def run(self, context, obj):
+        mesh = obj.data
+        if len(mesh.polygons) < 4:
+            self.report({"ERROR"}, "'%s' has %d faces: a closed surface needs at least 4"
+                        % (obj.name, len(mesh.polygons)))
+            return {"CANCELLED"}
+        started = time.time()
+        positions, triangles, loops = mesh_arrays(mesh)
+        window_manager = context.window_manager
+        window_manager.progress_begin(0, 100)
+
+        def progress(fraction):
+            window_manager.progress_update(int(100 * fraction))
+            return 1
+
+        try:
+            result = library.parameterize(
+                positions, triangles, uv_kind=0 if self.uv_kind == "SPHERICAL" else 1,
+                mobius=self.mobius, origin_vertex=self.origin,
+                form_pair=(self.form_i, self.form_j), layer_gap=self.layer_gap,
+                progress=progress)
+        except library.MeromorphError as error:
+            self.report({"ERROR"}, "'%s' cannot be mapped: %s (vertex numbers are Blender's)"
+                        % (obj.name, error))
+            return {"CANCELLED"}
+        finally:
+            window_manager.progress_end()
+
+        layer = mesh.uv_layers.get(self.uv_name) or mesh.uv_layers.new(name=self.uv_name)
+        layer.data.foreach_set("uv", loop_uvs(mesh, loops, result["corner_uv"]))
+        mesh.uv_layers.active = layer
+
+        branch = result["branch_vertices"]
+        if self.select_branch:
+            selected = np.zeros(len(mesh.vertices), dtype=bool)
+            selected[branch] = True
+            mesh.vertices.foreach_set("select", selected)
+            mesh.polygons.foreach_set("select", np.zeros(len(mesh.polygons), dtype=bool))
+            mesh.edges.foreach_set("select", np.zeros(len(mesh.edges), dtype=bool))
+        mesh.update()
+
+        if self.create_sphere:
+            self.make_sphere_object(context, obj, result)
+
+        elapsed = time.time() - started
+        self.report({"INFO"}, "%s: genus %d, degree %d, %d branch points, angle error %.2f deg, "
+                    "%.2f s%s" % (obj.name, result["genus"], result["degree"], len(branch),
+                                  result["angle_error"], elapsed,
+                                  "" if result["riemann_hurwitz_ok"]
+                                  else "; WARNING: Riemann-Hurwitz does not hold"))
+        return {"FINISHED"}
+
+    def make_sphere_object(self, context, obj, result):
+        mesh = obj.data
+        name = obj.name + " Layered Sphere"
+        sphere_mesh = bpy.data.meshes.new(name)
+        sphere_mesh.from_pydata(result["layered"].reshape(-1, 3).tolist(), [],
+                                [tuple(p.vertices) for p in mesh.polygons])
+        attribute = sphere_mesh.attributes.new("layer", "INT", "POINT")
+        attribute.data.foreach_set("value", result["layer"])
+        sphere_mesh.update()
+        sphere = bpy.data.objects.new(name, sphere_mesh)
+        context.collection.objects.link(sphere)
+        sphere.matrix_world = obj.matrix_world.copy()
+        group = sphere.vertex_groups.new(name="branch_points")
+        if len(result["branch_vertices"]):
+            group.add([int(v) for v in result["branch_vertices"]], 1.0, "REPLACE")
+        return sphere

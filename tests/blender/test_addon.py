@@ -1,0 +1,205 @@
+# The add-on in the real Blender: blender -b --factory-startup --python-exit-code 1 --python
+# test_addon.py -- ADDON_ZIP MEROMORPH_CLI TEST_DATA WORK_DIR
+# (BLENDER_USER_SCRIPTS points at an empty temporary folder, so the zip is installed fresh.)
+import os
+import subprocess
+import sys
+
+import addon_utils
+import bmesh
+import bpy
+import numpy as np
+
+ADDON_ZIP, CLI, DATA, WORK = sys.argv[sys.argv.index("--") + 1:][:4]
+checks = 0
+
+
+def check(condition, message):
+    global checks
+    if not condition:
+        raise AssertionError(message)
+    checks += 1
+
+
+def raise_it(error):
+    raise error
+
+
+def clear_scene():
+    bpy.ops.object.select_all(action="SELECT")
+    bpy.ops.object.delete()
+    for mesh in list(bpy.data.meshes):
+        bpy.data.meshes.remove(mesh)
+
+
+def add_off(path, name):
+    with open(path) as stream:
+        lines = [l.split("#")[0].split() for l in stream]
+    lines = [l for l in lines if l]
+    start = 1 if lines[0] == ["OFF"] else 0
+    nv, nf = int(lines[start][0]), int(lines[start][1])
+    vertices = [tuple(map(float, l[:3])) for l in lines[start + 1:start + 1 + nv]]
+    faces = [tuple(map(int, l[1:1 + int(l[0])])) for l in lines[start + 1 + nv:start + 1 + nv + nf]]
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata(vertices, [], faces)
+    obj = bpy.data.objects.new(name, mesh)
+    bpy.context.collection.objects.link(obj)
+    activate(obj)
+    return obj
+
+
+def activate(obj):
+    bpy.ops.object.select_all(action="DESELECT")
+    obj.select_set(True)
+    bpy.context.view_layer.objects.active = obj
+
+
+def run_operator(**options):
+    return bpy.ops.mesh.meromorph_conformal_sphere_map(**options)
+
+
+def expect_error(words, **options):
+    try:
+        run_operator(**options)
+    except RuntimeError as error:
+        check(words in str(error), "error should mention '%s': %s" % (words, error))
+        return
+    raise AssertionError("expected an error mentioning '%s'" % words)
+
+
+def cli_corner_uvs(obj):
+    """The CLI's wedge UVs for the same loop triangles, read back from an OBJ it writes."""
+    mesh = obj.data
+    mesh.calc_loop_triangles()
+    path = os.path.join(WORK, obj.name.replace(" ", "_") + ".off")
+    with open(path, "w") as stream:
+        stream.write("OFF\n%d %d 0\n" % (len(mesh.vertices), len(mesh.loop_triangles)))
+        for v in mesh.vertices:
+            stream.write("%r %r %r\n" % tuple(float(np.float32(c)) for c in v.co))
+        for t in mesh.loop_triangles:
+            stream.write("3 %d %d %d\n" % tuple(t.vertices))
+    out = path[:-4] + ".cli.obj"
+    subprocess.run([CLI, "param", path, "-o", out, "--quiet"], check=True)
+    texcoords, corners = [], []
+    with open(out) as stream:
+        for line in stream:
+            parts = line.split()
+            if parts and parts[0] == "vt":
+                texcoords.append((float(parts[1]), float(parts[2])))
+            elif parts and parts[0] == "f":
+                corners.extend(texcoords[int(p.split("/")[1]) - 1] for p in parts[1:4])
+    return np.array(corners)
+
+
+def check_result(obj, genus_degree_branch, quads=False):
+    genus, degree, branch_count = genus_degree_branch
+    mesh = obj.data
+    check("Conformal Sphere" in mesh.uv_layers, "the UV layer exists")
+    sphere = bpy.data.objects.get(obj.name + " Layered Sphere")
+    check(sphere is not None, "the layered sphere object exists")
+    check(len(sphere.data.vertices) == len(mesh.vertices), "same vertex count")
+    layers = np.empty(len(sphere.data.vertices), dtype=np.int32)
+    sphere.data.attributes["layer"].data.foreach_get("value", layers)
+    check(set(layers.tolist()) == set(range(degree)), "layers 0..degree-1: %s" % set(layers.tolist()))
+    co = np.empty(3 * len(sphere.data.vertices))
+    sphere.data.vertices.foreach_get("co", co)
+    radii = np.linalg.norm(co.reshape(-1, 3), axis=1)
+    check(np.allclose(radii, 1.0 + 0.3 * layers, atol=1e-5), "radius 1 + gap * layer")
+    group = sphere.vertex_groups["branch_points"]
+    members = [v.index for v in sphere.data.vertices if any(g.group == group.index for g in v.groups)]
+    check(len(members) == branch_count, "branch_points group has %d (expected %d)" % (len(members), branch_count))
+    selected = [v.index for v in mesh.vertices if v.select]
+    check(sorted(selected) == sorted(members), "branch vertices selected on the original")
+    if not quads:
+        # Per-loop UVs equal the CLI's wedge UVs for the same triangles.
+        mesh.calc_loop_triangles()
+        loops = np.empty(3 * len(mesh.loop_triangles), dtype=np.int32)
+        mesh.loop_triangles.foreach_get("loops", loops)
+        uv = np.empty(2 * len(mesh.loops))
+        mesh.uv_layers["Conformal Sphere"].data.foreach_get("uv", uv)
+        ours = uv.reshape(-1, 2)[loops]
+        theirs = cli_corner_uvs(obj)
+        check(ours.shape == theirs.shape, "as many corners as the CLI")
+        check(np.abs(ours - theirs).max() < 1e-5, "UVs equal the CLI's (max difference %g)"
+              % np.abs(ours - theirs).max())
+
+
+# Install the built zip into the temporary user scripts folder and enable it.
+bpy.ops.preferences.addon_install(filepath=ADDON_ZIP, overwrite=True)
+addon_utils.enable("meromorph_blender", default_set=True, handle_error=raise_it)
+check(hasattr(bpy.types, "MESH_OT_meromorph_conformal_sphere_map"), "operator registered")
+
+# A torus primitive (quads), triangulated to compare with the CLI, and as quads.
+clear_scene()
+bpy.ops.mesh.primitive_torus_add(major_segments=48, minor_segments=16)
+torus = bpy.context.active_object
+torus.name = "Torus"
+bpy.ops.object.mode_set(mode="EDIT")
+bpy.ops.mesh.select_all(action="SELECT")
+bpy.ops.mesh.quads_convert_to_tris()
+bpy.ops.object.mode_set(mode="OBJECT")
+check(run_operator(layer_gap=0.3) == {"FINISHED"}, "torus mapped")
+check_result(torus, (1, 2, 4))
+
+clear_scene()
+bpy.ops.mesh.primitive_torus_add(major_segments=48, minor_segments=16)
+quad_torus = bpy.context.active_object
+quad_torus.name = "Quad Torus"
+# From Edit Mode, as the U menu runs it.
+bpy.ops.object.mode_set(mode="EDIT")
+check(run_operator(layer_gap=0.3) == {"FINISHED"}, "quad torus mapped from edit mode")
+check(quad_torus.mode == "EDIT", "back in edit mode")
+bpy.ops.object.mode_set(mode="OBJECT")
+check_result(quad_torus, (1, 2, 4), quads=True)
+uv = np.empty(2 * len(quad_torus.data.loops))
+quad_torus.data.uv_layers["Conformal Sphere"].data.foreach_get("uv", uv)
+sphere = bpy.data.objects["Quad Torus Layered Sphere"].data
+co = np.empty(3 * len(sphere.vertices))
+sphere.vertices.foreach_get("co", co)
+co = co.reshape(-1, 3)
+for polygon in quad_torus.data.polygons:  # seam-correct per polygon, away from the poles
+    u = uv.reshape(-1, 2)[polygon.loop_start:polygon.loop_start + polygon.loop_total, 0]
+    polar = max(abs(co[v][2]) / np.linalg.norm(co[v]) for v in polygon.vertices) > 0.95
+    check(polar or u.max() - u.min() <= 0.5, "polygon %d spans %g of the texture" % (polygon.index, u.max() - u.min()))
+
+# The genus-2 "eight".
+clear_scene()
+eight = add_off(os.path.join(DATA, "eight.off"), "Eight")
+check(run_operator(layer_gap=0.3) == {"FINISHED"}, "eight mapped")
+check_result(eight, (2, 2, 6))
+
+# A quad cube: genus 0, one layer, no branch point.
+clear_scene()
+bpy.ops.mesh.primitive_cube_add()
+cube = bpy.context.active_object
+bpy.ops.object.mode_set(mode="EDIT")
+bpy.ops.mesh.subdivide(number_cuts=4)
+bpy.ops.object.mode_set(mode="OBJECT")
+check(run_operator(layer_gap=0.3) == {"FINISHED"}, "cube mapped")
+check_result(cube, (0, 1, 0), quads=True)
+
+# Errors in Blender's words, nothing changed.
+clear_scene()
+expect_error("No active mesh")
+bpy.ops.mesh.primitive_grid_add()
+grid = bpy.context.active_object
+expect_error("boundary loop")
+check(len(grid.data.uv_layers) == 1 and "Conformal Sphere" not in grid.data.uv_layers, "grid unchanged")
+check(bpy.data.objects.get(grid.name + " Layered Sphere") is None, "no sphere object for the grid")
+clear_scene()
+bpy.ops.mesh.primitive_cube_add(location=(0, 0, 0))
+first = bpy.context.active_object
+bpy.ops.mesh.primitive_cube_add(location=(5, 0, 0))
+second = bpy.context.active_object
+first.select_set(True)
+bpy.ops.object.join()
+expect_error("separate parts")
+clear_scene()
+mesh = bpy.data.meshes.new("Triangle")
+mesh.from_pydata([(0, 0, 0), (1, 0, 0), (0, 1, 0)], [], [(0, 1, 2)])
+triangle = bpy.data.objects.new("Triangle", mesh)
+bpy.context.collection.objects.link(triangle)
+activate(triangle)
+expect_error("at least 4")
+
+print("%d passed, 0 failed" % checks)
