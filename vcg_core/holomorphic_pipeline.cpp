@@ -45,7 +45,7 @@ double closedness(const MeshEdges &edges, const Eigen::VectorXd &form) {
 HolomorphicForms compute_holomorphic_forms(const Mesh &mesh, SolverKind solver,
                                            const Progress &progress) {
   const Validation validation = validate_mesh(mesh);
-  if (!validation.ok()) throw InputError(validation.findings.front().message);
+  if (!validation.ok()) throw InputError(validation.main_finding().message);
 
   HolomorphicForms out;
   StageClock clock(out.timings_ms);

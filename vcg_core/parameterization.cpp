@@ -41,15 +41,7 @@ double smallest_angle(const MeshFace &face) {
 Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &options,
                               const Progress &progress) {
   const Validation validation = validate_mesh(mesh);
-  if (!validation.ok()) {
-    const Finding *main = &validation.findings.front();
-    for (const Finding &f : validation.findings)
-      if (!f.repairable) {
-        main = &f;
-        break;
-      }
-    throw InputError(main->message);
-  }
+  if (!validation.ok()) throw InputError(validation.main_finding().message);
   if (options.layer_gap < 0) throw ArgumentError("the layer gap must not be negative");
 
   Parameterization out;

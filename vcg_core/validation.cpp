@@ -48,6 +48,12 @@ bool Validation::all_repairable() const {
                      [](const Finding &f) { return f.repairable; });
 }
 
+const Finding &Validation::main_finding() const {
+  for (const Finding &f : findings)
+    if (!f.repairable) return f;
+  return findings.front();
+}
+
 const Finding *Validation::find(FindingKind kind) const {
   for (const Finding &f : findings)
     if (f.kind == kind) return &f;
@@ -87,7 +93,7 @@ std::string list_sizes(const std::vector<int> &sizes) {
 }
 
 void check_coordinates(const Mesh &mesh, Validation &out) {
-  Finding finding{FindingKind::non_finite_coordinates};
+  Finding finding(FindingKind::non_finite_coordinates);
   for (size_t v = 0; v < mesh.vert.size(); ++v) {
     const Point3 &p = mesh.vert[v].cP();
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
@@ -101,8 +107,8 @@ void check_coordinates(const Mesh &mesh, Validation &out) {
 }
 
 void check_faces(const Mesh &mesh, Validation &out) {
-  Finding repeated{FindingKind::repeated_vertex_in_face, true};
-  Finding flat{FindingKind::zero_area_faces, true};
+  Finding repeated(FindingKind::repeated_vertex_in_face, true);
+  Finding flat(FindingKind::zero_area_faces, true);
   for (size_t f = 0; f < mesh.face.size(); ++f) {
     const MeshFace &face = mesh.face[f];
     if (repeats_a_vertex(face))
@@ -134,7 +140,7 @@ void check_vertices(const Mesh &mesh, Validation &out) {
   };
   std::sort(order.begin(), order.end(),
             [&](int a, int b) { return key(a) < key(b) || (key(a) == key(b) && a < b); });
-  Finding duplicates{FindingKind::duplicate_vertices, true};
+  Finding duplicates(FindingKind::duplicate_vertices, true);
   for (size_t i = 1; i < order.size(); ++i) {
     if (key(order[i]) != key(order[i - 1])) continue;
     size_t first = i - 1;
@@ -162,7 +168,7 @@ void check_vertices(const Mesh &mesh, Validation &out) {
   for (const MeshFace &face : mesh.face)
     for (int c = 0; c < 3; ++c)
       used[index_of(mesh, face.cV(c))] = 1;
-  Finding unused{FindingKind::unreferenced_vertices, true};
+  Finding unused(FindingKind::unreferenced_vertices, true);
   for (size_t v = 0; v < used.size(); ++v)
     if (!used[v]) unused.vertices.push_back(int(v));
   if (!unused.vertices.empty()) {
@@ -185,7 +191,7 @@ void check_topology(const Mesh &mesh, Validation &out) {
   if (work.fn == 0) return;
 
   // Non-manifold edges: more than two faces on one edge.
-  Finding non_manifold{FindingKind::non_manifold_edges};
+  Finding non_manifold(FindingKind::non_manifold_edges);
   std::set<std::array<int, 2>> seen;
   for (MeshFace &face : work.face) {
     if (face.IsD()) continue;
@@ -215,7 +221,7 @@ void check_topology(const Mesh &mesh, Validation &out) {
 
   // Non-manifold vertices: pieces of surface that meet only at a vertex.
   vcg::tri::Clean<Mesh>::CountNonManifoldVertexFF(work, true, true);
-  Finding pinched{FindingKind::non_manifold_vertices};
+  Finding pinched(FindingKind::non_manifold_vertices);
   for (size_t v = 0; v < work.vert.size(); ++v)
     if (work.vert[v].IsS()) pinched.vertices.push_back(int(v));
   if (!pinched.vertices.empty()) {
@@ -228,7 +234,7 @@ void check_topology(const Mesh &mesh, Validation &out) {
 
   // Boundary loops (only well defined where every edge is manifold).
   if (non_manifold.edges.empty()) {
-    Finding open{FindingKind::boundary_loops};
+    Finding open(FindingKind::boundary_loops);
     for (const BoundaryLoop &loop : find_boundary_loops(work)) {
       open.vertices.push_back(loop.first_vertex);
       open.sizes.push_back(loop.length);
@@ -249,7 +255,7 @@ void check_topology(const Mesh &mesh, Validation &out) {
   std::vector<std::pair<int, MeshFace *>> components;
   vcg::tri::Clean<Mesh>::ConnectedComponents(work, components);
   if (components.size() > 1) {
-    Finding several{FindingKind::several_components};
+    Finding several(FindingKind::several_components);
     for (auto &[size, representative] : components) {
       several.sizes.push_back(size);
       several.faces.push_back(index_of(work, representative));
@@ -263,7 +269,7 @@ void check_topology(const Mesh &mesh, Validation &out) {
   }
 
   // Orientation: across each manifold edge the two faces must traverse it in opposite directions.
-  Finding flipped{FindingKind::inconsistent_orientation, true};
+  Finding flipped(FindingKind::inconsistent_orientation, true);
   std::set<std::array<int, 2>> flipped_seen;
   for (MeshFace &face : work.face) {
     if (face.IsD()) continue;
@@ -283,7 +289,7 @@ void check_topology(const Mesh &mesh, Validation &out) {
                         list_edges(flipped.edges);
       out.findings.push_back(flipped);
     } else {
-      Finding klein{FindingKind::non_orientable};
+      Finding klein(FindingKind::non_orientable);
       klein.edges = flipped.edges;
       klein.message = "the surface is not orientable (like a Moebius strip or a Klein bottle): no "
                       "choice of face orientations agrees across every edge; it has no conformal "
@@ -298,7 +304,7 @@ void check_topology(const Mesh &mesh, Validation &out) {
 Validation validate_mesh(const Mesh &mesh) {
   Validation out;
   if (mesh.vert.empty() || mesh.face.empty()) {
-    Finding empty{FindingKind::empty_mesh};
+    Finding empty(FindingKind::empty_mesh);
     empty.message = mesh.vert.empty()
                         ? "the mesh has no vertices"
                         : "the mesh has " + plural(mesh.vert.size(), "vertex", "vertices") +

@@ -35,6 +35,9 @@ enum class FindingKind {
 const char *finding_code(FindingKind kind);
 
 struct Finding {
+  explicit Finding(FindingKind kind_, bool repairable_ = false)
+      : kind(kind_), repairable(repairable_) {}
+
   FindingKind kind;
   bool repairable = false;
   std::string message;
@@ -50,6 +53,9 @@ struct Validation {
   bool ok() const { return findings.empty(); }
   bool all_repairable() const;
   const Finding *find(FindingKind kind) const;
+  // The finding to tell the user first: the first one repair cannot fix (the first one else).
+  // Needs at least one finding.
+  const Finding &main_finding() const;
 };
 
 // Faces whose area is at most this fraction of their longest edge squared count as zero-area.

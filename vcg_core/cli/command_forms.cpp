@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "errors.h"
 #include "holomorphic_pipeline.h"
+#include "job_input.h"
 #include "mesh_reader.h"
 #include "mesh_writer.h"
 #include "repair.h"
@@ -27,24 +28,19 @@ struct FormsOptions {
 int run_forms(const FormsOptions &options) {
   if (!options.report.empty()) refuse_to_overwrite(options.report, {options.input});
   const SolverKind solver = solver_from_name(options.solver);
-  const auto start = std::chrono::steady_clock::now();
   Mesh mesh;
-  const MeshSource source = read_mesh(options.input, mesh);
-  std::vector<std::string> repairs;
-  if (options.repair) repairs = repair_mesh(mesh);
-  const double read_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const JobInput input = read_job_input(options.input, options.repair, mesh);
 
   TerminalProgress bar(options.quiet);
   const HolomorphicForms forms = compute_holomorphic_forms(mesh, solver, bar.progress());
   bar.finish();
 
-  nlohmann::json timings = {{"read", read_ms}};
+  nlohmann::json timings = {{"read", input.read_ms}};
   for (const auto &[stage, ms] : forms.timings_ms)
     timings[stage] = ms;
   nlohmann::json report = {
-      {"input", source_json(source)},
-      {"repairs", repairs},
+      {"input", source_json(input.source)},
+      {"repairs", input.repairs},
       {"genus", forms.genus},
       {"euler", 2 - 2 * forms.genus},
       {"solver", solver_name(solver)},

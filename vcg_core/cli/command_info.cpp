@@ -68,13 +68,7 @@ int run_info(const InfoOptions &options) {
     print_text(source, topology, validation, repairs);
   }
   if (!validation.ok()) {
-    // Name the problem that repair cannot fix first: it is the one the user must act on.
-    const Finding *main_finding = &validation.findings.front();
-    for (const Finding &finding : validation.findings)
-      if (!finding.repairable) {
-        main_finding = &finding;
-        break;
-      }
+    const Finding *main_finding = &validation.main_finding();
     const size_t others = validation.findings.size() - 1;
     std::cerr << "meromorph: " << options.input
               << " cannot be parameterized: " << main_finding->message

@@ -9,6 +9,7 @@
 
 #include "commands.h"
 #include "errors.h"
+#include "job_input.h"
 #include "mesh_reader.h"
 #include "mesh_writer.h"
 #include "parameterization.h"
@@ -48,11 +49,7 @@ int run_param(const ParamOptions &options) {
 
   const auto start = std::chrono::steady_clock::now();
   Mesh mesh;
-  const MeshSource source = read_mesh(options.input, mesh);
-  std::vector<std::string> repairs;
-  if (options.repair) repairs = repair_mesh(mesh);
-  const double read_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const JobInput input = read_job_input(options.input, options.repair, mesh);
 
   TerminalProgress bar(options.quiet);
   const Parameterization map = parameterize(mesh, settings, bar.progress());
@@ -86,9 +83,9 @@ int run_param(const ParamOptions &options) {
   }
 
   nlohmann::json report = parameterization_json(map);
-  report["input"] = source_json(source);
-  report["repairs"] = repairs;
-  report["timings_ms"]["read"] = read_ms;
+  report["input"] = source_json(input.source);
+  report["repairs"] = input.repairs;
+  report["timings_ms"]["read"] = input.read_ms;
   report["version"] = MEROMORPH_VERSION;
   if (!options.report.empty()) std::ofstream(options.report) << report.dump(2) << "\n";
 
