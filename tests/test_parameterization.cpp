@@ -97,6 +97,17 @@ TEST(Parameterization, GeneratedSurfacesOfGenusZeroToTwo) {
   EXPECT_EQ(map.branch_points.size(), 6u) << "genus 2: 2g + 2 branch points";
 }
 
+TEST(Parameterization, GenusZeroWithLongThinPartsFoldsNothing) {
+  // Six tentacles each about 6.7 times longer than thick (peers fold dozens of faces here).
+  for (int tentacles : {4, 6, 8}) {
+    Mesh mesh;
+    make_tentacle_blob(mesh, tentacles, 2.6, 30);
+    const Parameterization map = parameterize(mesh);
+    expect_valid_map(mesh, map, 1, std::to_string(tentacles) + " tentacles");
+    EXPECT_EQ(map.quality.overall.folded_faces, 0);
+  }
+}
+
 TEST(Parameterization, GenusZeroConvergesToConformalUnderRefinement) {
   double previous = 1e9;
   for (int subdivisions : {2, 3, 4}) {
