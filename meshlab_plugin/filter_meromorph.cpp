@@ -66,12 +66,13 @@ void FilterMeromorphPlugin::initParameterSet(QAction *, MeshModel &,
       "origin", -1, "Genus 1: pole vertex",
       "For a torus: the vertex where the map has its double pole (it goes to the north pole). "
       "-1 picks the first vertex whose corners are all acute."));
-  parameters.addParam(RichInt("formI", 0, "Genus >= 2: first form",
+  parameters.addParam(RichInt("formI", -1, "Genus >= 2: first form",
                               "For genus 2 or more the map is (psi_i + psi_j) / (psi_i - psi_j) "
-                              "for two normalized holomorphic 1-forms: this is i (0 .. g-1)."));
-  parameters.addParam(RichInt("formJ", 1, "Genus >= 2: second form",
+                              "for two normalized holomorphic 1-forms: this is i (0 .. g-1). "
+                              "-1 with -1 (default): a generic pair mixing all forms."));
+  parameters.addParam(RichInt("formJ", -1, "Genus >= 2: second form",
                               "The index j of the second normalized holomorphic 1-form (0 .. g-1, "
-                              "different from i)."));
+                              "different from i); -1 with -1: a generic pair."));
   parameters.addParam(RichBool("wedgeTexCoords", true, "Seam-correct wedge texture coordinates",
                                "Also write per-wedge (per face corner) texture coordinates, "
                                "unwrapped across the seam at longitude 180 degrees, so textures "

@@ -97,6 +97,25 @@ TEST(Parameterization, GeneratedSurfacesOfGenusZeroToTwo) {
   EXPECT_EQ(map.branch_points.size(), 6u) << "genus 2: 2g + 2 branch points";
 }
 
+TEST(Parameterization, HigherGenusDefaultPairHasDegreeTwoGMinusTwo) {
+  // The generic default pair: degree 2g - 2 (a pair of single normalized forms on a chain of
+  // handles is nearly 0 / 0 away from its handles, and its measured degree drifts).
+  for (int genus : {3, 4}) {
+    Mesh mesh;
+    make_genus_surface(mesh, genus, 30);
+    const Parameterization map = parameterize(mesh);
+    EXPECT_EQ(map.degree, 2 * genus - 2) << "genus " << genus;
+    EXPECT_NEAR(map.area_over_4pi, 2 * genus - 2, 0.01) << "genus " << genus;
+  }
+  Mesh mesh;
+  make_genus_surface(mesh, 3, 24);
+  ParameterizeOptions options;
+  options.form_pair = {0, 2};
+  EXPECT_NO_THROW(parameterize(mesh, options));
+  options.form_pair = {1, 1};
+  EXPECT_THROW(parameterize(mesh, options), ArgumentError);
+}
+
 TEST(Parameterization, GenusZeroWithLongThinPartsFoldsNothing) {
   // Six tentacles each about 6.7 times longer than thick (peers fold dozens of faces here).
   for (int tentacles : {4, 6, 8}) {

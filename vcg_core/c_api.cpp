@@ -125,8 +125,8 @@ void meromorph_default_options(meromorph_options *options) {
   options->uv_kind = 0;
   options->mobius = 1;
   options->origin_vertex = -1;
-  options->form_pair[0] = 0;
-  options->form_pair[1] = 1;
+  options->form_pair[0] = -1;
+  options->form_pair[1] = -1;
   options->layer_gap = 0.0;
   options->pole_face = -1;
 }

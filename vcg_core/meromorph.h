@@ -45,7 +45,8 @@ typedef struct meromorph_options {
   int uv_kind;                    /* 0: spherical (longitude, latitude), 1: stereographic */
   int mobius;                     /* 1: centre by a Moebius transformation (default), 0: do not */
   int origin_vertex;              /* genus 1: the double pole's vertex; -1: automatic */
-  int form_pair[2];               /* genus >= 2: (psi_i + psi_j) / (psi_i - psi_j); default 0, 1 */
+  int form_pair[2];               /* genus >= 2: (psi_i + psi_j) / (psi_i - psi_j); default -1, -1:
+                                  a generic pair mixing all forms */
   double layer_gap;               /* layer k on the sphere of radius 1 + gap * k; default 0 */
   int pole_face;                  /* genus 0: the face around the north pole; -1: automatic */
   meromorph_progress_fn progress; /* may be NULL */

@@ -141,16 +141,32 @@ Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &optio
     out.method = "genus 1: Weierstrass P-function of the flat coordinate";
   } else {
     const auto [i, j] = options.form_pair;
-    if (i < 0 || j < 0 || i >= out.genus || j >= out.genus || i == j)
-      throw ArgumentError("the form pair must be two different indices between 0 and " +
-                          std::to_string(out.genus - 1));
+    Eigen::VectorXcd omega1, omega2;
+    if (i < 0 && j < 0) {
+      // The default: a generic pair. The normalized forms of a chain of handles each live on
+      // their own handle and nearly vanish on the others, so a ratio of two of them is 0 / 0
+      // there; mixing all of them avoids that: omega1 = sum psi_k, omega2 = sum (k+1)/(g+1) psi_k.
+      omega1 = omega2 = Eigen::VectorXcd::Zero(forms.edges.edge_count());
+      for (int k = 0; k < out.genus; ++k) {
+        omega1 += forms.normalized[k];
+        omega2 += (double(k + 1) / (out.genus + 1)) * forms.normalized[k];
+      }
+      out.method = "genus " + std::to_string(out.genus) +
+                   ": ratio (omega1 + omega2) / (omega1 - omega2), omega1 = sum psi_k, "
+                   "omega2 = sum (k+1)/(g+1) psi_k of the normalized holomorphic 1-forms psi_k";
+    } else {
+      if (i < 0 || j < 0 || i >= out.genus || j >= out.genus || i == j)
+        throw ArgumentError("the form pair must be two different indices between 0 and " +
+                            std::to_string(out.genus - 1) + " (or -1, -1 for the generic pair)");
+      omega1 = forms.normalized[i];
+      omega2 = forms.normalized[j];
+      out.method = "genus " + std::to_string(out.genus) + ": ratio (psi_" + std::to_string(i) +
+                   " + psi_" + std::to_string(j) + ") / (psi_" + std::to_string(i) + " - psi_" +
+                   std::to_string(j) + ") of normalized holomorphic 1-forms";
+    }
     out.riemann_matrix = forms.riemann_matrix;
-    values = form_ratio_map(mesh, forms.edges, forms.normalized[i] + forms.normalized[j],
-                            forms.normalized[i] - forms.normalized[j]);
+    values = form_ratio_map(mesh, forms.edges, omega1 + omega2, omega1 - omega2);
     out.form_pair = options.form_pair;
-    out.method = "genus " + std::to_string(out.genus) + ": ratio (psi_" + std::to_string(i) +
-                 " + psi_" + std::to_string(j) + ") / (psi_" + std::to_string(i) + " - psi_" +
-                 std::to_string(j) + ") of normalized holomorphic 1-forms";
   }
   lap("meromorphic");
 

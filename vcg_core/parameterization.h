@@ -3,11 +3,12 @@
 // In:  a mesh that validation accepts, options, progress (cancellable).
 // Out: `Parameterization`: the map as a unit-sphere position per vertex (genus 0: a degree-1 map;
 //      genus 1: the Weierstrass P-function of the flat coordinate, degree 2; genus g >= 2: the
-//      ratio (psi_i + psi_j) / (psi_i - psi_j) of two normalized holomorphic forms, degree 2g - 2
-//      for a generic pair), Moebius-centred unless asked not to; its degree, branch points with
-//      local degrees and the Riemann-Hurwitz check; layers (sheets) and the layered-sphere
-//      positions; texture coordinates per vertex and per wedge; distortion; modulus or Riemann
-//      matrix; timings. Nothing is forced: what is reported is what was measured.
+//      ratio (omega1 + omega2) / (omega1 - omega2) of two holomorphic forms, by default a generic
+//      pair mixing all normalized forms, degree 2g - 2), Moebius-centred unless asked not to; its
+//      degree, branch points with local degrees and the Riemann-Hurwitz check; layers (sheets) and
+//      the layered-sphere positions; texture coordinates per vertex and per wedge; distortion;
+//      modulus or Riemann matrix; timings. Nothing is forced: what is reported is what was
+//      measured.
 #pragma once
 
 #include <array>
@@ -32,10 +33,11 @@ namespace meromorph {
 struct ParameterizeOptions {
   UvKind uv = UvKind::spherical;
   bool mobius = true;
-  int origin_vertex = -1;             // genus 1: where z = 0, the double pole of P (-1: automatic)
-  std::array<int, 2> form_pair{0, 1}; // genus >= 2: (psi_i + psi_j) / (psi_i - psi_j)
-  double layer_gap = 0.0;             // layer k on the sphere of radius 1 + gap * k
-  int puncture_face = -1;             // genus 0: the face at the pole (-1: automatic)
+  int origin_vertex = -1; // genus 1: where z = 0, the double pole of P (-1: automatic)
+  std::array<int, 2> form_pair{-1, -1}; // genus >= 2: (psi_i + psi_j) / (psi_i - psi_j); -1, -1:
+                                        // a generic pair mixing all forms (parameterization.cpp)
+  double layer_gap = 0.0;               // layer k on the sphere of radius 1 + gap * k
+  int puncture_face = -1;               // genus 0: the face at the pole (-1: automatic)
   SolverKind solver = SolverKind::cholmod;
 };
 

@@ -79,7 +79,7 @@ def load():
 
 
 def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
-                 form_pair=(0, 1), layer_gap=0.0, progress=None):
+                 form_pair=(-1, -1), layer_gap=0.0, progress=None):
     lib = load()
     positions = np.ascontiguousarray(positions, dtype=np.float32).reshape(-1)
     triangles = np.ascontiguousarray(triangles, dtype=np.int32).reshape(-1)

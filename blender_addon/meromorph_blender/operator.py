@@ -52,9 +52,10 @@ class MESH_OT_conformal_sphere_map(bpy.types.Operator):
                          description="Centre the map so the area spreads evenly over the sphere")
     origin: IntProperty(name="Genus 1 Pole Vertex", default=-1, min=-1,
                         description="Torus: the vertex at the double pole (-1: automatic)")
-    form_i: IntProperty(name="Form i", default=0, min=0,
-                        description="Genus 2 or more: the map is (psi_i + psi_j) / (psi_i - psi_j)")
-    form_j: IntProperty(name="Form j", default=1, min=0, description="Genus 2 or more: j")
+    form_i: IntProperty(name="Form i", default=-1, min=-1,
+                        description="Genus 2 or more: the map is (psi_i + psi_j) / (psi_i - psi_j); "
+                                    "-1 and -1: a generic pair mixing all forms")
+    form_j: IntProperty(name="Form j", default=-1, min=-1, description="Genus 2 or more: j")
     uv_name: bpy.props.StringProperty(name="UV Map", default="Conformal Sphere")
     create_sphere: BoolProperty(name="Create Layered Sphere", default=True,
                                 description="Add an object with the mesh on the sphere, by layer")

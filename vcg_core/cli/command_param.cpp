@@ -26,7 +26,7 @@ struct ParamOptions {
   std::string solver = "cholmod";
   bool no_mobius = false, repair = false, strict = false, quiet = false;
   int origin = -1;
-  std::vector<int> forms{0, 1};
+  std::vector<int> forms{-1, -1};
   double layer_gap = 0.0;
   int puncture_face = -1;
 };
@@ -145,7 +145,8 @@ Command add_param_command(CLI::App &app) {
   param
       ->add_option("--forms", options->forms,
                    "genus >= 2: indices i,j of the normalized holomorphic forms in "
-                   "(psi_i + psi_j) / (psi_i - psi_j)")
+                   "(psi_i + psi_j) / (psi_i - psi_j); -1,-1 (default): a generic pair mixing "
+                   "all forms")
       ->delimiter(',')
       ->capture_default_str();
   param
