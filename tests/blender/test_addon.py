@@ -128,6 +128,9 @@ def check_result(obj, genus_degree_branch, quads=False):
 bpy.ops.preferences.addon_install(filepath=ADDON_ZIP, overwrite=True)
 addon_utils.enable("meromorph_blender", default_set=True, handle_error=raise_it)
 check(hasattr(bpy.types, "MESH_OT_meromorph_conformal_sphere_map"), "operator registered")
+for menu in (bpy.types.VIEW3D_MT_uv_map, bpy.types.VIEW3D_MT_object):  # the U menu and Object menu
+    names = [getattr(f, "__module__", "") for f in menu._dyn_ui_initialize()]
+    check(any(n.startswith("meromorph_blender") for n in names), "entry in %s" % menu.__name__)
 
 # A torus primitive (quads), triangulated to compare with the CLI, and as quads.
 clear_scene()
