@@ -221,6 +221,21 @@ TEST(ParamCommand, WritesSurfaceSphereAndReport) {
     largest = std::max(largest, v.cP().Norm());
   EXPECT_NEAR(largest, 1.25, 1e-6) << "layer 1 on the sphere of radius 1 + gap";
 
+  // --strict turns a Riemann-Hurwitz failure into exit code 1 (genus 3: branch points missed).
+  const test::RunResult made =
+      test::run_cli({"make", "genus", "-g", "3", "--resolution", "30", "-o", dir.path("g3.ply")});
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  const test::RunResult loose =
+      test::run_cli({"param", dir.path("g3.ply"), "-o", dir.path("g3.uv.ply"), "--quiet"});
+  const test::RunResult strict = test::run_cli(
+      {"param", dir.path("g3.ply"), "-o", dir.path("g3.uv.ply"), "--quiet", "--strict"});
+  if (loose.err.find("Riemann-Hurwitz does not hold") != std::string::npos) {
+    EXPECT_EQ(loose.exit_code, 0);
+    EXPECT_EQ(strict.exit_code, 1) << strict.err;
+  } else {
+    EXPECT_EQ(strict.exit_code, 0) << strict.err;
+  }
+
   // Never over the input; open surfaces refused with exit code 3.
   EXPECT_EQ(test::run_cli({"param", input, "-o", input}).exit_code, 2);
   const test::RunResult open =
