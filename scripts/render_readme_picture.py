@@ -56,6 +56,13 @@ def checker_material(name, use_uv):
         ramp.color_ramp.elements[1].color = (0.2, 0.5, 0.8, 1)
         links.new(layer.outputs["Fac"], ramp.inputs["Fac"])
         links.new(ramp.outputs["Color"], bsdf.inputs["Base Color"])
+        # The outer layer half see-through, so the inner one shows.
+        alpha = nodes.new("ShaderNodeMath")
+        alpha.operation = "MULTIPLY_ADD"
+        alpha.inputs[1].default_value = -0.6
+        alpha.inputs[2].default_value = 1.0
+        links.new(layer.outputs["Fac"], alpha.inputs[0])
+        links.new(alpha.outputs["Value"], bsdf.inputs["Alpha"])
     return material
 
 
