@@ -5,24 +5,13 @@ import os
 import subprocess
 import sys
 
-import addon_utils
-import bmesh
 import bpy
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, install_addon, summary  # noqa: E402
+
 ADDON_ZIP, CLI, DATA, WORK = sys.argv[sys.argv.index("--") + 1:][:4]
-checks = 0
-
-
-def check(condition, message):
-    global checks
-    if not condition:
-        raise AssertionError(message)
-    checks += 1
-
-
-def raise_it(error):
-    raise error
 
 
 def clear_scene():
@@ -125,8 +114,7 @@ def check_result(obj, genus_degree_branch, quads=False):
 
 
 # Install the built zip into the temporary user scripts folder and enable it.
-bpy.ops.preferences.addon_install(filepath=ADDON_ZIP, overwrite=True)
-addon_utils.enable("meromorph_blender", default_set=True, handle_error=raise_it)
+install_addon(ADDON_ZIP)
 check(hasattr(bpy.types, "MESH_OT_meromorph_conformal_sphere_map"), "operator registered")
 for menu in (bpy.types.VIEW3D_MT_uv_map, bpy.types.VIEW3D_MT_object):  # the U menu and Object menu
     names = [getattr(f, "__module__", "") for f in menu._dyn_ui_initialize()]
@@ -205,4 +193,4 @@ bpy.context.collection.objects.link(triangle)
 activate(triangle)
 expect_error("at least 4")
 
-print("%d passed, 0 failed" % checks)
+print(summary())

@@ -1,28 +1,18 @@
 # Undo in the real Blender with a window (undo needs one): xvfb-run -a blender --factory-startup
 # --python-exit-code 1 --python test_undo.py -- ADDON_ZIP
+import os
 import sys
 
-import addon_utils
 import bpy
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from checks import check, install_addon, summary  # noqa: E402
+
 ADDON_ZIP = sys.argv[sys.argv.index("--") + 1]
-checks = 0
-
-
-def check(condition, message):
-    global checks
-    if not condition:
-        raise AssertionError(message)
-    checks += 1
-
-
-def raise_it(error):
-    raise error
 
 
 def main():
-    bpy.ops.preferences.addon_install(filepath=ADDON_ZIP, overwrite=True)
-    addon_utils.enable("meromorph_blender", default_set=True, handle_error=raise_it)
+    install_addon(ADDON_ZIP)
     window = bpy.context.window_manager.windows[0]
     with bpy.context.temp_override(window=window):
         bpy.ops.object.select_all(action="SELECT")
@@ -38,7 +28,7 @@ def main():
         bpy.ops.ed.undo()
         check(len(bpy.data.objects[name].data.uv_layers) == before, "undo removed the UV layer")
         check(bpy.data.objects.get(name + " Layered Sphere") is None, "undo removed the sphere object")
-    print("%d passed, 0 failed" % checks)
+    print(summary())
 
 
 try:
