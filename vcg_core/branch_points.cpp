@@ -19,20 +19,16 @@ std::vector<double> face_solid_angles(const Mesh &mesh,
 }
 
 double corner_sweep(const std::vector<Eigen::Vector3d> &sphere, const std::array<int, 3> &corners,
-                    int k, const CornerPaths &paths, int face) {
-  const Eigen::Vector3d &v = sphere[corners[k]];
-  const size_t corner = 3 * size_t(face) + size_t(k);
-  const Eigen::Vector3d &a =
-      paths.ends.empty() ? sphere[corners[(k + 1) % 3]] : paths.ends[2 * corner];
-  const Eigen::Vector3d &b =
-      paths.ends.empty() ? sphere[corners[(k + 2) % 3]] : paths.ends[2 * corner + 1];
-  if (paths.empty()) return swept_angle(v, a, b);
-  const Eigen::Vector3d &middle = paths.middle[corner];
+                    int k, const std::vector<Eigen::Vector3d> &side_midpoints, int face) {
+  const Eigen::Vector3d &v = sphere[corners[k]], &a = sphere[corners[(k + 1) % 3]],
+                        &b = sphere[corners[(k + 2) % 3]];
+  if (side_midpoints.empty()) return swept_angle(v, a, b);
+  const Eigen::Vector3d &middle = side_midpoints[3 * size_t(face) + size_t(k)];
   return swept_angle(v, a, middle) + swept_angle(v, middle, b);
 }
 
 Branching analyse_branching(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere, int euler,
-                            const CornerPaths &side_midpoints) {
+                            const std::vector<Eigen::Vector3d> &side_midpoints) {
   Branching out;
   // Winding: each face (v, a, b) adds the angle from a to b around v's image.
   std::vector<double> winding(mesh.vert.size(), 0.0);

@@ -6,11 +6,10 @@
 //      vertex's image, measured in the stereographic chart centred at that image (e >= 2: a
 //      branch point of order e - 1; e <= 0: a fold); the degree d: total signed spherical area of
 //      the face images over 4 pi; and the Riemann-Hurwitz check chi = 2 d - sum (e - 1).
-//      `corner_paths`, when given, refine the one-ring: the map doubles angles at a double point,
-//      so a corner of 90 degrees or more there sweeps half a turn or more, which its two ends alone
-//      cannot tell from a fold; the smooth map's values along the way can. Per face and corner,
-//      the middle of the opposite side, and optionally where the path starts and ends (on the two
-//      sides at the corner) instead of at the neighbouring vertices' images.
+//      `side_midpoints`, when given (3 per face: the image of the midpoint of the side opposite
+//      each corner), refine the one-ring: the map doubles angles at a double point, so a corner
+//      of 90 degrees or more there sweeps half a turn or more, which its two ends alone cannot
+//      tell from a fold; the smooth map's value between them can.
 #pragma once
 
 #include <array>
@@ -31,19 +30,12 @@ struct Branching {
   bool riemann_hurwitz_ok = false;
 };
 
-struct CornerPaths {
-  std::vector<Eigen::Vector3d> middle; // 3 per face
-  std::vector<Eigen::Vector3d> ends;   // 6 per face (start, end per corner), or empty
-
-  bool empty() const { return middle.empty(); }
-};
-
 Branching analyse_branching(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere, int euler,
-                            const CornerPaths &corner_paths = {});
+                            const std::vector<Eigen::Vector3d> &side_midpoints = {});
 
 // The angle the image of the side of face `face` opposite corner k sweeps around that corner.
 double corner_sweep(const std::vector<Eigen::Vector3d> &sphere, const std::array<int, 3> &corners,
-                    int k, const CornerPaths &corner_paths, int face);
+                    int k, const std::vector<Eigen::Vector3d> &side_midpoints, int face);
 
 // Signed spherical area of each face's image.
 std::vector<double> face_solid_angles(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere);

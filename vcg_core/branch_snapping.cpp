@@ -45,7 +45,7 @@ bool not_positive(const Incidence &in, const std::vector<Eigen::Vector3d> &spher
 }
 
 int winding(const Incidence &in, const std::vector<Eigen::Vector3d> &sphere, int v,
-            const CornerPaths &side_midpoints = {}) {
+            const std::vector<Eigen::Vector3d> &side_midpoints = {}) {
   double total = 0;
   for (int f : in.faces_of_vertex[v]) {
     const auto &c = in.corners[f];
@@ -59,7 +59,7 @@ int winding(const Incidence &in, const std::vector<Eigen::Vector3d> &sphere, int
 
 int place_critical_value(const Mesh &mesh, std::vector<PlaneValue> &values,
                          const std::vector<int> &candidates, const PlaneValue &critical_value,
-                         const CornerPaths &side_midpoints) {
+                         const std::vector<Eigen::Vector3d> &side_midpoints) {
   const Incidence in = incidence(mesh);
   std::vector<Eigen::Vector3d> sphere;
   for (const PlaneValue &v : values)

@@ -26,6 +26,6 @@ int snap_branch_points(const Mesh &mesh, std::vector<PlaneValue> &values);
 // around it. Returns that vertex.
 int place_critical_value(const Mesh &mesh, std::vector<PlaneValue> &values,
                          const std::vector<int> &candidates, const PlaneValue &critical_value,
-                         const CornerPaths &corner_paths = {});
+                         const std::vector<Eigen::Vector3d> &side_midpoints = {});
 
 } // namespace meromorph

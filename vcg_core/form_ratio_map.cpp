@@ -19,8 +19,7 @@ std::vector<Complex> holomorphic_coefficient(const Mesh &mesh, const MeshEdges &
 
 std::vector<PlaneValue> form_ratio_map(const Mesh &mesh, const MeshEdges &edges,
                                        const Eigen::VectorXcd &numerator,
-                                       const Eigen::VectorXcd &denominator,
-                                       std::vector<PlaneValue> *face_values) {
+                                       const Eigen::VectorXcd &denominator) {
   const FaceGeometry geometry = face_geometry(mesh);
   const std::vector<Complex> top = holomorphic_coefficient(mesh, edges, geometry, numerator);
   const std::vector<Complex> bottom = holomorphic_coefficient(mesh, edges, geometry, denominator);
@@ -28,9 +27,6 @@ std::vector<PlaneValue> form_ratio_map(const Mesh &mesh, const MeshEdges &edges,
   for (size_t f = 0; f < mesh.face.size(); ++f) {
     const bool pole = std::abs(bottom[f]) == 0.0;
     const PlaneValue value{pole ? Complex() : top[f] / bottom[f], pole};
-    if (face_values)
-      for (int k = 0; k < 3; ++k)
-        face_values->push_back(value);
     const Eigen::Vector3d point = to_sphere(value);
     for (int k = 0; k < 3; ++k)
       sum[index_of(mesh, mesh.face[f].cV(k))] += geometry.areas[f] * point;

@@ -17,11 +17,8 @@
 
 namespace meromorph {
 
-// `face_values`, if given, receives F per face, three times (as the side midpoints of
-// branch_points.h: the face's value stands for the values inside it).
 std::vector<PlaneValue> form_ratio_map(const Mesh &mesh, const MeshEdges &edges,
                                        const Eigen::VectorXcd &numerator,
-                                       const Eigen::VectorXcd &denominator,
-                                       std::vector<PlaneValue> *face_values = nullptr);
+                                       const Eigen::VectorXcd &denominator);
 
 } // namespace meromorph

@@ -184,9 +184,9 @@ Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &optio
 
   // A piecewise-linear map branches only at vertices; decided on the centred map, where nothing
   // is crowded. Genus 1 knows its critical points; for genus >= 2 they are found from the folds.
-  CornerPaths midpoints;
+  std::vector<Eigen::Vector3d> midpoints;
   for (const PlaneValue &value : side_midpoints)
-    midpoints.middle.push_back(to_sphere(value));
+    midpoints.push_back(to_sphere(value));
 
   if (out.genus == 1) {
     for (int k = 0; k < 3; ++k)
@@ -218,9 +218,9 @@ Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &optio
     out.mobius.steps += again.steps;
     for (PlaneValue &value : side_midpoints)
       value = again.transformation.apply(value);
-    midpoints.middle.clear();
+    midpoints.clear();
     for (const PlaneValue &value : side_midpoints)
-      midpoints.middle.push_back(to_sphere(value));
+      midpoints.push_back(to_sphere(value));
     for (size_t v = 0; v < values.size(); ++v)
       out.sphere[v] = to_sphere(values[v]);
   }
