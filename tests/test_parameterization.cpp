@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "errors.h"
+#include "face_vectors.h"
 #include "genus1_map.h"
 #include "holomorphic_pipeline.h"
 #include "mesh_reader.h"
@@ -17,16 +18,6 @@
 
 namespace meromorph {
 namespace {
-
-std::vector<double> vertex_areas(const Mesh &mesh) {
-  std::vector<double> areas(mesh.vert.size(), 0.0);
-  for (const MeshFace &f : mesh.face) {
-    const double area = ((f.cP(1) - f.cP(0)) ^ (f.cP(2) - f.cP(0))).Norm() / 2;
-    for (int k = 0; k < 3; ++k)
-      areas[index_of(mesh, f.cV(k))] += area / 3;
-  }
-  return areas;
-}
 
 void expect_valid_map(const Mesh &mesh, const Parameterization &map, int degree,
                       const std::string &name) {

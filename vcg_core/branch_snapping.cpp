@@ -5,38 +5,20 @@
 #include <set>
 
 #include "branch_points.h"
+#include "mesh_edges.h"
 #include "sphere_geometry.h"
 
 namespace meromorph {
 namespace {
 
-struct Incidence {
-  std::vector<std::vector<int>> faces_of_vertex;
-  std::vector<std::array<int, 3>> corners;
-};
-
-Incidence incidence(const Mesh &mesh) {
-  Incidence in;
-  in.faces_of_vertex.resize(mesh.vert.size());
-  for (size_t f = 0; f < mesh.face.size(); ++f) {
-    std::array<int, 3> c;
-    for (int k = 0; k < 3; ++k) {
-      c[k] = index_of(mesh, mesh.face[f].cV(k));
-      in.faces_of_vertex[c[k]].push_back(int(f));
-    }
-    in.corners.push_back(c);
-  }
-  return in;
-}
-
-bool folded(const Incidence &in, const std::vector<Eigen::Vector3d> &sphere, int f) {
+bool folded(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere, int f) {
   const auto &c = in.corners[f];
   return folded_image(sphere[c[0]], sphere[c[1]], sphere[c[2]]);
 }
 
 // Folded or flat: what a repair must not leave behind (a repair that copies a neighbour's image
 // would flatten faces instead of folding them).
-bool not_positive(const Incidence &in, const std::vector<Eigen::Vector3d> &sphere, int f) {
+bool not_positive(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere, int f) {
   const auto &c = in.corners[f];
   const Eigen::Vector3d &a = sphere[c[0]], &b = sphere[c[1]], &d = sphere[c[2]];
   const double chord =
@@ -44,7 +26,7 @@ bool not_positive(const Incidence &in, const std::vector<Eigen::Vector3d> &spher
   return !(signed_solid_angle(a, b, d) > 1e-9 * chord);
 }
 
-int winding(const Incidence &in, const std::vector<Eigen::Vector3d> &sphere, int v,
+int winding(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere, int v,
             const std::vector<Eigen::Vector3d> &side_midpoints = {}) {
   double total = 0;
   for (int f : in.faces_of_vertex[v]) {
@@ -60,7 +42,7 @@ int winding(const Incidence &in, const std::vector<Eigen::Vector3d> &sphere, int
 int place_critical_value(const Mesh &mesh, std::vector<PlaneValue> &values,
                          const std::vector<int> &candidates, const PlaneValue &critical_value,
                          const std::vector<Eigen::Vector3d> &side_midpoints) {
-  const Incidence in = incidence(mesh);
+  const FaceIncidence in = face_incidence(mesh);
   std::vector<Eigen::Vector3d> sphere;
   for (const PlaneValue &v : values)
     sphere.push_back(to_sphere(v));
@@ -93,7 +75,7 @@ namespace {
 
 // The spot's vertices in a conformal coordinate of the surface: their projection on the plane
 // through the first vertex, normal to the mean normal of its faces.
-std::vector<Complex> local_coordinates(const Mesh &mesh, const Incidence &in,
+std::vector<Complex> local_coordinates(const Mesh &mesh, const FaceIncidence &in,
                                        const std::vector<int> &vertices) {
   const int centre = vertices.front();
   Eigen::Vector3d normal = Eigen::Vector3d::Zero();
@@ -118,7 +100,7 @@ std::vector<Complex> local_coordinates(const Mesh &mesh, const Incidence &in,
 } // namespace
 
 int snap_branch_points(const Mesh &mesh, std::vector<PlaneValue> &plane_values) {
-  const Incidence in = incidence(mesh);
+  const FaceIncidence in = face_incidence(mesh);
   std::vector<Eigen::Vector3d> sphere;
   for (const PlaneValue &v : plane_values)
     sphere.push_back(to_sphere(v));

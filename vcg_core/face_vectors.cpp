@@ -1,5 +1,8 @@
 #include "face_vectors.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace meromorph {
 namespace {
 
@@ -21,6 +24,24 @@ FaceGeometry face_geometry(const Mesh &mesh) {
     geometry.normals.push_back(cross.normalized());
   }
   return geometry;
+}
+
+double corner_angle(const MeshFace &face, int k) {
+  const Point3 u = face.cP((k + 1) % 3) - face.cP(k), w = face.cP((k + 2) % 3) - face.cP(k);
+  return std::atan2((u ^ w).Norm(), u * w);
+}
+
+double smallest_angle(const MeshFace &face) {
+  return std::min({corner_angle(face, 0), corner_angle(face, 1), corner_angle(face, 2)});
+}
+
+std::vector<double> vertex_areas(const Mesh &mesh) {
+  const FaceGeometry geometry = face_geometry(mesh);
+  std::vector<double> areas(mesh.vert.size(), 0.0);
+  for (size_t f = 0; f < mesh.face.size(); ++f)
+    for (int k = 0; k < 3; ++k)
+      areas[index_of(mesh, mesh.face[f].cV(k))] += geometry.areas[f] / 3;
+  return areas;
 }
 
 Eigen::MatrixX3d face_vectors(const Mesh &mesh, const MeshEdges &edges,

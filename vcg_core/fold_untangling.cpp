@@ -2,19 +2,16 @@
 
 #include <set>
 
+#include "mesh_edges.h"
 #include "sphere_geometry.h"
 
 namespace meromorph {
 
 int untangle_folds(const Mesh &mesh, std::vector<Eigen::Vector3d> &sphere,
                    const std::vector<int> &fixed) {
-  std::vector<std::vector<int>> faces_of(mesh.vert.size());
-  std::vector<std::array<int, 3>> corners(mesh.face.size());
-  for (size_t f = 0; f < mesh.face.size(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      corners[f][k] = index_of(mesh, mesh.face[f].cV(k));
-      faces_of[corners[f][k]].push_back(int(f));
-    }
+  const FaceIncidence incidence = face_incidence(mesh);
+  const auto &corners = incidence.corners;
+  const auto &faces_of = incidence.faces_of_vertex;
   std::vector<char> is_fixed(mesh.vert.size(), 0);
   for (int v : fixed)
     is_fixed[v] = 1;

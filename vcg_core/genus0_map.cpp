@@ -22,12 +22,7 @@ int best_shaped_face(const Mesh &mesh, const FaceGeometry &geometry) {
   double best_angle = -1;
   for (size_t f = 0; f < mesh.face.size(); ++f) {
     if (geometry.areas[f] < 0.5 * median || geometry.areas[f] > 2 * median) continue;
-    double smallest = M_PI;
-    for (int k = 0; k < 3; ++k) {
-      const Point3 u = mesh.face[f].cP((k + 1) % 3) - mesh.face[f].cP(k);
-      const Point3 w = mesh.face[f].cP((k + 2) % 3) - mesh.face[f].cP(k);
-      smallest = std::min(smallest, std::atan2((u ^ w).Norm(), u * w));
-    }
+    const double smallest = smallest_angle(mesh.face[f]);
     if (smallest > best_angle) {
       best_angle = smallest;
       best = int(f);

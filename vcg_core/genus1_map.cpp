@@ -6,6 +6,7 @@
 #include <queue>
 
 #include "errors.h"
+#include "face_vectors.h"
 
 namespace meromorph {
 
@@ -18,9 +19,8 @@ Genus1Map genus1_map(const Mesh &mesh, const MeshEdges &edges, const Eigen::Vect
   std::vector<double> widest_corner(vertex_count, 0.0);
   for (const MeshFace &face : mesh.face)
     for (int k = 0; k < 3; ++k) {
-      const Point3 u = face.cP((k + 1) % 3) - face.cP(k), w = face.cP((k + 2) % 3) - face.cP(k);
       const int v = index_of(mesh, face.cV(k));
-      widest_corner[v] = std::max(widest_corner[v], std::atan2((u ^ w).Norm(), u * w));
+      widest_corner[v] = std::max(widest_corner[v], corner_angle(face, k));
     }
   auto acute = [&](int v) { return widest_corner[v] < M_PI / 2 - 1e-9; };
   if (origin_vertex < 0) {
@@ -36,10 +36,7 @@ Genus1Map genus1_map(const Mesh &mesh, const MeshEdges &edges, const Eigen::Vect
                         std::to_string(vertex_count - 1) + ")");
   Genus1Map out{{}, {}, WeierstrassP(period_a, period_b), {}, {}, {}, -1};
 
-  std::vector<std::vector<int>> incident(vertex_count);
-  for (int e = 0; e < edges.edge_count(); ++e)
-    for (int end : edges.vertices[e])
-      incident[end].push_back(e);
+  const std::vector<std::vector<int>> incident = edges_at_vertices(edges, vertex_count);
   out.flat.assign(vertex_count, Complex(0, 0));
   std::vector<char> reached(vertex_count, 0);
   std::queue<int> frontier;

@@ -46,11 +46,7 @@ HomologyBasis tree_cotree(const Mesh &mesh, const MeshEdges &edges) {
   const int vertex_count = int(mesh.vert.size()), face_count = int(mesh.face.size());
   const int edge_count = edges.edge_count();
 
-  // Vertex-edge incidence.
-  std::vector<std::vector<int>> incident(vertex_count);
-  for (int e = 0; e < edge_count; ++e)
-    for (int end : edges.vertices[e])
-      incident[end].push_back(e);
+  const std::vector<std::vector<int>> incident = edges_at_vertices(edges, vertex_count);
 
   // Breadth-first tree of vertices from vertex 0: combinatorial, so a rigid motion or a scale of
   // the mesh gives the same loops (a geometric shortest-path tree would break ties differently).

@@ -45,4 +45,24 @@ MeshEdges build_mesh_edges(const Mesh &mesh) {
   return edges;
 }
 
+std::vector<std::vector<int>> edges_at_vertices(const MeshEdges &edges, int vertex_count) {
+  std::vector<std::vector<int>> incident(vertex_count);
+  for (int e = 0; e < edges.edge_count(); ++e)
+    for (int end : edges.vertices[e])
+      incident[end].push_back(e);
+  return incident;
+}
+
+FaceIncidence face_incidence(const Mesh &mesh) {
+  FaceIncidence in;
+  in.faces_of_vertex.resize(mesh.vert.size());
+  in.corners.resize(mesh.face.size());
+  for (size_t f = 0; f < mesh.face.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      in.corners[f][k] = index_of(mesh, mesh.face[f].cV(k));
+      in.faces_of_vertex[in.corners[f][k]].push_back(int(f));
+    }
+  return in;
+}
+
 } // namespace meromorph

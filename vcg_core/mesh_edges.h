@@ -5,6 +5,8 @@
 //      face (which traverses it in that direction) and right face; for every face its three edges
 //      (edge k joins corners k and k+1) and the sign (+1 when the face traverses the edge in the
 //      edge's direction). A 1-form is a vector of per-edge values in the edges' directions.
+//      Also, for any compact mesh, the incidences the map stages walk: edges at each vertex, and
+//      faces at each vertex with every face's three vertices.
 #pragma once
 
 #include <array>
@@ -24,5 +26,15 @@ struct MeshEdges {
 };
 
 MeshEdges build_mesh_edges(const Mesh &mesh);
+
+// For each vertex, the edges that end at it.
+std::vector<std::vector<int>> edges_at_vertices(const MeshEdges &edges, int vertex_count);
+
+struct FaceIncidence {
+  std::vector<std::array<int, 3>> corners;       // per face: its three vertices
+  std::vector<std::vector<int>> faces_of_vertex; // per vertex: the faces around it
+};
+
+FaceIncidence face_incidence(const Mesh &mesh);
 
 } // namespace meromorph

@@ -16,33 +16,13 @@
 #include "validation.h"
 
 namespace meromorph {
-namespace {
-
-std::vector<double> vertex_areas(const Mesh &mesh) {
-  const FaceGeometry geometry = face_geometry(mesh);
-  std::vector<double> areas(mesh.vert.size(), 0.0);
-  for (size_t f = 0; f < mesh.face.size(); ++f)
-    for (int k = 0; k < 3; ++k)
-      areas[index_of(mesh, mesh.face[f].cV(k))] += geometry.areas[f] / 3;
-  return areas;
-}
-
-double smallest_angle(const MeshFace &face) {
-  double smallest = M_PI;
-  for (int k = 0; k < 3; ++k) {
-    const Point3 u = face.cP((k + 1) % 3) - face.cP(k), w = face.cP((k + 2) % 3) - face.cP(k);
-    smallest = std::min(smallest, std::atan2((u ^ w).Norm(), u * w));
-  }
-  return smallest;
-}
-
-} // namespace
 
 Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &options,
                               const Progress &progress) {
   const Validation validation = validate_mesh(mesh);
   if (!validation.ok()) throw InputError(validation.main_finding().message);
   if (options.layer_gap < 0) throw ArgumentError("the layer gap must not be negative");
+  const std::vector<double> areas = vertex_areas(mesh); // the weights of the Moebius centring
 
   Parameterization out;
   auto clock = std::chrono::steady_clock::now();
@@ -104,7 +84,7 @@ Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &optio
       // pole model is least accurate. Solve again with the pole at the face that the centred map
       // puts on the north pole: the new map is nearly centred, so nothing is crowded.
       std::vector<PlaneValue> centred = map.values;
-      if (center_on_sphere(centred, vertex_areas(mesh)).centroid_before.norm() > 1e-3) {
+      if (center_on_sphere(centred, areas).centroid_before.norm() > 1e-3) {
         // Any face the centred map puts near the north pole will do; the best-shaped of those
         // models the pole most accurately.
         int pole_face = -1;
@@ -172,7 +152,7 @@ Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &optio
 
   if (options.mobius) {
     progress.report(0.7, "Moebius normalisation");
-    out.mobius = center_on_sphere(values, vertex_areas(mesh));
+    out.mobius = center_on_sphere(values, areas);
     out.mobius_applied = true;
     for (PlaneValue &value : critical_values)
       value = out.mobius.transformation.apply(value);
@@ -212,7 +192,7 @@ Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &optio
     for (size_t v = 0; v < values.size(); ++v)
       if (!values[v].infinite && (to_sphere(values[v]) - out.sphere[v]).norm() > 1e-15)
         values[v] = to_plane_value(out.sphere[v]);
-    const MobiusCentering again = center_on_sphere(values, vertex_areas(mesh));
+    const MobiusCentering again = center_on_sphere(values, areas);
     out.mobius.transformation = again.transformation.after(out.mobius.transformation);
     out.mobius.centroid_after = again.centroid_after;
     out.mobius.steps += again.steps;
