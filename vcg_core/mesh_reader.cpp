@@ -9,6 +9,9 @@
 
 namespace meromorph {
 
+namespace {
+
+// The whole file as a string; throws ArgumentError if it cannot be read.
 std::string read_whole_file(const std::string &path) {
   std::ifstream stream(path, std::ios::binary);
   if (!stream) throw ArgumentError(path + ": cannot be opened for reading");
@@ -16,6 +19,8 @@ std::string read_whole_file(const std::string &path) {
   content << stream.rdbuf();
   return content.str();
 }
+
+} // namespace
 
 MeshSource read_mesh(const std::string &path, Mesh &mesh, const Progress &progress) {
   MeshSource source;

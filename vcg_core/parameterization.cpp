@@ -12,15 +12,12 @@
 #include "genus0_map.h"
 #include "genus1_map.h"
 #include "holomorphic_pipeline.h"
-#include "topology.h"
-#include "validation.h"
 
 namespace meromorph {
 
 Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &options,
                               const Progress &progress) {
-  const Validation validation = validate_mesh(mesh);
-  if (!validation.ok()) throw InputError(validation.main_finding().message);
+  // The mesh is validated once, by compute_holomorphic_forms below.
   if (options.layer_gap < 0) throw ArgumentError("the layer gap must not be negative");
   const std::vector<double> areas = vertex_areas(mesh); // the weights of the Moebius centring
 

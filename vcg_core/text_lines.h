@@ -103,7 +103,4 @@ private:
   std::vector<std::string_view> tokens_;
 };
 
-// The whole file as a string; throws ArgumentError if it cannot be read.
-std::string read_whole_file(const std::string &path);
-
 } // namespace meromorph
