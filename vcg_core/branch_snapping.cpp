@@ -1,20 +1,18 @@
 #include "branch_snapping.h"
 
 #include <algorithm>
+#include <map>
 #include <queue>
 #include <set>
+#include <tuple>
 
 #include "branch_points.h"
+#include "map_quality.h"
 #include "mesh_edges.h"
 #include "sphere_geometry.h"
 
 namespace meromorph {
 namespace {
-
-bool folded(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere, int f) {
-  const auto &c = in.corners[f];
-  return folded_image(sphere[c[0]], sphere[c[1]], sphere[c[2]]);
-}
 
 // Folded or flat: what a repair must not leave behind (a repair that copies a neighbour's image
 // would flatten faces instead of folding them).
@@ -73,139 +71,197 @@ int place_critical_value(const Mesh &mesh, std::vector<PlaneValue> &values,
 
 namespace {
 
-// The spot's vertices in a conformal coordinate of the surface: their projection on the plane
-// through the first vertex, normal to the mean normal of its faces.
-std::vector<Complex> local_coordinates(const Mesh &mesh, const FaceIncidence &in,
-                                       const std::vector<int> &vertices) {
-  const int centre = vertices.front();
-  Eigen::Vector3d normal = Eigen::Vector3d::Zero();
-  for (int f : in.faces_of_vertex[centre]) {
-    const Point3 n = vcg::NormalizedTriangleNormal(mesh.face[f]);
-    normal += Eigen::Vector3d(n[0], n[1], n[2]);
+// Ring distance from `sources` of every vertex at most `radius` rings away.
+std::map<int, int> ring_distances(const FaceIncidence &in, const std::vector<int> &sources,
+                                  int radius) {
+  std::map<int, int> distance;
+  std::queue<int> queue;
+  for (int v : sources) {
+    distance[v] = 0;
+    queue.push(v);
   }
-  normal.normalize();
-  const Eigen::Vector3d seed =
-      std::abs(normal.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
-  const Eigen::Vector3d e1 = normal.cross(seed).normalized(), e2 = normal.cross(e1);
-  const Point3 &origin = mesh.vert[centre].cP();
-  std::vector<Complex> z;
-  for (int v : vertices) {
-    const Point3 d = mesh.vert[v].cP() - origin;
-    const Eigen::Vector3d offset(d[0], d[1], d[2]);
-    z.emplace_back(offset.dot(e1), offset.dot(e2));
+  while (!queue.empty()) {
+    const int v = queue.front();
+    queue.pop();
+    if (distance[v] >= radius) continue;
+    for (int f : in.faces_of_vertex[v])
+      for (int w : in.corners[f])
+        if (distance.emplace(w, distance[v] + 1).second) queue.push(w);
+  }
+  return distance;
+}
+
+// A conformal coordinate on `region` (a disc): the integral of a holomorphic 1-form from
+// `origin` along edges (path independent there: the form is closed).
+std::map<int, Complex> integrated_coordinate(const MeshEdges &edges,
+                                             const std::vector<std::vector<int>> &edges_at,
+                                             const Eigen::VectorXcd &form, int origin,
+                                             const std::map<int, int> &region) {
+  std::map<int, Complex> z{{origin, Complex()}};
+  std::queue<int> queue;
+  queue.push(origin);
+  while (!queue.empty()) {
+    const int v = queue.front();
+    queue.pop();
+    for (int e : edges_at[v]) {
+      const bool forward = edges.vertices[e][0] == v;
+      const int w = edges.vertices[e][forward ? 1 : 0];
+      if (!region.count(w) || z.count(w)) continue;
+      z[w] = z[v] + (forward ? form[e] : -form[e]);
+      queue.push(w);
+    }
   }
   return z;
 }
 
-} // namespace
-
-int snap_branch_points(const Mesh &mesh, std::vector<PlaneValue> &plane_values) {
-  const FaceIncidence in = face_incidence(mesh);
-  std::vector<Eigen::Vector3d> sphere;
-  for (const PlaneValue &v : plane_values)
-    sphere.push_back(to_sphere(v));
-  const int vertex_count = int(mesh.vert.size());
+// Vertices that touch a folded or flat face or wind less than once, in spots connected through
+// faces.
+std::vector<std::vector<int>> trouble_spots(const FaceIncidence &in,
+                                            const std::vector<Eigen::Vector3d> &sphere) {
+  const int vertex_count = int(in.faces_of_vertex.size());
   std::vector<char> trouble(vertex_count, 0);
   for (size_t f = 0; f < in.corners.size(); ++f)
-    if (folded(in, sphere, int(f)))
+    if (not_positive(in, sphere, int(f)))
       for (int v : in.corners[f])
         trouble[v] = 1;
   for (int v = 0; v < vertex_count; ++v)
     if (!trouble[v] && winding(in, sphere, v) < 1) trouble[v] = 1;
-
-  int moved = 0;
+  std::vector<std::vector<int>> spots;
   std::vector<char> done(vertex_count, 0);
   for (int seed = 0; seed < vertex_count; ++seed) {
     if (!trouble[seed] || done[seed]) continue;
-    // The spot: trouble vertices connected through faces.
-    std::vector<int> spot;
-    std::queue<int> queue;
-    queue.push(seed);
+    std::vector<int> spot{seed};
     done[seed] = 1;
-    while (!queue.empty()) {
-      const int v = queue.front();
-      queue.pop();
-      spot.push_back(v);
-      for (int f : in.faces_of_vertex[v])
+    for (size_t i = 0; i < spot.size(); ++i)
+      for (int f : in.faces_of_vertex[spot[i]])
         for (int w : in.corners[f])
           if (trouble[w] && !done[w]) {
             done[w] = 1;
-            queue.push(w);
+            spot.push_back(w);
           }
-    }
+    spots.push_back(spot);
+  }
+  return spots;
+}
+
+} // namespace
+
+int snap_branch_points(const Mesh &mesh, const MeshEdges &edges,
+                       const std::vector<const Eigen::VectorXcd *> &coordinate_forms,
+                       std::vector<PlaneValue> &plane_values) {
+  constexpr int fit_rings = 2;       // around the spot, where the model is fitted
+  constexpr int max_shift_rings = 5; // around the chosen vertex, where the map is changed
+  const FaceIncidence in = face_incidence(mesh);
+  const std::vector<std::vector<int>> edges_at = edges_at_vertices(edges, int(mesh.vert.size()));
+  std::vector<Eigen::Vector3d> sphere;
+  for (const PlaneValue &v : plane_values)
+    sphere.push_back(to_sphere(v));
+
+  int repaired = 0;
+  for (const std::vector<int> &spot : trouble_spots(in, sphere)) {
     if (spot.size() > 64) continue; // not a lone critical point: leave it as measured
-    // Two rings around the spot: where the model is fitted and orientation judged.
-    std::set<int> ring(spot.begin(), spot.end());
-    for (int pass = 0; pass < 2; ++pass) {
-      const std::set<int> inner = ring;
-      for (int v : inner)
-        for (int f : in.faces_of_vertex[v])
-          for (int w : in.corners[f])
-            ring.insert(w);
+    const std::map<int, int> region = ring_distances(in, spot, fit_rings + max_shift_rings + 1);
+    std::vector<int> region_faces;
+    {
+      std::set<int> faces;
+      for (const auto &[v, ring] : region)
+        faces.insert(in.faces_of_vertex[v].begin(), in.faces_of_vertex[v].end());
+      region_faces.assign(faces.begin(), faces.end());
     }
-    std::set<int> nearby_faces;
-    for (int v : spot)
-      for (int f : in.faces_of_vertex[v])
-        for (int w : in.corners[f])
-          for (int g : in.faces_of_vertex[w])
-            nearby_faces.insert(g);
-    auto bad_nearby = [&] {
-      int count = 0;
-      for (int f : nearby_faces)
-        count += not_positive(in, sphere, f);
-      return count;
+    // Folded faces, then flat ones (a corner of 90 degrees or more at a branch vertex is flat
+    // after doubling: not a fold), then winding not 2 at the branch vertex, then angle distortion.
+    using Score = std::tuple<int, int, int, double>;
+    auto score_region = [&](int branch_vertex) {
+      Score score{0, 0, branch_vertex < 0 || winding(in, sphere, branch_vertex) != 2, 0.0};
+      for (int f : region_faces) {
+        const auto &c = in.corners[f];
+        const bool folded = folded_image(sphere[c[0]], sphere[c[1]], sphere[c[2]]);
+        std::get<0>(score) += folded;
+        std::get<1>(score) += !folded && not_positive(in, sphere, f);
+        std::get<3>(score) += face_angle_error_degrees(mesh, sphere, f);
+      }
+      return score;
     };
 
-    // Near a critical point p the map is F(z) = c + k (z - p)^2 = A + B z + C z^2: fit A, B, C
-    // by least squares in a chart of the sphere centred at the spot's image, and read off
+    // The coordinate: the integral of the form that is larger near the spot (far from its zeros).
+    const Eigen::VectorXcd *form = coordinate_forms.front();
+    double largest = -1;
+    for (const Eigen::VectorXcd *candidate : coordinate_forms) {
+      double size = 0;
+      for (const auto &[v, ring] : region)
+        if (ring <= fit_rings)
+          for (int e : edges_at[v])
+            size += std::abs((*candidate)[e]);
+      if (size > largest) {
+        largest = size;
+        form = candidate;
+      }
+    }
+    std::map<int, Complex> z = integrated_coordinate(edges, edges_at, *form, spot.front(), region);
+
+    // Near a critical point p the map is Q(z) = c + k (z - p)^2 = A + B z + C z^2: fit A, B, C by
+    // least squares in a chart of the sphere centred at the spot's image, and read off
     // p = -B / 2C and the critical value c = A - B^2 / 4C.
-    std::vector<int> vertices(spot.begin(), spot.end());
-    for (int v : ring)
-      if (std::find(spot.begin(), spot.end(), v) == spot.end()) vertices.push_back(v);
+    std::vector<int> fitted;
+    for (const auto &[v, ring] : region)
+      if (ring <= fit_rings) fitted.push_back(v);
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    for (int v : vertices)
+    for (int v : fitted)
       centre += sphere[v];
     centre.normalize();
-    const std::vector<Complex> z = local_coordinates(mesh, in, vertices);
-    Eigen::MatrixXcd design(long(vertices.size()), 3);
-    Eigen::VectorXcd image(long(vertices.size()));
-    for (size_t i = 0; i < vertices.size(); ++i) {
-      design.row(long(i)) << 1.0, z[i], z[i] * z[i];
-      image[long(i)] = chart_at(centre, sphere[vertices[i]]);
+    Eigen::MatrixXcd design(long(fitted.size()), 3);
+    Eigen::VectorXcd image(long(fitted.size()));
+    for (size_t i = 0; i < fitted.size(); ++i) {
+      const Complex zi = z[fitted[i]];
+      design.row(long(i)) << 1.0, zi, zi * zi;
+      image[long(i)] = chart_at(centre, sphere[fitted[i]]);
     }
     const Eigen::VectorXcd abc = design.colPivHouseholderQr().solve(image);
     if (std::abs(abc[2]) == 0 || !abc.allFinite()) continue;
     const Complex p = -abc[1] / (2.0 * abc[2]);
     const Complex c = abc[0] - abc[1] * abc[1] / (4.0 * abc[2]);
-    const Eigen::Vector3d critical = from_chart(centre, c);
+    auto model = [&](Complex x) { return abc[0] + x * (abc[1] + x * abc[2]); };
 
-    // The vertices nearest p are the candidates; the one that then winds twice with the fewest
-    // folded or flat faces around wins, if it improves on leaving the spot alone.
+    // Candidates: the vertices nearest p. Each is tried with the map composed with the shift
+    // z -> z + t (p - z_v), t = 1 - ring / R at the vertices R - 1 rings or less from v (R = 1: v
+    // alone takes c); the fold-free one that distorts angles least wins.
     std::vector<std::pair<double, int>> by_distance;
-    for (size_t i = 0; i < vertices.size(); ++i)
-      by_distance.push_back({std::abs(z[i] - p), vertices[i]});
+    for (int v : fitted)
+      by_distance.push_back({std::abs(z[v] - p), v});
     std::sort(by_distance.begin(), by_distance.end());
-    const std::pair<int, int> before{2, bad_nearby()};
-    std::pair<int, int> best = before;
-    int best_vertex = -1;
-    for (size_t i = 0; i < std::min<size_t>(6, by_distance.size()); ++i) {
-      const int v = by_distance[i].second;
-      const Eigen::Vector3d original = sphere[v];
-      sphere[v] = critical;
-      const std::pair<int, int> score{winding(in, sphere, v) == 2 ? 0 : 1, bad_nearby()};
-      if (score.second < best.second || (score.second == best.second && score.first < best.first)) {
-        best = score;
-        best_vertex = v;
+    Score best = score_region(-1);
+    std::vector<std::pair<int, Eigen::Vector3d>> best_change;
+    for (int shift_rings = 1; shift_rings <= max_shift_rings; ++shift_rings)
+      for (size_t i = 0; i < std::min<size_t>(6, by_distance.size()); ++i) {
+        const int v = by_distance[i].second;
+        const Complex shift = p - z[v];
+        std::vector<std::pair<int, Eigen::Vector3d>> change, original;
+        for (const auto &[w, ring] : ring_distances(in, {v}, shift_rings - 1)) {
+          const double t = 1.0 - double(ring) / shift_rings;
+          const Complex value =
+              w == v ? c : chart_at(centre, sphere[w]) + model(z[w] + t * shift) - model(z[w]);
+          change.push_back({w, from_chart(centre, value)});
+        }
+        for (const auto &[w, point] : change) {
+          original.push_back({w, sphere[w]});
+          sphere[w] = point;
+        }
+        const Score score = score_region(v);
+        for (const auto &[w, point] : original)
+          sphere[w] = point;
+        if (score < best) {
+          best = score;
+          best_change = change;
+        }
       }
-      sphere[v] = original;
+    if (best_change.empty()) continue;
+    for (const auto &[w, point] : best_change) {
+      sphere[w] = point;
+      plane_values[w] = to_plane_value(point);
     }
-    if (best_vertex >= 0) {
-      sphere[best_vertex] = critical;
-      plane_values[best_vertex] = to_plane_value(critical);
-      ++moved;
-    }
+    ++repaired;
   }
-  return moved;
+  return repaired;
 }
 
 } // namespace meromorph

@@ -1,12 +1,17 @@
 // Branch points at vertices: a piecewise-linear map can only branch at a vertex.
 //
-// In:  a mesh and the map's value per vertex (modified in place).
-// Out: where a critical point of the smooth map falls inside a face, the interpolated map folds a
-//      few faces around it instead of winding twice around a vertex. Each such spot (vertices
-//      that touch a folded face or wind less than once) is repaired: the map there is fitted by
-//      c + k (z - p)^2 in a conformal coordinate z of the surface, and the vertex near p that then
-//      winds twice with the fewest folded or flat faces around takes the critical value c (only
-//      if that improves on leaving it). Returns how many vertices were moved.
+// In:  a mesh, its edges, the map's value per vertex (modified in place), and holomorphic 1-forms
+//      that give conformal coordinates of the surface (genus >= 2: the numerator and denominator
+//      of the ratio, which have no common zero).
+// Out: where a critical point p of the smooth map falls inside a face, the interpolated map folds
+//      that face instead of winding twice around a vertex. Each such spot (vertices that touch a
+//      folded face or wind less than once) is repaired: in the coordinate z = integral of the
+//      larger form, the map is fitted by Q(z) = c + k (z - p)^2, and the map is composed with a
+//      small local shift of the surface that takes a vertex v near p onto p: within one ring of v
+//      the values become Q(z + p - z_v) (v gets the critical value c), fading to the measured
+//      values over the next rings. Of the vertices nearest p, the one that leaves the fewest
+//      folded or flat faces wins, if that improves on leaving the spot alone. Returns how many
+//      spots were repaired.
 #pragma once
 
 #include <vector>
@@ -15,11 +20,14 @@
 
 #include "branch_points.h"
 #include "mesh.h"
+#include "mesh_edges.h"
 #include "sphere_geometry.h"
 
 namespace meromorph {
 
-int snap_branch_points(const Mesh &mesh, std::vector<PlaneValue> &values);
+int snap_branch_points(const Mesh &mesh, const MeshEdges &edges,
+                       const std::vector<const Eigen::VectorXcd *> &coordinate_forms,
+                       std::vector<PlaneValue> &values);
 
 // A critical value known exactly (genus 1: P at a half period) goes to the candidate vertex
 // (those nearest the critical point) that then winds twice with the fewest folded or flat faces

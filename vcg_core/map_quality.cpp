@@ -53,6 +53,21 @@ QualityStatistics summarize(std::vector<FaceMeasure> measures) {
 
 } // namespace
 
+double face_angle_error_degrees(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere,
+                                int face) {
+  Eigen::Vector3d p[3], s[3];
+  for (int k = 0; k < 3; ++k) {
+    const Point3 &q = mesh.face[face].cP(k);
+    p[k] = Eigen::Vector3d(q[0], q[1], q[2]);
+    s[k] = sphere[index_of(mesh, mesh.face[face].cV(k))];
+  }
+  double error = 0;
+  for (int k = 0; k < 3; ++k)
+    error += std::abs(angle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]) -
+                      angle(s[k], s[(k + 1) % 3], s[(k + 2) % 3]));
+  return error * 180.0 / M_PI / 3.0;
+}
+
 MapQuality measure_map_quality(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere,
                                const std::vector<int> &branch_vertices) {
   std::vector<char> near_branch(mesh.vert.size(), 0);
@@ -78,10 +93,7 @@ MapQuality measure_map_quality(const Mesh &mesh, const std::vector<Eigen::Vector
     m.quasi_conformal =
         smallest > 0 ? svd.singularValues()[0] / smallest : std::numeric_limits<double>::infinity();
     if (!std::isfinite(m.quasi_conformal)) m.quasi_conformal = 1e300;
-    for (int k = 0; k < 3; ++k)
-      m.angle_error_degrees += std::abs(angle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]) -
-                                        angle(s[k], s[(k + 1) % 3], s[(k + 2) % 3]));
-    m.angle_error_degrees *= 180.0 / M_PI / 3.0;
+    m.angle_error_degrees = face_angle_error_degrees(mesh, sphere, int(f));
     all.push_back(m);
     if (!touches_branch) away.push_back(m);
   }

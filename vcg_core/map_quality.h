@@ -30,6 +30,10 @@ struct MapQuality {
   QualityStatistics away_from_branch_points;
 };
 
+// The mean absolute difference of a face's corner angles and its image's, in degrees.
+double face_angle_error_degrees(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere,
+                                int face);
+
 MapQuality measure_map_quality(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere,
                                const std::vector<int> &branch_vertices);
 

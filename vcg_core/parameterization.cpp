@@ -1,6 +1,7 @@
 #include "parameterization.h"
 
 #include <chrono>
+#include <optional>
 #include <set>
 
 #include "branch_points.h"
@@ -8,6 +9,7 @@
 #include "errors.h"
 #include "face_vectors.h"
 #include "fold_untangling.h"
+#include "form_pairs.h"
 #include "form_ratio_map.h"
 #include "genus0_map.h"
 #include "genus1_map.h"
@@ -117,37 +119,74 @@ Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &optio
     side_midpoints = map.side_midpoints;
     out.method = "genus 1: Weierstrass P-function of the flat coordinate";
   } else {
+    out.riemann_matrix = forms.riemann_matrix;
+    out.form_pair = options.form_pair;
     const auto [i, j] = options.form_pair;
-    Eigen::VectorXcd omega1, omega2;
+    std::vector<FormPair> pairs;
     if (i < 0 && j < 0) {
-      // The default: a generic pair. The normalized forms of a chain of handles each live on
-      // their own handle and nearly vanish on the others, so a ratio of two of them is 0 / 0
-      // there; mixing all of them avoids that: omega1 = sum psi_k, omega2 = sum (k+1)/(g+1) psi_k.
-      omega1 = omega2 = Eigen::VectorXcd::Zero(forms.edges.edge_count());
-      for (int k = 0; k < out.genus; ++k) {
-        omega1 += forms.normalized[k];
-        omega2 += (double(k + 1) / (out.genus + 1)) * forms.normalized[k];
-      }
-      out.method = "genus " + std::to_string(out.genus) +
-                   ": ratio (omega1 + omega2) / (omega1 - omega2), omega1 = sum psi_k, "
-                   "omega2 = sum (k+1)/(g+1) psi_k of the normalized holomorphic 1-forms psi_k";
+      pairs = generic_form_pairs(out.genus);
     } else {
       if (i < 0 || j < 0 || i >= out.genus || j >= out.genus || i == j)
         throw ArgumentError("the form pair must be two different indices between 0 and " +
                             std::to_string(out.genus - 1) + " (or -1, -1 for the generic pair)");
-      omega1 = forms.normalized[i];
-      omega2 = forms.normalized[j];
-      out.method = "genus " + std::to_string(out.genus) + ": ratio (psi_" + std::to_string(i) +
-                   " + psi_" + std::to_string(j) + ") / (psi_" + std::to_string(i) + " - psi_" +
-                   std::to_string(j) + ") of normalized holomorphic 1-forms";
+      FormPair pair{Eigen::VectorXcd::Zero(out.genus), Eigen::VectorXcd::Zero(out.genus)};
+      pair.first[i] = pair.second[j] = 1.0;
+      pairs.push_back(pair);
     }
-    out.riemann_matrix = forms.riemann_matrix;
-    values = form_ratio_map(mesh, forms.edges, omega1 + omega2, omega1 - omega2);
-    out.form_pair = options.form_pair;
+    // A pair is generic when the measured degree is 2g - 2 and Riemann-Hurwitz holds. Where a
+    // mesh is too coarse to resolve a pair's map (its image crowds where both forms live on the
+    // same handle), the next pair of the fixed list is tried; the best one is kept.
+    struct Attempt {
+      bool generic;
+      int deficit; // |chi - (2 d - ramification)|
+      std::vector<PlaneValue> values;
+      MobiusCentering centring;
+      int snapped;
+    };
+    std::optional<Attempt> best;
+    for (size_t attempt = 0; attempt < pairs.size(); ++attempt) {
+      progress.report(0.6 + 0.1 * double(attempt) / double(pairs.size()), "meromorphic function");
+      Eigen::VectorXcd omega1 = Eigen::VectorXcd::Zero(forms.edges.edge_count());
+      Eigen::VectorXcd omega2 = omega1;
+      for (int k = 0; k < out.genus; ++k) {
+        omega1 += pairs[attempt].first[k] * forms.normalized[k];
+        omega2 += pairs[attempt].second[k] * forms.normalized[k];
+      }
+      const Eigen::VectorXcd numerator = omega1 + omega2, denominator = omega1 - omega2;
+      Attempt result{false, 0, form_ratio_map(mesh, forms.edges, numerator, denominator), {}, 0};
+      if (options.mobius) result.centring = center_on_sphere(result.values, areas);
+      for (int pass = 0; pass < 4; ++pass) {
+        const int repaired =
+            snap_branch_points(mesh, forms.edges, {&numerator, &denominator}, result.values);
+        result.snapped += repaired;
+        if (!repaired) break;
+      }
+      std::vector<Eigen::Vector3d> sphere;
+      for (const PlaneValue &value : result.values)
+        sphere.push_back(to_sphere(value));
+      const Branching measured = analyse_branching(mesh, sphere, out.euler);
+      result.generic = measured.riemann_hurwitz_ok && measured.degree == 2 * out.genus - 2;
+      result.deficit = std::abs(out.euler - (2 * measured.degree - measured.ramification));
+      if (!best || std::make_pair(!result.generic, result.deficit) <
+                       std::make_pair(!best->generic, best->deficit)) {
+        best = std::move(result);
+        out.form_coefficients = pairs[attempt];
+      }
+      out.pair_attempts = int(attempt) + 1;
+      if (best->generic) break;
+    }
+    values = std::move(best->values);
+    out.mobius = best->centring;
+    out.mobius_applied = options.mobius;
+    out.snapped_branch_points = best->snapped;
+    out.method = "genus " + std::to_string(out.genus) +
+                 ": ratio (omega1 + omega2) / (omega1 - omega2), omega1 = sum a_k psi_k, "
+                 "omega2 = sum b_k psi_k of the normalized holomorphic 1-forms psi_k (a_k, b_k: "
+                 "form_coefficients)";
   }
   lap("meromorphic");
 
-  if (options.mobius) {
+  if (options.mobius && out.genus < 2) {
     progress.report(0.7, "Moebius normalisation");
     out.mobius = center_on_sphere(values, areas);
     out.mobius_applied = true;
@@ -155,28 +194,20 @@ Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &optio
       value = out.mobius.transformation.apply(value);
     for (PlaneValue &value : side_midpoints)
       value = out.mobius.transformation.apply(value);
-
     lap("mobius");
   }
 
   // A piecewise-linear map branches only at vertices; decided on the centred map, where nothing
-  // is crowded. Genus 1 knows its critical points; for genus >= 2 they are found from the folds.
+  // is crowded. Genus 1 knows its critical points; genus >= 2 placed them above, per pair.
   std::vector<Eigen::Vector3d> midpoints;
   for (const PlaneValue &value : side_midpoints)
     midpoints.push_back(to_sphere(value));
-
   if (out.genus == 1) {
     for (int k = 0; k < 3; ++k)
       place_critical_value(mesh, values, critical_candidates[k], critical_values[k], midpoints);
     out.snapped_branch_points = 3;
-  } else if (out.genus >= 2) {
-    for (int pass = 0; pass < 4; ++pass) {
-      const int moved = snap_branch_points(mesh, values);
-      out.snapped_branch_points += moved;
-      if (!moved) break;
-    }
+    lap("branch_placement");
   }
-  lap("branch_placement");
   out.sphere.reserve(values.size());
   for (const PlaneValue &value : values)
     out.sphere.push_back(to_sphere(value));

@@ -3,12 +3,12 @@
 // In:  a mesh that validation accepts, options, progress (cancellable).
 // Out: `Parameterization`: the map as a unit-sphere position per vertex (genus 0: a degree-1 map;
 //      genus 1: the Weierstrass P-function of the flat coordinate, degree 2; genus g >= 2: the
-//      ratio (omega1 + omega2) / (omega1 - omega2) of two holomorphic forms, by default a generic
-//      pair mixing all normalized forms, degree 2g - 2), Moebius-centred unless asked not to; its
-//      degree, branch points with local degrees and the Riemann-Hurwitz check; layers (sheets) and
-//      the layered-sphere positions; texture coordinates per vertex and per wedge; distortion;
-//      modulus or Riemann matrix; timings. Nothing is forced: what is reported is what was
-//      measured.
+//      ratio (omega1 + omega2) / (omega1 - omega2) of two holomorphic forms, by default the first
+//      of a fixed list of generic pairs that the mesh resolves, degree 2g - 2), Moebius-centred
+//      unless asked not to; its degree, branch points with local degrees and the Riemann-Hurwitz
+//      check; layers (sheets) and the layered-sphere positions; texture coordinates per vertex and
+//      per wedge; distortion; modulus or Riemann matrix; timings. Nothing is forced: what is
+//      reported is what was measured.
 #pragma once
 
 #include <array>
@@ -19,6 +19,7 @@
 
 #include <Eigen/Core>
 
+#include "form_pairs.h"
 #include "laplacian_solver.h"
 #include "map_quality.h"
 #include "mesh.h"
@@ -74,6 +75,8 @@ struct Parameterization {
   int snapped_branch_points = 0; // vertices moved onto a critical value (branch_snapping.h)
   int untangled_vertices = 0;    // sliver corners moved to unfold them (fold_untangling.h)
   std::array<int, 2> form_pair{-1, -1};
+  FormPair form_coefficients; // genus >= 2: a_k, b_k of the pair used (form_pairs.h)
+  int pair_attempts = 0;      // genus >= 2: pairs tried until one was generic
 };
 
 Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &options = {},

@@ -109,7 +109,18 @@ nlohmann::json parameterization_json(const Parameterization &map) {
   if (map.genus == 0)
     report["genus0"] = {{"pole_face", map.puncture_face}, {"raised_weights", map.raised_weights}};
   if (map.genus == 1) report["origin_vertex"] = map.origin_vertex;
-  if (map.genus >= 2) report["form_pair"] = map.form_pair;
+  if (map.genus >= 2) {
+    report["form_pair"] = map.form_pair;
+    auto coefficients = [](const Eigen::VectorXcd &c) {
+      nlohmann::json list = nlohmann::json::array();
+      for (const auto &value : c)
+        list.push_back({value.real(), value.imag()});
+      return list;
+    };
+    report["form_coefficients"] = {{"a", coefficients(map.form_coefficients.first)},
+                                   {"b", coefficients(map.form_coefficients.second)}};
+    report["pair_attempts"] = map.pair_attempts;
+  }
   return report;
 }
 
