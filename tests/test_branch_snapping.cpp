@@ -1,0 +1,58 @@
+// Branch snapping against exact critical points: the Weierstrass P-function of a torus has its
+// finite critical points at the three half periods. On a remeshed torus those fall inside faces,
+// where the interpolated map folds or flattens faces instead of branching; snapping alone (no
+// knowledge of P) must find each of them, within one edge, and leave a fold-free map whose
+// branching satisfies Riemann-Hurwitz.
+#include <gtest/gtest.h>
+
+#include "branch_points.h"
+#include "branch_snapping.h"
+#include "face_vectors.h"
+#include "genus1_map.h"
+#include "holomorphic_pipeline.h"
+#include "mobius_centering.h"
+#include "test_surfaces.h"
+
+namespace meromorph {
+namespace {
+
+TEST(BranchSnapping, FindsTheCriticalPointsOfPAtTheHalfPeriods) {
+  for (int resolution : {16, 24, 32}) {
+    Mesh mesh;
+    make_implicit_torus(mesh, 2.0, 1.0, resolution);
+    const HolomorphicForms forms = compute_holomorphic_forms(mesh);
+    const Genus1Map map = genus1_map(mesh, forms.edges, forms.normalized[0], Complex(1, 0),
+                                     forms.riemann_matrix(0, 0), -1);
+    std::vector<PlaneValue> values = map.values;
+    center_on_sphere(values, vertex_areas(mesh));
+    for (int pass = 0; pass < 4; ++pass)
+      if (!snap_branch_points(mesh, forms.edges, {&forms.normalized[0]}, values)) break;
+
+    std::vector<Eigen::Vector3d> sphere;
+    for (const PlaneValue &value : values)
+      sphere.push_back(to_sphere(value));
+    const Branching branching = analyse_branching(mesh, sphere, 0);
+    EXPECT_TRUE(branching.riemann_hurwitz_ok) << resolution;
+    EXPECT_EQ(branching.degree, 2) << resolution;
+    ASSERT_EQ(branching.branch_vertices.size(), 4u) << resolution;
+    for (size_t f = 0; f < mesh.face.size(); ++f) {
+      const MeshFace &face = mesh.face[f];
+      EXPECT_FALSE(folded_image(sphere[index_of(mesh, face.cV(0))],
+                                sphere[index_of(mesh, face.cV(1))],
+                                sphere[index_of(mesh, face.cV(2))]))
+          << resolution << ": face " << f;
+    }
+    double longest_edge = 0;
+    for (int e = 0; e < forms.edges.edge_count(); ++e)
+      longest_edge = std::max(longest_edge, std::abs(forms.normalized[0][e]));
+    for (const Complex &half_period : map.p_function.half_periods()) {
+      double nearest = 1e9;
+      for (int v : branching.branch_vertices)
+        nearest = std::min(nearest, map.p_function.lattice_distance(map.flat[v] - half_period));
+      EXPECT_LE(nearest, longest_edge) << resolution << ": half period " << half_period;
+    }
+  }
+}
+
+} // namespace
+} // namespace meromorph
