@@ -25,8 +25,10 @@ Complex to_plane(const Eigen::Vector3d &p) {
 
 double signed_solid_angle(const Eigen::Vector3d &a, const Eigen::Vector3d &b,
                           const Eigen::Vector3d &c) {
-  // Van Oosterom and Strackee (1983).
-  const double numerator = a.dot(b.cross(c));
+  // Van Oosterom and Strackee (1983). The triple product a . (b x c) equals
+  // a . ((b - a) x (c - a)); the differences keep it accurate relative to a tiny triangle's area
+  // (the plain form has an error of about 1e-16 whatever the triangle's size).
+  const double numerator = a.dot((b - a).cross(c - a));
   const double denominator = 1.0 + a.dot(b) + b.dot(c) + c.dot(a);
   return 2.0 * std::atan2(numerator, denominator);
 }
