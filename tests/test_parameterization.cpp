@@ -134,14 +134,35 @@ TEST(Parameterization, ChosenFormPair) {
 }
 
 TEST(Parameterization, GenusZeroWithLongThinPartsFoldsNothing) {
-  // Six tentacles each about 6.7 times longer than thick (peers fold dozens of faces here).
-  for (int tentacles : {4, 6, 8}) {
+  // Tentacles of radius 0.12 reaching 2.6 (about 6.7 times longer than thick; peers fold dozens
+  // of faces here) and 4.0 (12.5 times: their tips shrink to about 1e-14 on the sphere).
+  struct Case {
+    int tentacles;
+    double length;
+  };
+  for (const Case &c : {Case{4, 2.6}, Case{6, 2.6}, Case{8, 2.6}, Case{4, 4.0}, Case{6, 4.0}}) {
     Mesh mesh;
-    make_tentacle_blob(mesh, tentacles, 2.6, 30);
+    make_tentacle_blob(mesh, c.tentacles, c.length, 30);
     const Parameterization map = parameterize(mesh);
-    expect_valid_map(mesh, map, 1, std::to_string(tentacles) + " tentacles");
-    EXPECT_EQ(map.quality.overall.folded_faces, 0);
+    const std::string name =
+        std::to_string(c.tentacles) + " tentacles of length " + std::to_string(c.length);
+    expect_valid_map(mesh, map, 1, name);
+    EXPECT_EQ(map.quality.overall.folded_faces, 0) << name;
+    EXPECT_EQ(map.raised_weights, 0) << name << ": the cotangent weights as they are";
   }
+}
+
+TEST(Parameterization, SolidAnglesOfTinyTrianglesKeepTheirSign) {
+  // Three points 1e-10 apart on the unit sphere: the triple product in differences resolves
+  // their orientation (the plain product errs by about 1e-16, more than their area of 1e-20).
+  const Eigen::Vector3d a = Eigen::Vector3d(0.3, -0.5, 0.8).normalized();
+  const Eigen::Vector3d e1 = a.cross(Eigen::Vector3d::UnitX()).normalized(), e2 = a.cross(e1);
+  const Eigen::Vector3d b = (a + 1e-10 * e1).normalized(), c = (a + 1e-10 * e2).normalized();
+  const double area = signed_solid_angle(a, b, c);
+  EXPECT_NEAR(area, 0.5e-20, 0.05e-20);
+  EXPECT_NEAR(signed_solid_angle(a, c, b), -area, 0.05e-20);
+  EXPECT_FALSE(folded_image(a, b, c));
+  EXPECT_TRUE(folded_image(a, c, b));
 }
 
 TEST(Parameterization, GenusZeroConvergesToConformalUnderRefinement) {

@@ -33,4 +33,16 @@ Eigen::SparseMatrix<double> cotan_laplacian(int vertex_count, const MeshEdges &e
   return laplacian;
 }
 
+Eigen::VectorXd laplacian_of_differences(const MeshEdges &edges, const std::vector<double> &weights,
+                                         const Eigen::VectorXd &x) {
+  Eigen::VectorXd result = Eigen::VectorXd::Zero(x.size());
+  for (int e = 0; e < edges.edge_count(); ++e) {
+    const int i = edges.vertices[e][0], j = edges.vertices[e][1];
+    const double flow = weights[size_t(e)] * (x[i] - x[j]);
+    result[i] += flow;
+    result[j] -= flow;
+  }
+  return result;
+}
+
 } // namespace meromorph

@@ -27,4 +27,10 @@ std::vector<double> cotan_weights(const Mesh &mesh, const MeshEdges &edges);
 Eigen::SparseMatrix<double> cotan_laplacian(int vertex_count, const MeshEdges &edges,
                                             const std::vector<double> &weights);
 
+// L x summed edge by edge as sum_j w_ij (x_i - x_j): where x varies little about a large value
+// (a crowded part of a map), the differences are exact and the result is accurate relative to
+// them, unlike the matrix product, whose error is relative to x itself.
+Eigen::VectorXd laplacian_of_differences(const MeshEdges &edges, const std::vector<double> &weights,
+                                         const Eigen::VectorXd &x);
+
 } // namespace meromorph

@@ -35,6 +35,7 @@ int best_shaped_face(const Mesh &mesh, const FaceGeometry &geometry) {
 
 Genus0Map genus0_map(const Mesh &mesh, const MeshEdges &edges, const std::vector<double> &weights,
                      SolverKind solver, int puncture_face, const std::vector<char> &raise) {
+  constexpr int refinement_steps = 2;
   Genus0Map out;
   const FaceGeometry geometry = face_geometry(mesh);
   if (puncture_face < 0) puncture_face = best_shaped_face(mesh, geometry);
@@ -80,8 +81,18 @@ Genus0Map genus0_map(const Mesh &mesh, const MeshEdges &edges, const std::vector
 
   // Dirichlet problem: L_free z_free = -L_free,pinned z_pinned.
   const std::unique_ptr<LaplacianSolver> factored = factor_laplacian(laplacian, solver, corners);
-  const Eigen::VectorXd u = factored->solve(-(laplacian * fixed_u)) + fixed_u;
-  const Eigen::VectorXd v = factored->solve(-(laplacian * fixed_v)) + fixed_v;
+  // Long thin parts crowd into spots far smaller than the map's own scale, where one solve's
+  // error (relative to the whole map) can exceed the faces. Iterative refinement with the
+  // residual summed over edge differences (exact there) makes each spot accurate relative to its
+  // own size, down to the spacing of doubles.
+  auto harmonic_extension = [&](const Eigen::VectorXd &fixed) {
+    Eigen::VectorXd x = factored->solve(-(laplacian * fixed)) + fixed;
+    for (int step = 0; step < refinement_steps; ++step)
+      x -= factored->solve(laplacian_of_differences(edges, positive, x));
+    return x;
+  };
+  const Eigen::VectorXd u = harmonic_extension(fixed_u);
+  const Eigen::VectorXd v = harmonic_extension(fixed_v);
 
   // Scale so that the median |z| is 1 (a Moebius scaling; centring comes later).
   std::vector<double> radii(mesh.vert.size());
@@ -98,6 +109,11 @@ Genus0Map genus0_map(const Mesh &mesh, const MeshEdges &edges, const std::vector
     Complex z[3];
     for (int k = 0; k < 3; ++k)
       z[k] = out.values[index_of(mesh, mesh.face[f].cV(k))].w;
+    // A face smaller than about 1e-12 of its distance from 0 is below what doubles resolve: no
+    // weight can unfold it (a better pole can; see parameterization.cpp).
+    const double size = std::max(std::abs(z[1] - z[0]), std::abs(z[2] - z[0]));
+    const double distance = std::max({std::abs(z[0]), std::abs(z[1]), std::abs(z[2])});
+    if (size < 1e-12 * distance) continue;
     if (std::imag(std::conj(z[1] - z[0]) * (z[2] - z[0])) <= 0) out.folded_faces.push_back(int(f));
   }
   return out;

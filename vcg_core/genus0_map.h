@@ -28,7 +28,7 @@ struct Genus0Map {
   std::vector<PlaneValue> values;
   int puncture_face = -1;
   int raised_weights = 0;
-  std::vector<int> folded_faces; // in the plane, before projection
+  std::vector<int> folded_faces; // in the plane, before projection, among faces doubles resolve
 };
 
 // `raise` (one flag per edge; empty: every edge) says which weights get the positive floor: the

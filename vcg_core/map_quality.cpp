@@ -14,6 +14,7 @@ struct FaceMeasure {
   double quasi_conformal;
   double angle_error_degrees;
   bool folded;
+  bool collapsed;
 };
 
 // Triangle corners in a 2D frame of its own plane.
@@ -42,6 +43,7 @@ QualityStatistics summarize(std::vector<FaceMeasure> measures) {
     s.quasi_conformal_mean += m.quasi_conformal;
     s.angle_error_mean_degrees += m.angle_error_degrees;
     s.folded_faces += m.folded;
+    s.collapsed_faces += m.collapsed;
   }
   s.quasi_conformal_mean /= double(measures.size());
   s.angle_error_mean_degrees /= double(measures.size());
@@ -85,7 +87,9 @@ MapQuality measure_map_quality(const Mesh &mesh, const std::vector<Eigen::Vector
       s[k] = sphere[v];
       touches_branch |= near_branch[v] != 0;
     }
-    FaceMeasure m{1.0, 0.0, folded_image(s[0], s[1], s[2])};
+    const double longest_chord =
+        std::max({(s[0] - s[1]).norm(), (s[1] - s[2]).norm(), (s[2] - s[0]).norm()});
+    FaceMeasure m{1.0, 0.0, folded_image(s[0], s[1], s[2]), longest_chord < 1e-14};
     const Eigen::Matrix2d source = frame_edges(p[0], p[1], p[2]);
     const Eigen::Matrix2d image = frame_edges(s[0], s[1], s[2]);
     const Eigen::JacobiSVD<Eigen::Matrix2d> svd(image * source.inverse());

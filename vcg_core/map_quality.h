@@ -7,7 +7,9 @@
 //      difference of the three corner angles in degrees; a face is folded when its image has
 //      non-positive signed spherical area. Statistics overall and for the faces that do not touch
 //      a branch vertex: quasi-conformal mean, 95th percentile and max, mean angle error, folded
-//      count.
+//      count, and the count of collapsed faces, whose image's longest side is below 1e-14 (long
+//      thin parts shrink exponentially under any conformal map; below that, double precision
+//      cannot tell their orientation).
 #pragma once
 
 #include <vector>
@@ -23,6 +25,7 @@ struct QualityStatistics {
   double quasi_conformal_mean = 0, quasi_conformal_p95 = 0, quasi_conformal_max = 0;
   double angle_error_mean_degrees = 0;
   int folded_faces = 0;
+  int collapsed_faces = 0; // image smaller than doubles resolve on the unit sphere (1e-14)
 };
 
 struct MapQuality {

@@ -60,7 +60,8 @@ nlohmann::json statistics_json(const QualityStatistics &s) {
           {"quasi_conformal_p95", s.quasi_conformal_p95},
           {"quasi_conformal_max", s.quasi_conformal_max},
           {"angle_error_mean_degrees", s.angle_error_mean_degrees},
-          {"folded_faces", s.folded_faces}};
+          {"folded_faces", s.folded_faces},
+          {"collapsed_faces", s.collapsed_faces}};
 }
 
 nlohmann::json vector_json(const Eigen::Vector3d &v) {
