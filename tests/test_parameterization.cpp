@@ -201,6 +201,23 @@ TEST(Parameterization, TorusBranchPointsSitAtTheHalfPeriods) {
   }
 }
 
+TEST(Parameterization, ThinToriHaveTwoLayers) {
+  // A thin torus has its branch values in two close pairs at opposite points of the sphere; on a
+  // coarse grid the cuts between a pair are only a face or two wide, and must still separate the
+  // two sheets.
+  struct Case {
+    double major, minor;
+    int resolution;
+  };
+  for (const Case &c : {Case{3, 1, 24}, Case{5, 1, 20}, Case{8, 1, 20}}) {
+    Mesh mesh;
+    make_grid_torus(mesh, c.major, c.minor, int(std::lround(c.resolution * c.major / c.minor)),
+                    c.resolution);
+    const std::string name = "R " + std::to_string(c.major) + " r " + std::to_string(c.minor);
+    expect_valid_map(mesh, parameterize(mesh), 2, name);
+  }
+}
+
 TEST(Parameterization, WithoutMoebiusTheCentroidIsLeftAlone) {
   Mesh mesh;
   make_grid_torus(mesh, 2.0, 1.0, 64, 32);

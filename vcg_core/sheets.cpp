@@ -72,8 +72,18 @@ Sheets label_sheets(const Mesh &mesh, const MeshEdges &edges, const std::vector<
         }
       }
 
-  std::vector<char> cut(face_count, 0);
+  // Faces at a branch vertex always meet its cut (the image of the vertex is where the cut starts;
+  // testing that corner as a point inside the face is at the mercy of rounding).
+  std::vector<char> cut(face_count, 0), at_branch_vertex(mesh.vert.size(), 0);
+  for (int v : branch_vertices)
+    at_branch_vertex[v] = 1;
   for (int f = 0; f < face_count; ++f) {
+    for (int k = 0; k < 3; ++k)
+      if (at_branch_vertex[index_of(mesh, mesh.face[f].cV(k))]) cut[f] = 1;
+    if (cut[f]) {
+      ++out.cut_faces;
+      continue;
+    }
     const Vector &a = corner(f, 0), &b = corner(f, 1), &c = corner(f, 2);
     bool hit = inside(star, a, b, c);
     for (const Vector &value : values) {
