@@ -18,15 +18,14 @@
 namespace meromorph {
 namespace {
 
-// Faces of the centred image that are folded or below double resolution (map_quality.h).
-int unresolved_faces(const Mesh &mesh, std::vector<PlaneValue> values,
-                     const std::vector<double> &areas) {
+// Faces of the centred image below double resolution (map_quality.h).
+int collapsed_faces(const Mesh &mesh, std::vector<PlaneValue> values,
+                    const std::vector<double> &areas) {
   center_on_sphere(values, areas);
   std::vector<Eigen::Vector3d> sphere;
   for (const PlaneValue &value : values)
     sphere.push_back(to_sphere(value));
-  const QualityStatistics quality = measure_map_quality(mesh, sphere, {}).overall;
-  return quality.folded_faces + quality.collapsed_faces;
+  return measure_map_quality(mesh, sphere, {}).overall.collapsed_faces;
 }
 
 } // namespace
@@ -115,11 +114,10 @@ Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &optio
         }
         if (pole_face >= 0) {
           // Where long thin parts shrink below what doubles resolve, a pole in the wrong place
-          // loses more of them: keep the solution whose centred image has fewer folded or
-          // collapsed faces.
+          // loses more of them: keep the first solution if the second collapses more faces.
           Genus0Map again = solve(pole_face);
-          if (unresolved_faces(mesh, again.values, areas) <=
-              unresolved_faces(mesh, map.values, areas))
+          if (collapsed_faces(mesh, again.values, areas) <=
+              collapsed_faces(mesh, map.values, areas))
             map = std::move(again);
         }
       }
