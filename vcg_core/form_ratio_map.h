@@ -2,9 +2,11 @@
 //
 // In:  a mesh, its edges, and the numerator and denominator forms (complex values per edge).
 // Out: per face, F = f_numerator / f_denominator from the local coefficients f of f dz + g dzbar
-//      (the ratio does not depend on the frame); per vertex, the area-weighted mean of the sphere
-//      points of its faces' values, normalized (averaging on the sphere is well behaved at poles),
-//      as a value of the extended plane.
+//      (the ratio does not depend on the frame), a sample at the face's centroid; per vertex, the
+//      value at the vertex itself: F = a + b z fitted to its faces' samples (z: centroid offsets
+//      in the tangent plane, F in a chart of the sphere at their area-weighted mean), a value of
+//      the extended plane. Where the fit would extrapolate (more than half the samples' spread
+//      from their mean) the mean itself is taken.
 #pragma once
 
 #include <vector>
