@@ -168,6 +168,7 @@ bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
   meromorph_get_distortion(result, &distortion);
   const int genus = meromorph_genus(result), degree = meromorph_degree(result);
   const bool riemann_hurwitz = meromorph_riemann_hurwitz_ok(result) != 0;
+  const std::string advice = meromorph_advice(result);
   meromorph_result_free(result);
 
   model->updateDataMask(MeshModel::MM_VERTTEXCOORD | MeshModel::MM_VERTQUALITY);
@@ -216,8 +217,10 @@ bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
       distortion.angle_error_mean_degrees, distortion.quasi_conformal_mean,
       int(distortion.folded_faces_away_from_branch_points), (long long)timer.elapsed());
   if (!riemann_hurwitz)
-    Log(GLLogStream::WARNING, "Riemann-Hurwitz does not hold: the branch points or the degree were "
-                              "not measured reliably on this mesh");
+    Log(GLLogStream::WARNING,
+        "Riemann-Hurwitz does not hold: the branch points or the degree were not measured "
+        "reliably on this mesh: %s",
+        advice.c_str());
   return true;
 }
 

@@ -71,6 +71,8 @@ int main(void) {
   CHECK(meromorph_genus(result) == 1);
   CHECK(meromorph_degree(result) == 2);
   CHECK(meromorph_riemann_hurwitz_ok(result) == 1);
+  CHECK(meromorph_advice(result) != NULL && meromorph_advice(result)[0] == '\0');
+  CHECK(meromorph_advice(NULL) != NULL);
   CHECK(meromorph_vertex_count(result) == V);
   CHECK(meromorph_triangle_count(result) == F);
 

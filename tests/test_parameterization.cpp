@@ -258,6 +258,7 @@ TEST(ParamCommand, WritesSurfaceSphereAndReport) {
   EXPECT_EQ(report["degree"], 2);
   EXPECT_TRUE(report["riemann_hurwitz_ok"].get<bool>());
   EXPECT_EQ(report["branch_points"].size(), 6u);
+  EXPECT_FALSE(report.contains("advice")) << "advice only when Riemann-Hurwitz fails";
   for (const char *key : {"euler", "method", "mobius", "distortion", "repairs", "timings_ms",
                           "version", "riemann_matrix"})
     EXPECT_TRUE(report.contains(key)) << key;
@@ -291,6 +292,7 @@ TEST(ParamCommand, WritesSurfaceSphereAndReport) {
       {"param", dir.path("g3.ply"), "-o", dir.path("g3.uv.ply"), "--quiet", "--forms", "0,2"});
   EXPECT_EQ(loose.exit_code, 0) << loose.err;
   EXPECT_NE(loose.err.find("Riemann-Hurwitz does not hold"), std::string::npos) << loose.err;
+  EXPECT_NE(loose.err.find("use the default generic pair"), std::string::npos) << loose.err;
   const test::RunResult strict =
       test::run_cli({"param", dir.path("g3.ply"), "-o", dir.path("g3.uv.ply"), "--quiet", "--forms",
                      "0,2", "--strict"});

@@ -164,6 +164,9 @@ int meromorph_degree(const meromorph_result *r) {
 int meromorph_riemann_hurwitz_ok(const meromorph_result *r) {
   return r ? r->map.riemann_hurwitz_ok : 0;
 }
+const char *meromorph_advice(const meromorph_result *r) {
+  return r ? r->map.advice.c_str() : "";
+}
 
 #define MEROMORPH_CHECK(result, buffer)                                                            \
   if (!(result)) return fail(MEROMORPH_ERROR_ARGUMENT, "result is NULL");                          \

@@ -75,6 +75,9 @@ MEROMORPH_API size_t meromorph_triangle_count(const meromorph_result *result);
 MEROMORPH_API int meromorph_genus(const meromorph_result *result);
 MEROMORPH_API int meromorph_degree(const meromorph_result *result);
 MEROMORPH_API int meromorph_riemann_hurwitz_ok(const meromorph_result *result);
+/* When Riemann-Hurwitz fails: the likely causes and what to do ("" otherwise); owned by the
+   result. */
+MEROMORPH_API const char *meromorph_advice(const meromorph_result *result);
 
 /* Buffers are the caller's: 3 per vertex, 2 per vertex, 6 per triangle, 1 per vertex. */
 MEROMORPH_API meromorph_status meromorph_sphere_positions(const meromorph_result *result,

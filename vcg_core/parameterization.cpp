@@ -28,6 +28,36 @@ int collapsed_faces(const Mesh &mesh, std::vector<PlaneValue> values,
   return measure_map_quality(mesh, sphere, {}).overall.collapsed_faces;
 }
 
+// What a user can do when Riemann-Hurwitz fails, from what this mesh and map show.
+std::string riemann_hurwitz_advice(const Mesh &mesh, const ParameterizeOptions &options,
+                                   const Parameterization &map) {
+  std::vector<std::string> causes;
+  if (map.quality.overall.collapsed_faces > 0)
+    causes.push_back(std::to_string(map.quality.overall.collapsed_faces) +
+                     " faces map to spots smaller than double precision resolves: long thin parts "
+                     "shrink exponentially under a conformal map (shorten or thicken them, or "
+                     "map them separately)");
+  int needles = 0;
+  for (const MeshFace &face : mesh.face)
+    needles += smallest_angle(face) < M_PI / 180;
+  if (needles > 0)
+    causes.push_back(std::to_string(needles) +
+                     " faces have an angle below 1 degree: remesh the surface (MeshLab: Filters > "
+                     "Remeshing, Simplification and Reconstruction > Remeshing: Isotropic Explicit "
+                     "Remeshing; Blender: Remesh modifier) and run again");
+  if (map.genus >= 2 && options.form_pair[0] >= 0)
+    causes.push_back("the chosen form pair may be nearly 0 / 0 on parts of this surface: use the "
+                     "default generic pair (--forms -1,-1)");
+  if (causes.empty())
+    causes.push_back("the mesh may be too coarse near the branch points: refine it (MeshLab: "
+                     "Filters > Remeshing, Simplification and Reconstruction > Subdivision "
+                     "Surfaces: Midpoint; Blender: Subdivide) and run again");
+  std::string advice;
+  for (const std::string &cause : causes)
+    advice += (advice.empty() ? "" : "; ") + cause;
+  return advice;
+}
+
 } // namespace
 
 Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &options,
@@ -274,6 +304,7 @@ Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &optio
   progress.report(0.9, "texture coordinates and distortion");
   out.uv = texture_coordinates(mesh, out.sphere, options.uv);
   out.quality = measure_map_quality(mesh, out.sphere, branching.branch_vertices);
+  if (!out.riemann_hurwitz_ok) out.advice = riemann_hurwitz_advice(mesh, options, out);
   lap("texture_and_quality");
   progress.report(1.0, "done");
   return out;

@@ -77,6 +77,9 @@ struct Parameterization {
   std::array<int, 2> form_pair{-1, -1};
   FormPair form_coefficients; // genus >= 2: a_k, b_k of the pair used (form_pairs.h)
   int pair_attempts = 0;      // genus >= 2: pairs tried until one was generic
+  // When Riemann-Hurwitz fails: the likely causes found on this mesh and what to do, in the words
+  // of a MeshLab or Blender user; empty otherwise.
+  std::string advice;
 };
 
 Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &options = {},

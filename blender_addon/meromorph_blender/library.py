@@ -58,6 +58,8 @@ def load():
         lib.meromorph_last_error.restype = ctypes.c_char_p
         lib.meromorph_version.restype = ctypes.c_char_p
         lib.meromorph_report_json.restype = ctypes.c_char_p
+        lib.meromorph_advice.restype = ctypes.c_char_p
+        lib.meromorph_advice.argtypes = [ctypes.c_void_p]
         lib.meromorph_parameterize_f.argtypes = [
             ctypes.c_void_p, ctypes.c_size_t, ctypes.c_void_p, ctypes.c_size_t,
             ctypes.POINTER(Options), ctypes.POINTER(ctypes.c_void_p)]
@@ -123,6 +125,7 @@ def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
         out["genus"] = lib.meromorph_genus(result)
         out["degree"] = lib.meromorph_degree(result)
         out["riemann_hurwitz_ok"] = bool(lib.meromorph_riemann_hurwitz_ok(result))
+        out["advice"] = lib.meromorph_advice(result).decode("utf-8", "replace")
         out["report"] = json.loads(lib.meromorph_report_json(result).decode("utf-8"))
         return out
     finally:

@@ -130,7 +130,8 @@ class MESH_OT_conformal_sphere_map(bpy.types.Operator):
                     "%.2f s%s" % (obj.name, result["genus"], result["degree"], len(branch),
                                   result["angle_error"], elapsed,
                                   "" if result["riemann_hurwitz_ok"]
-                                  else "; WARNING: Riemann-Hurwitz does not hold"))
+                                  else "; WARNING: Riemann-Hurwitz does not hold: "
+                                  + result["advice"]))
         return {"FINISHED"}
 
     def make_sphere_object(self, context, obj, result):

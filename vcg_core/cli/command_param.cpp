@@ -109,12 +109,7 @@ int run_param(const ParamOptions &options) {
     std::cerr << "meromorph: warning: Riemann-Hurwitz does not hold: chi = " << map.euler
               << " but 2 * degree - ramification = " << 2 * map.degree - map.ramification
               << " (image area " << map.area_over_4pi << " x 4 pi); the branch points or the "
-              << "degree were not measured reliably on this mesh";
-    if (map.quality.overall.collapsed_faces > 0)
-      std::cerr << ": " << map.quality.overall.collapsed_faces
-                << " faces map to spots smaller than double precision resolves (long thin parts "
-                << "shrink exponentially under a conformal map)";
-    std::cerr << "\n";
+              << "degree were not measured reliably on this mesh: " << map.advice << "\n";
     if (options.strict) return int(ExitCode::internal_failure);
   }
   return int(ExitCode::done);
