@@ -183,6 +183,46 @@ int snap_branch_points(const Mesh &mesh, const MeshEdges &edges,
       return score;
     };
 
+    // How many critical points the spot holds: each folded face around it stands for a turn that
+    // its vertices' windings miss (over a closed surface, the sum of e - 1 plus the folded faces
+    // is 2d - chi). None: a vertex value strays (next to needle-shaped faces, say); smooth the
+    // spot's values towards their neighbours' instead.
+    int critical_points = 0;
+    {
+      std::set<int> spot_faces;
+      for (int v : spot) {
+        critical_points += winding(in, sphere, v) - 1;
+        spot_faces.insert(in.faces_of_vertex[v].begin(), in.faces_of_vertex[v].end());
+      }
+      for (int f : spot_faces) {
+        const auto &c = in.corners[f];
+        critical_points += folded_image(sphere[c[0]], sphere[c[1]], sphere[c[2]]);
+      }
+    }
+    if (critical_points <= 0) {
+      std::vector<std::pair<int, Eigen::Vector3d>> original;
+      for (int v : spot)
+        original.push_back({v, sphere[v]});
+      const Score before = score_region(-1);
+      for (int round = 0; round < 4; ++round)
+        for (int v : spot) {
+          Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+          for (int f : in.faces_of_vertex[v])
+            for (int w : in.corners[f])
+              if (w != v) mean += sphere[w];
+          sphere[v] = mean.normalized();
+        }
+      if (score_region(-1) < before) {
+        for (int v : spot)
+          plane_values[v] = to_plane_value(sphere[v]);
+        ++repaired;
+      } else {
+        for (const auto &[v, point] : original)
+          sphere[v] = point;
+      }
+      continue;
+    }
+
     // The coordinate: the integral of the form that is larger near the spot (far from its zeros).
     const Eigen::VectorXcd *form = coordinate_forms.front();
     double largest = -1;

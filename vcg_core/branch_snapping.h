@@ -10,8 +10,11 @@
 //      small local shift of the surface that takes a vertex v near p onto p: within one ring of v
 //      the values become Q(z + p - z_v) (v gets the critical value c), fading to the measured
 //      values over the next rings. Of the vertices nearest p, the one that leaves the fewest
-//      folded or flat faces wins, if that improves on leaving the spot alone. Returns how many
-//      spots were repaired.
+//      folded or flat faces wins, if that improves on leaving the spot alone. A spot whose windings
+//      and folded faces add up to no critical point (sum of e - 1 plus folded faces <= 0) has a
+//      stray vertex value instead (next to needle-shaped faces): its values are smoothed towards
+//      their neighbours', if that leaves fewer folded faces. Returns how many spots were
+//      repaired.
 #pragma once
 
 #include <vector>
