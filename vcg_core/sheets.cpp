@@ -1,6 +1,7 @@
 #include "sheets.h"
 
 #include <algorithm>
+#include <array>
 #include <numeric>
 #include <queue>
 
@@ -52,54 +53,89 @@ Sheets label_sheets(const Mesh &mesh, const MeshEdges &edges, const std::vector<
     return out;
   }
 
-  // Branch values, and the star point: the direction farthest from all of them.
+  // Branch values, joined by their minimum spanning tree of great-circle arcs: the sphere minus a
+  // tree through every branch value is a disc, so its preimage falls into d sheets; the shortest
+  // tree cuts the fewest faces.
   std::vector<Vector> values;
   for (int v : branch_vertices)
     values.push_back(sphere[v]);
-  Vector star(0, 0, 1);
-  double best = -2;
-  for (int i = -2; i <= 2; ++i)
-    for (int j = -2; j <= 2; ++j)
-      for (int k = -2; k <= 2; ++k) {
-        if (!i && !j && !k) continue;
-        const Vector candidate = Vector(i + 0.123, j + 0.0456, k + 0.0789).normalized();
-        double nearest = 2;
-        for (const Vector &b : values)
-          nearest = std::min(nearest, 1 - candidate.dot(b));
-        if (nearest > best) {
-          best = nearest;
-          star = candidate;
+  std::vector<std::array<int, 2>> arcs;
+  {
+    const size_t n = values.size();
+    std::vector<char> joined(n, 0);
+    std::vector<double> distance(n, 1e300);
+    std::vector<int> parent(n, -1);
+    distance[0] = 0;
+    for (size_t step = 0; step < n; ++step) {
+      size_t next = n;
+      for (size_t i = 0; i < n; ++i)
+        if (!joined[i] && (next == n || distance[i] < distance[next])) next = i;
+      joined[next] = 1;
+      if (parent[next] >= 0) arcs.push_back({parent[next], int(next)});
+      for (size_t i = 0; i < n; ++i) {
+        const double d = (values[i] - values[next]).norm();
+        if (!joined[i] && d < distance[i]) {
+          distance[i] = d;
+          parent[i] = int(next);
         }
       }
-
-  // Faces at a branch vertex always meet its cut (the image of the vertex is where the cut starts;
-  // testing that corner as a point inside the face is at the mercy of rounding).
-  std::vector<char> cut(face_count, 0), at_branch_vertex(mesh.vert.size(), 0);
-  for (int v : branch_vertices)
-    at_branch_vertex[v] = 1;
-  for (int f = 0; f < face_count; ++f) {
-    for (int k = 0; k < 3; ++k)
-      if (at_branch_vertex[index_of(mesh, mesh.face[f].cV(k))]) cut[f] = 1;
-    if (cut[f]) {
-      ++out.cut_faces;
-      continue;
     }
-    const Vector &a = corner(f, 0), &b = corner(f, 1), &c = corner(f, 2);
-    bool hit = inside(star, a, b, c);
-    for (const Vector &value : values) {
-      if (hit) break;
-      hit = inside(value, a, b, c) || arcs_cross(a, b, value, star) ||
-            arcs_cross(b, c, value, star) || arcs_cross(c, a, value, star);
-    }
-    cut[f] = hit || folded_image(a, b, c);
-    out.cut_faces += cut[f];
   }
 
-  // Components of the uncut faces.
+  // Two faces lie on the same sheet where the image of their shared edge crosses no cut. Faces at
+  // a branch vertex are set apart (cuts start at their corner, and a branch point doubles their
+  // angles there: the image of the opposite side can span half a turn, too much for a minor arc),
+  // faces whose image holds a branch value (where flat faces next to a branch vertex leave a
+  // gap, a cut starts inside another face), and folded faces (they have no side). Faces whose image
+  // meets a cut are counted
+  // (`cut_faces`).
+  std::vector<char> at_branch_vertex(mesh.vert.size(), 0);
+  for (int v : branch_vertices)
+    at_branch_vertex[v] = 1;
+  // A vertex whose image lies on a cut (symmetric meshes map whole rows of vertices onto the arcs
+  // between branch values) leaves it to rounding which side its edges are on: those are cut.
+  std::vector<char> on_cut(mesh.vert.size(), 0);
+  for (size_t v = 0; v < mesh.vert.size(); ++v)
+    for (const auto &arc : arcs) {
+      const Vector &p = values[size_t(arc[0])], &q = values[size_t(arc[1])];
+      const Vector normal = p.cross(q);
+      const double length = normal.norm();
+      if (length > 0 && std::abs(sphere[v].dot(normal)) < 1e-12 * length && on_arc(sphere[v], p, q))
+        on_cut[v] = 1;
+    }
+  // `crossing`: the edge's image crosses a cut, or may (it starts on one); `edge_cut` adds the
+  // edges of the faces set apart.
+  std::vector<char> crossing(edges.vertices.size(), 0);
+  for (size_t e = 0; e < edges.vertices.size(); ++e) {
+    const int i = edges.vertices[e][0], j = edges.vertices[e][1];
+    crossing[e] = at_branch_vertex[i] || at_branch_vertex[j] || on_cut[i] || on_cut[j];
+    for (const auto &arc : arcs)
+      crossing[e] = crossing[e] || arcs_cross(sphere[i], sphere[j], values[size_t(arc[0])],
+                                              values[size_t(arc[1])]);
+  }
+  std::vector<char> edge_cut = crossing;
+  for (int f = 0; f < face_count; ++f) {
+    bool at_branch = false;
+    for (int k = 0; k < 3; ++k)
+      at_branch = at_branch || at_branch_vertex[index_of(mesh, mesh.face[f].cV(k))];
+    const Vector &a = corner(f, 0), &b = corner(f, 1), &c = corner(f, 2);
+    bool holds_value = false;
+    for (const Vector &value : values)
+      holds_value = holds_value || inside(value, a, b, c);
+    if (at_branch || holds_value || folded_image(a, b, c))
+      for (int e : edges.face_edges[f])
+        edge_cut[e] = 1;
+  }
+  for (int f = 0; f < face_count; ++f) {
+    const auto &sides = edges.face_edges[f];
+    out.cut_faces += edge_cut[sides[0]] || edge_cut[sides[1]] || edge_cut[sides[2]];
+  }
+
+  // Components of faces joined across uncut edges.
   std::vector<int> component(face_count, -1);
   std::vector<double> component_area;
   for (int seed = 0; seed < face_count; ++seed) {
-    if (cut[seed] || component[seed] >= 0) continue;
+    if (component[seed] >= 0) continue;
     const int id = int(component_area.size());
     component_area.push_back(0);
     std::queue<int> queue;
@@ -111,7 +147,7 @@ Sheets label_sheets(const Mesh &mesh, const MeshEdges &edges, const std::vector<
       component_area[id] += areas[f];
       for (int e : edges.face_edges[f]) {
         const int g = edges.faces[e][0] == f ? edges.faces[e][1] : edges.faces[e][0];
-        if (!cut[g] && component[g] < 0) {
+        if (!edge_cut[e] && component[g] < 0) {
           component[g] = id;
           queue.push(g);
         }
@@ -130,18 +166,21 @@ Sheets label_sheets(const Mesh &mesh, const MeshEdges &edges, const std::vector<
   std::queue<int> frontier;
   std::vector<int> face_layer(face_count, -1);
   for (int f = 0; f < face_count; ++f)
-    if (component[f] >= 0 && layer_of[component[f]] >= 0) {
-      face_layer[f] = layer_of[component[f]];
-      frontier.push(f);
-    }
-  while (!frontier.empty()) {
-    const int f = frontier.front();
-    frontier.pop();
-    for (int e : edges.face_edges[f]) {
-      const int g = edges.faces[e][0] == f ? edges.faces[e][1] : edges.faces[e][0];
-      if (face_layer[g] < 0) {
-        face_layer[g] = face_layer[f];
-        frontier.push(g);
+    if (component[f] >= 0 && layer_of[component[f]] >= 0) face_layer[f] = layer_of[component[f]];
+  // The faces set apart join their sheets across edges whose image crosses no cut first, so that a
+  // strip between two close cuts goes to the sheet it continues; what is left, across any edge.
+  for (const bool across_cuts : {false, true}) {
+    for (int f = 0; f < face_count; ++f)
+      if (face_layer[f] >= 0) frontier.push(f);
+    while (!frontier.empty()) {
+      const int f = frontier.front();
+      frontier.pop();
+      for (int e : edges.face_edges[f]) {
+        const int g = edges.faces[e][0] == f ? edges.faces[e][1] : edges.faces[e][0];
+        if (face_layer[g] < 0 && (across_cuts || !crossing[e])) {
+          face_layer[g] = face_layer[f];
+          frontier.push(g);
+        }
       }
     }
   }

@@ -1,12 +1,13 @@
 // Layers (sheets) of a degree-d map: the preimage of the sphere cut along branch cuts.
 //
 // In:  a mesh, its edges, the sphere position per vertex, the branch vertices, the degree.
-// Out: cuts are great-circle arcs from every branch value to one point far from all of them (a
-//      star, so the cut sphere is simply connected and holds no branch value: its preimage falls
-//      into d sheets). Faces whose image meets a cut are set aside; the others are flood-filled
-//      across shared edges into components, the d largest are the sheets, and the set-aside faces
-//      join a neighbouring sheet. Per face and per vertex a layer 0..d-1, and the signed area of
-//      each layer over 4 pi (about 1 when each layer covers the sphere once).
+// Out: cuts are the great-circle arcs of the minimum spanning tree of the branch values (the sphere
+//      minus a tree through every branch value is a disc, which holds no branch value: its
+//      preimage falls into d sheets; the shortest tree cuts the fewest faces). Faces whose image
+//      meets a cut are set aside; the others are flood-filled across shared edges into components,
+//      the d largest are the sheets, and the set-aside faces join a neighbouring sheet. Per face
+//      and per vertex a layer 0..d-1, and the signed area of each layer over 4 pi (about 1 when
+//      each layer covers the sphere once).
 #pragma once
 
 #include <vector>
