@@ -3,11 +3,13 @@
 // In:  a mesh, its edges, the sphere position per vertex, the branch vertices, the degree.
 // Out: cuts are the great-circle arcs of the minimum spanning tree of the branch values (the sphere
 //      minus a tree through every branch value is a disc, which holds no branch value: its
-//      preimage falls into d sheets; the shortest tree cuts the fewest faces). Faces whose image
-//      meets a cut are set aside; the others are flood-filled across shared edges into components,
-//      the d largest are the sheets, and the set-aside faces join a neighbouring sheet. Per face
-//      and per vertex a layer 0..d-1, and the signed area of each layer over 4 pi (about 1 when
-//      each layer covers the sphere once).
+//      preimage falls into d sheets; the shortest tree cuts the fewest faces). Faces are joined
+//      across edges whose image crosses no cut into components, the d largest being the sheets.
+//      Faces at a branch vertex, faces whose image holds a branch value and folded faces are set
+//      apart, as are edges from a vertex whose image lies on a cut; they join the sheet they
+//      continue across an uncut edge, or else any neighbour's. Per face and per vertex a layer
+//      0..d-1, and the signed area of each layer over 4 pi (about 1 when each layer covers the
+//      sphere once).
 #pragma once
 
 #include <vector>
