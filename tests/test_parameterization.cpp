@@ -27,7 +27,7 @@ void expect_valid_map(const Mesh &mesh, const Parameterization &map, int degree,
   EXPECT_EQ(map.euler, 2 * map.degree - map.ramification) << name;
   EXPECT_EQ(map.sheets.count, degree) << name;
   for (double coverage : map.sheets.coverage)
-    EXPECT_NEAR(coverage, 1.0, 0.05) << name;
+    EXPECT_NEAR(coverage, 1.0, 0.025) << name;
   EXPECT_EQ(map.quality.away_from_branch_points.folded_faces, 0) << name;
   // Moebius centring: the area-weighted centroid of the image is the origin.
   EXPECT_LT(centroid(map.sphere, vertex_areas(mesh)).norm(), 1e-6) << name;
