@@ -54,19 +54,18 @@ HolomorphicForms compute_holomorphic_forms(const Mesh &mesh, SolverKind solver,
   progress.report(0.0, "edges and cotangent weights");
   out.edges = build_mesh_edges(mesh);
   out.weights = cotan_weights(mesh, out.edges);
-  const Eigen::SparseMatrix<double> laplacian =
-      cotan_laplacian(vertex_count, out.edges, out.weights);
   clock.done("laplacian");
 
-  progress.report(0.1, "factoring the Laplacian");
-  const std::unique_ptr<LaplacianSolver> factored = factor_laplacian(laplacian, solver);
-  clock.done("factorization");
-
-  progress.report(0.5, "homology basis");
+  progress.report(0.1, "homology basis");
   out.homology = tree_cotree(mesh, out.edges);
   out.genus = out.homology.genus;
   clock.done("homology");
-  if (out.genus == 0) return out;
+  if (out.genus == 0) return out; // no forms: nothing to factor
+
+  progress.report(0.2, "factoring the Laplacian");
+  const std::unique_ptr<LaplacianSolver> factored =
+      factor_laplacian(cotan_laplacian(vertex_count, out.edges, out.weights), solver);
+  clock.done("factorization");
 
   progress.report(0.6, "harmonic forms");
   out.harmonic =
