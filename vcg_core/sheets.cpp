@@ -36,59 +36,82 @@ bool inside(const Vector &x, const Vector &a, const Vector &b, const Vector &c) 
 
 } // namespace
 
-Sheets label_sheets(const Mesh &mesh, const MeshEdges &edges, const std::vector<Vector> &sphere,
-                    const std::vector<int> &branch_vertices, int degree) {
+namespace {
+
+// A tree on the sphere through every branch value: its nodes and its arcs (pairs of node indices).
+struct CutTree {
+  std::vector<Vector> nodes;
+  std::vector<std::array<int, 2>> arcs;
+};
+
+// The minimum spanning tree of the branch values: the shortest tree, so the fewest faces cut.
+CutTree minimum_spanning_tree(const std::vector<Vector> &values) {
+  CutTree tree{values, {}};
+  const size_t n = values.size();
+  std::vector<char> joined(n, 0);
+  std::vector<double> distance(n, 1e300);
+  std::vector<int> parent(n, -1);
+  distance[0] = 0;
+  for (size_t step = 0; step < n; ++step) {
+    size_t next = n;
+    for (size_t i = 0; i < n; ++i)
+      if (!joined[i] && (next == n || distance[i] < distance[next])) next = i;
+    joined[next] = 1;
+    if (parent[next] >= 0) tree.arcs.push_back({parent[next], int(next)});
+    for (size_t i = 0; i < n; ++i) {
+      const double d = (values[i] - values[next]).norm();
+      if (!joined[i] && d < distance[i]) {
+        distance[i] = d;
+        parent[i] = int(next);
+      }
+    }
+  }
+  return tree;
+}
+
+// A star: every branch value joined to the direction farthest from all of them.
+CutTree star_tree(const std::vector<Vector> &values) {
+  Vector star(0, 0, 1);
+  double best = -2;
+  for (int i = -2; i <= 2; ++i)
+    for (int j = -2; j <= 2; ++j)
+      for (int k = -2; k <= 2; ++k) {
+        if (!i && !j && !k) continue;
+        const Vector candidate = Vector(i + 0.123, j + 0.0456, k + 0.0789).normalized();
+        double nearest = 2;
+        for (const Vector &b : values)
+          nearest = std::min(nearest, 1 - candidate.dot(b));
+        if (nearest > best) {
+          best = nearest;
+          star = candidate;
+        }
+      }
+  CutTree tree{values, {}};
+  tree.nodes.push_back(star);
+  for (size_t i = 0; i < values.size(); ++i)
+    tree.arcs.push_back({int(i), int(values.size())});
+  return tree;
+}
+
+// Layers of a degree-d map (d >= 2) cut along `tree`.
+Sheets label_with_cuts(const Mesh &mesh, const MeshEdges &edges, const std::vector<Vector> &sphere,
+                       const std::vector<int> &branch_vertices, int degree,
+                       const std::vector<double> &areas, const CutTree &tree) {
   Sheets out;
   const int face_count = int(mesh.face.size());
-  out.face_layer.assign(face_count, 0);
   out.vertex_layer.assign(mesh.vert.size(), 0);
   auto corner = [&](int f, int k) -> const Vector & {
     return sphere[index_of(mesh, mesh.face[f].cV(k))];
   };
-  const std::vector<double> areas = face_solid_angles(mesh, sphere);
-
-  if (degree <= 1 || branch_vertices.empty()) {
-    out.count = 1;
-    out.coverage = {std::accumulate(areas.begin(), areas.end(), 0.0) / (4 * M_PI)};
-    return out;
-  }
-
-  // Branch values, joined by their minimum spanning tree of great-circle arcs: the sphere minus a
-  // tree through every branch value is a disc, so its preimage falls into d sheets; the shortest
-  // tree cuts the fewest faces.
-  std::vector<Vector> values;
-  for (int v : branch_vertices)
-    values.push_back(sphere[v]);
-  std::vector<std::array<int, 2>> arcs;
-  {
-    const size_t n = values.size();
-    std::vector<char> joined(n, 0);
-    std::vector<double> distance(n, 1e300);
-    std::vector<int> parent(n, -1);
-    distance[0] = 0;
-    for (size_t step = 0; step < n; ++step) {
-      size_t next = n;
-      for (size_t i = 0; i < n; ++i)
-        if (!joined[i] && (next == n || distance[i] < distance[next])) next = i;
-      joined[next] = 1;
-      if (parent[next] >= 0) arcs.push_back({parent[next], int(next)});
-      for (size_t i = 0; i < n; ++i) {
-        const double d = (values[i] - values[next]).norm();
-        if (!joined[i] && d < distance[i]) {
-          distance[i] = d;
-          parent[i] = int(next);
-        }
-      }
-    }
-  }
+  const std::vector<Vector> &nodes = tree.nodes;
+  const std::vector<std::array<int, 2>> &arcs = tree.arcs;
 
   // Two faces lie on the same sheet where the image of their shared edge crosses no cut. Faces at
   // a branch vertex are set apart (cuts start at their corner, and a branch point doubles their
   // angles there: the image of the opposite side can span half a turn, too much for a minor arc),
-  // faces whose image holds a branch value (where flat faces next to a branch vertex leave a
-  // gap, a cut starts inside another face), and folded faces (they have no side). Faces whose image
-  // meets a cut are counted
-  // (`cut_faces`).
+  // faces whose image holds a node of the tree (a branch value: where flat faces next to a branch
+  // vertex leave a gap, a cut starts inside another face; or a star's centre), and folded faces
+  // (they have no side). Faces whose image meets a cut are counted (`cut_faces`).
   std::vector<char> at_branch_vertex(mesh.vert.size(), 0);
   for (int v : branch_vertices)
     at_branch_vertex[v] = 1;
@@ -97,7 +120,7 @@ Sheets label_sheets(const Mesh &mesh, const MeshEdges &edges, const std::vector<
   std::vector<char> on_cut(mesh.vert.size(), 0);
   for (size_t v = 0; v < mesh.vert.size(); ++v)
     for (const auto &arc : arcs) {
-      const Vector &p = values[size_t(arc[0])], &q = values[size_t(arc[1])];
+      const Vector &p = nodes[size_t(arc[0])], &q = nodes[size_t(arc[1])];
       const Vector normal = p.cross(q);
       const double length = normal.norm();
       if (length > 0 && std::abs(sphere[v].dot(normal)) < 1e-12 * length && on_arc(sphere[v], p, q))
@@ -110,8 +133,8 @@ Sheets label_sheets(const Mesh &mesh, const MeshEdges &edges, const std::vector<
     const int i = edges.vertices[e][0], j = edges.vertices[e][1];
     crossing[e] = at_branch_vertex[i] || at_branch_vertex[j] || on_cut[i] || on_cut[j];
     for (const auto &arc : arcs)
-      crossing[e] = crossing[e] || arcs_cross(sphere[i], sphere[j], values[size_t(arc[0])],
-                                              values[size_t(arc[1])]);
+      crossing[e] = crossing[e] ||
+                    arcs_cross(sphere[i], sphere[j], nodes[size_t(arc[0])], nodes[size_t(arc[1])]);
   }
   std::vector<char> edge_cut = crossing;
   for (int f = 0; f < face_count; ++f) {
@@ -120,8 +143,8 @@ Sheets label_sheets(const Mesh &mesh, const MeshEdges &edges, const std::vector<
       at_branch = at_branch || at_branch_vertex[index_of(mesh, mesh.face[f].cV(k))];
     const Vector &a = corner(f, 0), &b = corner(f, 1), &c = corner(f, 2);
     bool holds_value = false;
-    for (const Vector &value : values)
-      holds_value = holds_value || inside(value, a, b, c);
+    for (const Vector &node : nodes)
+      holds_value = holds_value || inside(node, a, b, c);
     if (at_branch || holds_value || folded_image(a, b, c))
       for (int e : edges.face_edges[f])
         edge_cut[e] = 1;
@@ -198,6 +221,41 @@ Sheets label_sheets(const Mesh &mesh, const MeshEdges &edges, const std::vector<
     out.vertex_layer[v] =
         int(std::max_element(votes[v].begin(), votes[v].end()) - votes[v].begin());
   return out;
+}
+
+} // namespace
+
+Sheets label_sheets(const Mesh &mesh, const MeshEdges &edges, const std::vector<Vector> &sphere,
+                    const std::vector<int> &branch_vertices, int degree) {
+  const std::vector<double> areas = face_solid_angles(mesh, sphere);
+  if (degree <= 1 || branch_vertices.empty()) {
+    Sheets out;
+    out.count = 1;
+    out.face_layer.assign(mesh.face.size(), 0);
+    out.vertex_layer.assign(mesh.vert.size(), 0);
+    out.coverage = {std::accumulate(areas.begin(), areas.end(), 0.0) / (4 * M_PI)};
+    return out;
+  }
+  // Cut along the shortest tree; where its layers do not each cover the sphere once (a sheet that
+  // comes out in two pieces, seen with nearly equal branch values), along a star as well, and keep
+  // the better.
+  std::vector<Vector> values;
+  for (int v : branch_vertices)
+    values.push_back(sphere[v]);
+  auto worst = [](const Sheets &sheets) {
+    double deviation = 0;
+    for (double c : sheets.coverage)
+      deviation = std::max(deviation, std::abs(c - 1));
+    return deviation;
+  };
+  Sheets sheets = label_with_cuts(mesh, edges, sphere, branch_vertices, degree, areas,
+                                  minimum_spanning_tree(values));
+  if (worst(sheets) > 0.02) {
+    Sheets star =
+        label_with_cuts(mesh, edges, sphere, branch_vertices, degree, areas, star_tree(values));
+    if (worst(star) < worst(sheets)) sheets = std::move(star);
+  }
+  return sheets;
 }
 
 } // namespace meromorph
