@@ -262,9 +262,10 @@ int snap_branch_points(const Mesh &mesh, const MeshEdges &edges,
     const Complex c = abc[0] - abc[1] * abc[1] / (4.0 * abc[2]);
     auto model = [&](Complex x) { return abc[0] + x * (abc[1] + x * abc[2]); };
 
-    // Candidates: the vertices nearest p. Each is tried with the map composed with the shift
-    // z -> z + t (p - z_v), t = 1 - ring / R at the vertices R - 1 rings or less from v (R = 1: v
-    // alone takes c); the fold-free one that distorts angles least wins.
+    // Candidates: the 12 vertices nearest p (a corner of 90 degrees or more at a branch vertex
+    // turns its face over, so the nearest are not always usable). Each is tried with the map
+    // composed with the shift z -> z + t (p - z_v), t = 1 - ring / R at the vertices R - 1 rings or
+    // less from v (R = 1: v alone takes c); the fold-free one that distorts angles least wins.
     std::vector<std::pair<double, int>> by_distance;
     for (int v : fitted)
       by_distance.push_back({std::abs(z[v] - p), v});
@@ -272,7 +273,7 @@ int snap_branch_points(const Mesh &mesh, const MeshEdges &edges,
     Score best = score_region(-1);
     std::vector<std::pair<int, Eigen::Vector3d>> best_change;
     for (int shift_rings = 1; shift_rings <= max_shift_rings; ++shift_rings)
-      for (size_t i = 0; i < std::min<size_t>(6, by_distance.size()); ++i) {
+      for (size_t i = 0; i < std::min<size_t>(12, by_distance.size()); ++i) {
         const int v = by_distance[i].second;
         const Complex shift = p - z[v];
         std::vector<std::pair<int, Eigen::Vector3d>> change, original;
