@@ -87,9 +87,7 @@ MapQuality measure_map_quality(const Mesh &mesh, const std::vector<Eigen::Vector
       s[k] = sphere[v];
       touches_branch |= near_branch[v] != 0;
     }
-    const double longest_chord =
-        std::max({(s[0] - s[1]).norm(), (s[1] - s[2]).norm(), (s[2] - s[0]).norm()});
-    FaceMeasure m{1.0, 0.0, folded_image(s[0], s[1], s[2]), longest_chord < 1e-14};
+    FaceMeasure m{1.0, 0.0, folded_image(s[0], s[1], s[2]), collapsed_image(s[0], s[1], s[2])};
     const Eigen::Matrix2d source = frame_edges(p[0], p[1], p[2]);
     const Eigen::Matrix2d image = frame_edges(s[0], s[1], s[2]);
     const Eigen::JacobiSVD<Eigen::Matrix2d> svd(image * source.inverse());

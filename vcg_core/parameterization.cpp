@@ -18,14 +18,14 @@
 namespace meromorph {
 namespace {
 
-// Faces of the centred image below double resolution (map_quality.h).
-int collapsed_faces(const Mesh &mesh, std::vector<PlaneValue> values,
-                    const std::vector<double> &areas) {
-  center_on_sphere(values, areas);
-  std::vector<Eigen::Vector3d> sphere;
-  for (const PlaneValue &value : values)
-    sphere.push_back(to_sphere(value));
-  return measure_map_quality(mesh, sphere, {}).overall.collapsed_faces;
+// Faces whose image is below double resolution (sphere_geometry.h).
+int collapsed_faces(const Mesh &mesh, const std::vector<PlaneValue> &values) {
+  int count = 0;
+  for (const MeshFace &face : mesh.face)
+    count += collapsed_image(to_sphere(values[size_t(index_of(mesh, face.cV(0)))]),
+                             to_sphere(values[size_t(index_of(mesh, face.cV(1)))]),
+                             to_sphere(values[size_t(index_of(mesh, face.cV(2)))]));
+  return count;
 }
 
 // What a user can do when Riemann-Hurwitz fails, from what this mesh and map show.
@@ -146,8 +146,9 @@ Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &optio
           // Where long thin parts shrink below what doubles resolve, a pole in the wrong place
           // loses more of them: keep the first solution if the second collapses more faces.
           Genus0Map again = solve(pole_face);
-          if (collapsed_faces(mesh, again.values, areas) <=
-              collapsed_faces(mesh, map.values, areas))
+          std::vector<PlaneValue> centred_again = again.values;
+          center_on_sphere(centred_again, areas);
+          if (collapsed_faces(mesh, centred_again) <= collapsed_faces(mesh, centred))
             map = std::move(again);
         }
       }

@@ -54,6 +54,10 @@ bool folded_image(const Eigen::Vector3d &a, const Eigen::Vector3d &b, const Eige
   return signed_solid_angle(a, b, c) < -1e-9 * chord;
 }
 
+bool collapsed_image(const Eigen::Vector3d &a, const Eigen::Vector3d &b, const Eigen::Vector3d &c) {
+  return std::max({(a - b).norm(), (b - c).norm(), (c - a).norm()}) < 1e-14;
+}
+
 Eigen::Vector3d from_chart(const Eigen::Vector3d &p, const Complex &w) {
   const Eigen::Quaterniond rotation =
       Eigen::Quaterniond::FromTwoVectors(p, Eigen::Vector3d(0, 0, -1));

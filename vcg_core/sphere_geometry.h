@@ -42,6 +42,9 @@ double swept_angle(const Eigen::Vector3d &center, const Eigen::Vector3d &a,
 // A face image turned over: negative signed area beyond rounding (1e-9 of its longest chord
 // squared); an image that is flat to rounding is degenerate, not folded.
 bool folded_image(const Eigen::Vector3d &a, const Eigen::Vector3d &b, const Eigen::Vector3d &c);
+// The image triangle's longest side is below 1e-14: smaller than doubles resolve on the unit
+// sphere (long thin parts shrink exponentially under a conformal map).
+bool collapsed_image(const Eigen::Vector3d &a, const Eigen::Vector3d &b, const Eigen::Vector3d &c);
 
 // Stereographic coordinate of q in the chart centred at p (both unit vectors).
 Complex chart_at(const Eigen::Vector3d &p, const Eigen::Vector3d &q);
