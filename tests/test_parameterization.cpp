@@ -91,16 +91,23 @@ TEST(Parameterization, GeneratedSurfacesOfGenusZeroToTwo) {
   EXPECT_EQ(map.branch_points.size(), 6u) << "genus 2: 2g + 2 branch points";
 }
 
+// A generated chain of `genus` handles, mapped with the default pair: a valid map of degree
+// 2g - 2 with 6g - 6 branch points counted with multiplicity (Riemann-Hurwitz).
+Parameterization expect_higher_genus_map(int genus, int resolution, const std::string &name) {
+  Mesh mesh;
+  make_genus_surface(mesh, genus, resolution);
+  Parameterization map = parameterize(mesh);
+  expect_valid_map(mesh, map, 2 * genus - 2, name);
+  EXPECT_EQ(map.ramification, 6 * genus - 6) << name;
+  return map;
+}
+
 TEST(Parameterization, GeneratedSurfacesOfGenusThreeToFive) {
   // The default (generic) pair: degree 2g - 2 and, by Riemann-Hurwitz, 6g - 6 branch points
   // counted with multiplicity; each of the 2g - 2 layers covers the sphere once.
   for (int genus : {3, 4, 5}) {
-    Mesh mesh;
-    make_genus_surface(mesh, genus, 30);
-    const Parameterization map = parameterize(mesh);
     const std::string name = "genus " + std::to_string(genus);
-    expect_valid_map(mesh, map, 2 * genus - 2, name);
-    EXPECT_EQ(map.ramification, 6 * genus - 6) << name;
+    const Parameterization map = expect_higher_genus_map(genus, 30, name);
     ASSERT_EQ(map.form_coefficients.first.size(), genus) << name;
     ASSERT_EQ(map.form_coefficients.second.size(), genus) << name;
     EXPECT_GE(map.pair_attempts, 1) << name;
@@ -112,12 +119,8 @@ TEST(Parameterization, CoarseHigherGenusTriesTheNextGenericPair) {
   // the fixed list is taken, and the result is still exact in degree and branching.
   int most_attempts = 0;
   for (int genus : {3, 4}) {
-    Mesh mesh;
-    make_genus_surface(mesh, genus, 20);
-    const Parameterization map = parameterize(mesh);
-    const std::string name = "coarse genus " + std::to_string(genus);
-    expect_valid_map(mesh, map, 2 * genus - 2, name);
-    EXPECT_EQ(map.ramification, 6 * genus - 6) << name;
+    const Parameterization map =
+        expect_higher_genus_map(genus, 20, "coarse genus " + std::to_string(genus));
     most_attempts = std::max(most_attempts, map.pair_attempts);
   }
   EXPECT_GT(most_attempts, 1) << "these meshes exercise the retry";
