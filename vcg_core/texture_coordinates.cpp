@@ -44,7 +44,7 @@ TextureCoordinates texture_coordinates(const Mesh &mesh, const std::vector<Eigen
     if (kind != UvKind::spherical) continue;
     const Eigen::Vector3d &a = sphere[corner_vertex[0]], &b = sphere[corner_vertex[1]],
                           &c = sphere[corner_vertex[2]];
-    for (const Eigen::Vector3d pole : {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0, 0, -1)})
+    for (const Eigen::Vector3d &pole : {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0, 0, -1)})
       if (a.cross(b).dot(pole) > 0 && b.cross(c).dot(pole) > 0 && c.cross(a).dot(pole) > 0 &&
           pole.dot(a + b + c) > 0)
         out.around_pole[f] = 1;
