@@ -262,39 +262,43 @@ int snap_branch_points(const Mesh &mesh, const MeshEdges &edges,
     const Complex c = abc[0] - abc[1] * abc[1] / (4.0 * abc[2]);
     auto model = [&](Complex x) { return abc[0] + x * (abc[1] + x * abc[2]); };
 
-    // Candidates: the 12 vertices nearest p (a corner of 90 degrees or more at a branch vertex
-    // turns its face over, so the nearest are not always usable). Each is tried with the map
-    // composed with the shift z -> z + t (p - z_v), t = 1 - ring / R at the vertices R - 1 rings or
-    // less from v (R = 1: v alone takes c); the fold-free one that distorts angles least wins.
+    // Candidates: the 6 vertices nearest p, then, if none of them winds twice without folding a
+    // face (a corner of 90 degrees or more at a branch vertex turns its face over), the next 6.
+    // Each is tried with the map composed with the shift z -> z + t (p - z_v), t = 1 - ring / R at
+    // the vertices R - 1 rings or less from v (R = 1: v alone takes c); the fold-free one that
+    // distorts angles least wins (farther candidates distort more, so they come second).
     std::vector<std::pair<double, int>> by_distance;
     for (int v : fitted)
       by_distance.push_back({std::abs(z[v] - p), v});
     std::sort(by_distance.begin(), by_distance.end());
     Score best = score_region(-1);
     std::vector<std::pair<int, Eigen::Vector3d>> best_change;
-    for (int shift_rings = 1; shift_rings <= max_shift_rings; ++shift_rings)
-      for (size_t i = 0; i < std::min<size_t>(12, by_distance.size()); ++i) {
-        const int v = by_distance[i].second;
-        const Complex shift = p - z[v];
-        std::vector<std::pair<int, Eigen::Vector3d>> change, original;
-        for (const auto &[w, ring] : ring_distances(in, {v}, shift_rings - 1)) {
-          const double t = 1.0 - double(ring) / shift_rings;
-          const Complex value =
-              w == v ? c : chart_at(centre, sphere[w]) + model(z[w] + t * shift) - model(z[w]);
-          change.push_back({w, from_chart(centre, value)});
+    for (const size_t first : {size_t(0), size_t(6)}) {
+      if (first > 0 && std::get<0>(best) == 0 && std::get<2>(best) == 0) break;
+      for (int shift_rings = 1; shift_rings <= max_shift_rings; ++shift_rings)
+        for (size_t i = first; i < std::min<size_t>(first + 6, by_distance.size()); ++i) {
+          const int v = by_distance[i].second;
+          const Complex shift = p - z[v];
+          std::vector<std::pair<int, Eigen::Vector3d>> change, original;
+          for (const auto &[w, ring] : ring_distances(in, {v}, shift_rings - 1)) {
+            const double t = 1.0 - double(ring) / shift_rings;
+            const Complex value =
+                w == v ? c : chart_at(centre, sphere[w]) + model(z[w] + t * shift) - model(z[w]);
+            change.push_back({w, from_chart(centre, value)});
+          }
+          for (const auto &[w, point] : change) {
+            original.push_back({w, sphere[w]});
+            sphere[w] = point;
+          }
+          const Score score = score_region(v);
+          for (const auto &[w, point] : original)
+            sphere[w] = point;
+          if (score < best) {
+            best = score;
+            best_change = change;
+          }
         }
-        for (const auto &[w, point] : change) {
-          original.push_back({w, sphere[w]});
-          sphere[w] = point;
-        }
-        const Score score = score_region(v);
-        for (const auto &[w, point] : original)
-          sphere[w] = point;
-        if (score < best) {
-          best = score;
-          best_change = change;
-        }
-      }
+    }
     if (best_change.empty()) continue;
     for (const auto &[w, point] : best_change) {
       sphere[w] = point;
