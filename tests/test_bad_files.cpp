@@ -70,7 +70,10 @@ TEST(BadFiles, TruncatedBinaryPly) {
   write_mesh(sphere, dir.path("whole.ply"));
   const std::string whole = file_bytes(dir.path("whole.ply"));
   expect_read_error<InputError>(dir.write("cut.ply", whole.substr(0, whole.size() / 2)),
-                                "ends before all the vertices and faces");
+                                "more vertices and faces than a file of");
+  // Cut inside the last face: the counts still fit, the data does not.
+  expect_read_error<InputError>(dir.write("cut_late.ply", whole.substr(0, whole.size() - 3)),
+                                "the file ends inside face 319 (truncated");
 }
 
 TEST(BadFiles, PlyHeaderLiesAboutItsCounts) {
@@ -80,7 +83,7 @@ TEST(BadFiles, PlyHeaderLiesAboutItsCounts) {
                            "property float y\nproperty float z\nelement face 2\n"
                            "property list uchar int vertex_indices\nend_header\n"
                            "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"),
-      "ends before all the vertices and faces its header announces");
+      "announces more vertices and faces than a file of");
 }
 
 TEST(BadFiles, HeaderCountsLargerThanTheFileCanHold) {
@@ -97,7 +100,8 @@ TEST(BadFiles, HeaderCountsLargerThanTheFileCanHold) {
                                           "ply\nformat ascii 1.0\nelement vertex 999999999999\n"
                                           "property float x\nproperty float y\nproperty float z\n"
                                           "end_header\n0 0 0\n"),
-                                "negative or too large count");
+                                "overflow.ply:3: element 'vertex' has the count '999999999999', "
+                                "which is not a whole number from 0 to 2147483647");
 }
 
 TEST(BadFiles, IndicesOutOfRangeNameTheLine) {
@@ -114,7 +118,7 @@ TEST(BadFiles, IndicesOutOfRangeNameTheLine) {
                            "property float y\nproperty float z\nelement face 1\n"
                            "property list uchar int vertex_indices\nend_header\n"
                            "0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"),
-      "refers to a vertex index beyond the vertex count");
+      "oob.ply:13: face 0 refers to vertex 7, but the file has vertices 0..2");
 }
 
 TEST(BadFiles, GarbageInsideText) {

@@ -66,8 +66,8 @@ void expect_same_as_cli(const MeshLab &meshlab, const std::string &input, int br
   ASSERT_EQ(cli.exit_code, 0) << cli.err;
 
   Mesh from_meshlab, from_cli;
-  test::load(meshlab.path("meshlab.ply"), from_meshlab);
-  test::load(meshlab.path("cli.ply"), from_cli);
+  test::load_ply_attributes(meshlab.path("meshlab.ply"), from_meshlab);
+  test::load_ply_attributes(meshlab.path("cli.ply"), from_cli);
   ASSERT_EQ(from_meshlab.VN(), from_cli.VN());
   std::ifstream report_stream(meshlab.path("cli.json"));
   const nlohmann::json report = nlohmann::json::parse(report_stream);

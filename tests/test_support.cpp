@@ -8,6 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstring>
+
+#include <wrap/io_trimesh/import_ply.h>
+
 #include "mesh_reader.h"
 
 namespace meromorph::test {
@@ -66,6 +70,11 @@ RunResult run_cli(const std::vector<std::string> &arguments) {
 
 void load(const std::string &path, Mesh &mesh) {
   ASSERT_NO_THROW(read_mesh(path, mesh)) << path;
+}
+
+void load_ply_attributes(const std::string &path, Mesh &mesh) {
+  int mask = 0;
+  ASSERT_EQ(vcg::tri::io::ImporterPLY<Mesh>::Open(mesh, path.c_str(), mask), 0) << path;
 }
 
 std::string off_text(const std::vector<std::array<double, 3>> &positions,

@@ -35,6 +35,10 @@ RunResult run_cli(const std::vector<std::string> &arguments);
 
 // Reads `path` into `mesh`, failing the test on any error.
 void load(const std::string &path, Mesh &mesh);
+// A well-formed PLY file (written by MeshLab or by meromorph) through vcglib's importer, which,
+// unlike meromorph's reader, also loads per-vertex texture coordinates, quality and flags
+// (selection).
+void load_ply_attributes(const std::string &path, Mesh &mesh);
 
 // An OFF file with these vertices and triangles.
 std::string off_text(const std::vector<std::array<double, 3>> &positions,

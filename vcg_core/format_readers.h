@@ -2,8 +2,8 @@
 // never half-read.
 //
 // In:  the file path (and, for the text formats, its whole content).
-// Out: `MeshArrays` (polygons triangulated, indices checked), or for PLY the mesh itself through
-//      vcglib's importer. Notes on what the reader did (triangulated polygons, welded STL corners)
+// Out: `MeshArrays` (polygons triangulated, indices checked). Notes on what the reader did
+// (triangulated polygons, welded STL corners)
 //      go into `notes`. Errors: InputError naming the file, the line and what is wrong.
 #pragma once
 
@@ -29,7 +29,11 @@ MeshArrays read_obj(const std::string &path, const std::string &text,
 MeshArrays read_stl(const std::string &path, const std::string &bytes,
                     std::vector<std::string> &notes);
 
-// PLY, ASCII or binary, through vcglib's importer; polygons are triangulated by it.
-void read_ply(const std::string &path, Mesh &mesh, std::vector<std::string> &notes);
+// PLY, ASCII and binary (little and big endian): the `vertex` element's x, y, z and the `face`
+// element's `vertex_indices` list (any integer count and index types; polygons triangulated);
+// every other element and property is read past by its declared type. Every count, list length
+// and index is checked; errors name the header or data line (ASCII) or the byte offset (binary).
+MeshArrays read_ply(const std::string &path, const std::string &bytes,
+                    std::vector<std::string> &notes);
 
 } // namespace meromorph

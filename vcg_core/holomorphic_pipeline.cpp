@@ -10,6 +10,7 @@
 #include "harmonic_forms.h"
 #include "holomorphic_forms.h"
 #include "periods.h"
+#include "unit_scale.h"
 #include "validation.h"
 
 namespace meromorph {
@@ -42,10 +43,15 @@ double closedness(const MeshEdges &edges, const Eigen::VectorXd &form) {
 
 } // namespace
 
-HolomorphicForms compute_holomorphic_forms(const Mesh &mesh, SolverKind solver,
+HolomorphicForms compute_holomorphic_forms(const Mesh &input, SolverKind solver,
                                            const Progress &progress) {
-  const Validation validation = validate_mesh(mesh);
+  const Validation validation = validate_mesh(input);
   if (!validation.ok()) throw InputError(validation.main_finding().message);
+  // Computed at unit scale (unit_scale.h): the forms' values on edges do not depend on it.
+  Mesh unit;
+  const bool copy = !is_at_unit_scale(input);
+  if (copy) copy_at_unit_scale(input, unit_scale_of(input), unit);
+  const Mesh &mesh = copy ? unit : input;
 
   HolomorphicForms out;
   StageClock clock(out.timings_ms);

@@ -113,6 +113,7 @@ MeshFormat detect_format(const std::string &path) {
   std::string head(std::min<std::uintmax_t>(size, 4096), '\0');
   stream.read(head.data(), std::streamsize(head.size()));
   head.resize(size_t(stream.gcount()));
+  if (head.compare(0, 3, "\xEF\xBB\xBF") == 0) head.erase(0, 3); // a UTF-8 byte-order mark
 
   const std::optional<MeshFormat> content = format_from_content(head, size);
   if (content && *content != named)

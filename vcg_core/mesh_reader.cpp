@@ -27,9 +27,7 @@ MeshSource read_mesh(const std::string &path, Mesh &mesh, const Progress &progre
   source.path = path;
   source.format = detect_format(path);
   progress.report(0.0, "reading " + path);
-  if (source.format == MeshFormat::ply) {
-    read_ply(path, mesh, source.notes);
-  } else {
+  {
     const std::string content = read_whole_file(path);
     MeshArrays arrays;
     switch (source.format) {
@@ -43,6 +41,7 @@ MeshSource read_mesh(const std::string &path, Mesh &mesh, const Progress &progre
       arrays = read_stl(path, content, source.notes);
       break;
     case MeshFormat::ply:
+      arrays = read_ply(path, content, source.notes);
       break;
     }
     mesh_from_arrays(arrays, mesh);

@@ -14,6 +14,7 @@
 #include "genus0_map.h"
 #include "genus1_map.h"
 #include "holomorphic_pipeline.h"
+#include "unit_scale.h"
 
 namespace meromorph {
 namespace {
@@ -60,10 +61,14 @@ std::string riemann_hurwitz_advice(const Mesh &mesh, const ParameterizeOptions &
 
 } // namespace
 
-Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &options,
+Parameterization parameterize(const Mesh &input, const ParameterizeOptions &options,
                               const Progress &progress) {
   // The mesh is validated once, by compute_holomorphic_forms below.
-  if (options.layer_gap < 0) throw ArgumentError("the layer gap must not be negative");
+  if (!(options.layer_gap >= 0 && options.layer_gap <= 1e6))
+    throw ArgumentError("the layer gap must be a number from 0 to 1e6");
+  // Everything is computed at unit scale (unit_scale.h); positions reported are the input's.
+  Mesh mesh;
+  copy_at_unit_scale(input, unit_scale_of(input), mesh);
   const std::vector<double> areas = vertex_areas(mesh); // the weights of the Moebius centring
 
   Parameterization out;
@@ -291,7 +296,7 @@ Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &optio
   out.riemann_hurwitz_ok = branching.riemann_hurwitz_ok;
   out.branch_flag.assign(mesh.vert.size(), 0);
   for (int v : branching.branch_vertices) {
-    const Point3 &p = mesh.vert[v].cP();
+    const Point3 &p = input.vert[v].cP();
     out.branch_points.push_back(
         {v, Eigen::Vector3d(p[0], p[1], p[2]), out.sphere[v], branching.local_degree[v]});
     out.branch_flag[v] = branching.local_degree[v];

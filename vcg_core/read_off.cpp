@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <string>
 
 #include "format_readers.h"
@@ -38,8 +39,9 @@ MeshArrays read_off(const std::string &path, const std::string &text,
   for (long v = 0; v < vertex_count; ++v) {
     if (!lines.next())
       lines.fail_at_end("the file ends after " + std::to_string(v) + " of the " +
-                        std::to_string(vertex_count) + " vertices its header announces");
-    if (lines.cut_short())
+                        std::to_string(vertex_count) +
+                        " vertices its header announces (truncated?)");
+    if (lines.tokens().size() < 3 && lines.cut_short())
       lines.fail("the file ends in the middle of vertex " + std::to_string(v) + " of the " +
                  std::to_string(vertex_count) + " vertices its header announces (truncated?)");
     if (lines.tokens().size() < 3)
@@ -53,11 +55,11 @@ MeshArrays read_off(const std::string &path, const std::string &text,
   for (long f = 0; f < face_count; ++f) {
     if (!lines.next())
       lines.fail_at_end("the file ends after " + std::to_string(f) + " of the " +
-                        std::to_string(face_count) + " faces its header announces");
-    if (lines.cut_short())
+                        std::to_string(face_count) + " faces its header announces (truncated?)");
+    const long corners = lines.integer(0);
+    if (lines.tokens().size() < size_t(std::max(corners, 0L)) + 1 && lines.cut_short())
       lines.fail("the file ends in the middle of face " + std::to_string(f) + " of the " +
                  std::to_string(face_count) + " faces its header announces (truncated?)");
-    const long corners = lines.integer(0);
     if (corners < 3)
       lines.fail("face " + std::to_string(f) + " has " + std::to_string(corners) +
                  " vertices; a face needs at least 3");

@@ -1,11 +1,13 @@
 // Safe repairs: the ones that do not move a vertex or change the shape.
 //
 // In:  a mesh (any state validation accepts or reports).
-// Out: the same mesh with exact duplicate vertices merged, faces that repeat a vertex or have zero
-//      area removed, unreferenced vertices removed and faces oriented consistently (outward on a
-//      closed surface), then compacted (indices change). Returns one sentence per repair made,
-//      in the user's words, for the report; empty when nothing needed repair.
-//      Holes, non-manifold edges and several components are not repaired: they change the shape.
+// Out: the same mesh with exact duplicate vertices on the edges of holes merged (a seam; those the
+//      surface keeps apart stay), faces that repeat a vertex removed (zero-area faces stay:
+//      removing one would open a hole), unreferenced vertices removed and faces oriented
+//      consistently (outward on a closed surface), then compacted (indices change). Returns one
+//      sentence per repair made, in the user's words, for the report; empty when nothing needed
+//      repair. Holes, non-manifold edges and several components are not repaired: they change the
+//      shape.
 #pragma once
 
 #include <string>

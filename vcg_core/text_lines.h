@@ -16,7 +16,11 @@ namespace meromorph {
 
 class TextLines {
 public:
-  TextLines(const std::string &path, const std::string &text) : path_(path), text_(text) {}
+  // A UTF-8 byte-order mark at the start is skipped; lines may end in LF or CRLF, and the last
+  // one needs no line end.
+  TextLines(const std::string &path, const std::string &text) : path_(path), text_(text) {
+    if (text_.compare(0, 3, "\xEF\xBB\xBF") == 0) position_ = 3;
+  }
 
   // Advances to the next line with at least one token; false at the end of the file.
   bool next() {
@@ -37,7 +41,7 @@ public:
 
   const std::vector<std::string_view> &tokens() const { return tokens_; }
 
-  // True when the current line is the file's last and has no newline: a file cut short.
+  // True when the current line is the file's last and has no newline: complete, or cut short.
   bool cut_short() const {
     return position_ > text_.size() && !text_.empty() && text_.back() != '\n';
   }

@@ -1,11 +1,37 @@
 #include "topology.h"
 
+#include <algorithm>
+
 #include "validation.h"
 
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/append.h>
 
 namespace meromorph {
+
+std::vector<char> boundary_vertices(const Mesh &mesh) {
+  std::vector<std::pair<int, int>> edges; // undirected, (low, high)
+  edges.reserve(3 * mesh.face.size());
+  for (const MeshFace &face : mesh.face) {
+    if (face.IsD() || face.cV(0) == face.cV(1) || face.cV(1) == face.cV(2) ||
+        face.cV(2) == face.cV(0))
+      continue;
+    for (int k = 0; k < 3; ++k) {
+      const int a = index_of(mesh, face.cV(k)), b = index_of(mesh, face.cV((k + 1) % 3));
+      edges.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  std::vector<char> boundary(mesh.vert.size(), 0);
+  for (size_t i = 0; i < edges.size();) {
+    size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i])
+      ++j;
+    if (j - i == 1) boundary[size_t(edges[i].first)] = boundary[size_t(edges[i].second)] = 1;
+    i = j;
+  }
+  return boundary;
+}
 
 void copy_with_face_adjacency(const Mesh &mesh, Mesh &copy) {
   vcg::tri::Append<Mesh, Mesh>::MeshCopy(copy, const_cast<Mesh &>(mesh));

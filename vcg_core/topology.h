@@ -22,6 +22,10 @@ struct BoundaryLoop {
 // The boundary loops of `mesh`. Needs face-face adjacency and no non-manifold edge.
 std::vector<BoundaryLoop> find_boundary_loops(Mesh &mesh);
 
+// Per vertex: 1 when it is on an edge that only one face has (an edge of a hole). Faces that
+// repeat a vertex are left out. Works on any mesh.
+std::vector<char> boundary_vertices(const Mesh &mesh);
+
 // A copy of `mesh` without the faces that repeat a vertex, with face-face adjacency; vertex and
 // face indices stay those of `mesh` (deleted faces keep their slots).
 void copy_with_face_adjacency(const Mesh &mesh, Mesh &copy);

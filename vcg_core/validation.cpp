@@ -10,6 +10,7 @@
 
 #include "errors.h"
 #include "topology.h"
+#include "unit_scale.h"
 
 namespace meromorph {
 
@@ -23,6 +24,10 @@ const char *finding_code(FindingKind kind) {
     return "repeated_vertex_in_face";
   case FindingKind::zero_area_faces:
     return "zero_area_faces";
+  case FindingKind::duplicate_faces:
+    return "duplicate_faces";
+  case FindingKind::beyond_double_precision:
+    return "beyond_double_precision";
   case FindingKind::duplicate_vertices:
     return "duplicate_vertices";
   case FindingKind::unreferenced_vertices:
@@ -65,11 +70,26 @@ bool repeats_a_vertex(const MeshFace &face) {
 }
 
 bool has_zero_area(const MeshFace &face) {
-  const Point3 &a = face.cP(0), &b = face.cP(1), &c = face.cP(2);
-  const double twice_area = ((b - a) ^ (c - a)).Norm();
+  // Edge vectors halved against overflow and scaled by a power of two to unit size, so neither
+  // the squares of huge coordinates overflow nor those of tiny ones underflow.
+  Point3 edge[3];
+  double largest = 0;
+  for (int k = 0; k < 3; ++k) {
+    edge[k] = face.cP((k + 1) % 3) / 2 - face.cP(k) / 2;
+    for (int i = 0; i < 3; ++i)
+      largest = std::max(largest, std::abs(edge[k][i]));
+  }
+  if (!std::isfinite(largest)) return false; // non-finite coordinates are their own finding
+  if (largest == 0) return true;
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  for (Point3 &e : edge)
+    for (int i = 0; i < 3; ++i)
+      e[i] = std::ldexp(e[i], -exponent);
+  const double twice_area = (edge[0] ^ edge[1]).Norm();
   const double longest =
-      std::max({(b - a).SquaredNorm(), (c - b).SquaredNorm(), (a - c).SquaredNorm()});
-  return std::isfinite(twice_area) && twice_area <= 2 * zero_area_tolerance * longest;
+      std::max({edge[0].SquaredNorm(), edge[1].SquaredNorm(), edge[2].SquaredNorm()});
+  return twice_area <= 2 * zero_area_tolerance * longest;
 }
 
 namespace {
@@ -108,13 +128,30 @@ void check_coordinates(const Mesh &mesh, Validation &out) {
 
 void check_faces(const Mesh &mesh, Validation &out) {
   Finding repeated(FindingKind::repeated_vertex_in_face, true);
-  Finding flat(FindingKind::zero_area_faces, true);
+  Finding flat(FindingKind::zero_area_faces);
+  Finding tiny(FindingKind::beyond_double_precision);
+  const UnitScale scale = unit_scale_of(mesh);
   for (size_t f = 0; f < mesh.face.size(); ++f) {
     const MeshFace &face = mesh.face[f];
-    if (repeats_a_vertex(face))
+    if (repeats_a_vertex(face)) {
       repeated.faces.push_back(int(f));
-    else if (has_zero_area(face))
+    } else if (has_zero_area(face)) {
       flat.faces.push_back(int(f));
+    } else {
+      double longest = 0;
+      for (int k = 0; k < 3; ++k)
+        longest =
+            std::max(longest, (scale.apply(face.cP((k + 1) % 3)) - scale.apply(face.cP(k))).Norm());
+      if (longest < smallest_relative_face) tiny.faces.push_back(int(f));
+    }
+  }
+  if (!tiny.faces.empty()) {
+    tiny.message = plural(tiny.faces.size(), "face is", "faces are") +
+                   " smaller than 1e-11 of the whole mesh, too small for double precision "
+                   "beside the rest (a stray vertex far away, or coordinates in wildly "
+                   "different units?): faces " +
+                   list_indices(tiny.faces);
+    out.findings.push_back(tiny);
   }
   if (!repeated.faces.empty()) {
     repeated.message = plural(repeated.faces.size(), "face uses", "faces use") +
@@ -125,8 +162,44 @@ void check_faces(const Mesh &mesh, Validation &out) {
   if (!flat.faces.empty()) {
     flat.message = plural(flat.faces.size(), "face has", "faces have") +
                    " zero area (their corners are collinear or coincide): faces " +
-                   list_indices(flat.faces);
+                   list_indices(flat.faces) +
+                   "; collapse them (Blender: Mesh > Clean Up > Degenerate Dissolve; MeshLab: "
+                   "Filters > Remeshing, Simplification and Reconstruction > Remeshing: "
+                   "Isotropic Explicit Remeshing)";
     out.findings.push_back(flat);
+  }
+
+  // Two faces on the same three vertices: a doubled face, or a flat pillow of two triangles.
+  std::vector<std::pair<std::array<int, 3>, int>> sorted_corners;
+  for (size_t f = 0; f < mesh.face.size(); ++f) {
+    if (repeats_a_vertex(mesh.face[f])) continue;
+    std::array<int, 3> corners;
+    for (int k = 0; k < 3; ++k)
+      corners[k] = index_of(mesh, mesh.face[f].cV(k));
+    std::sort(corners.begin(), corners.end());
+    sorted_corners.push_back({corners, int(f)});
+  }
+  std::sort(sorted_corners.begin(), sorted_corners.end());
+  Finding doubled(FindingKind::duplicate_faces);
+  for (size_t i = 1; i < sorted_corners.size(); ++i)
+    if (sorted_corners[i].first == sorted_corners[i - 1].first) {
+      doubled.faces.push_back(sorted_corners[i].second);
+      doubled.edges.push_back({sorted_corners[i - 1].second, sorted_corners[i].second});
+    }
+  if (!doubled.faces.empty()) {
+    std::sort(doubled.faces.begin(), doubled.faces.end());
+    std::string pairs;
+    for (size_t i = 0; i < std::min<size_t>(10, doubled.edges.size()); ++i)
+      pairs += (i ? ", " : "") + std::to_string(doubled.edges[i][0]) + " and " +
+               std::to_string(doubled.edges[i][1]);
+    if (doubled.edges.size() > 10)
+      pairs += " and " + std::to_string(doubled.edges.size() - 10) + " more";
+    doubled.message = plural(doubled.faces.size(), "face uses", "faces use") +
+                      " the same three vertices as another face (doubled faces): faces " + pairs +
+                      "; remove the doubles (MeshLab: Filters > Cleaning and Repairing > Remove "
+                      "Duplicate Faces; Blender: Mesh > Clean Up > Merge by Distance)";
+    doubled.edges.clear();
+    out.findings.push_back(doubled);
   }
 }
 
@@ -140,15 +213,29 @@ void check_vertices(const Mesh &mesh, Validation &out) {
   };
   std::sort(order.begin(), order.end(),
             [&](int a, int b) { return key(a) < key(b) || (key(a) == key(b) && a < b); });
+  // Coinciding vertices on the edge of a hole are a seam that merging closes: a finding that
+  // repair fixes. Elsewhere the topology keeps them apart and the map needs no position to
+  // differ from another: a note.
   Finding duplicates(FindingKind::duplicate_vertices, true);
+  std::vector<char> boundary;
+  int kept_apart = 0;
   for (size_t i = 1; i < order.size(); ++i) {
     if (key(order[i]) != key(order[i - 1])) continue;
     size_t first = i - 1;
     while (first > 0 && key(order[first - 1]) == key(order[i]))
       --first;
+    if (boundary.empty()) boundary = boundary_vertices(mesh);
+    if (!boundary[size_t(order[first])] || !boundary[size_t(order[i])]) {
+      ++kept_apart;
+      continue;
+    }
     duplicates.edges.push_back({order[first], order[i]});
     duplicates.vertices.push_back(order[i]);
   }
+  if (kept_apart)
+    out.notes.push_back(plural(size_t(kept_apart), "vertex sits", "vertices sit") +
+                        " exactly on another vertex that the surface keeps apart (coincident "
+                        "vertices); they are kept as they are");
   if (!duplicates.vertices.empty()) {
     std::sort(duplicates.edges.begin(), duplicates.edges.end(),
               [](auto &a, auto &b) { return a[1] < b[1]; });
@@ -159,8 +246,11 @@ void check_vertices(const Mesh &mesh, Validation &out) {
                std::to_string(duplicates.edges[i][0]);
     if (duplicates.edges.size() > 10)
       pairs += " and " + std::to_string(duplicates.edges.size() - 10) + " more";
-    duplicates.message = plural(duplicates.vertices.size(), "vertex sits", "vertices sit") +
-                         " exactly on another vertex (duplicate vertices): " + pairs;
+    duplicates.message =
+        plural(duplicates.vertices.size(), "vertex sits", "vertices sit") +
+        " exactly on another vertex along the edge of a hole (duplicate vertices on a "
+        "seam; --repair merges them): " +
+        pairs;
     out.findings.push_back(duplicates);
   }
 

@@ -21,6 +21,8 @@ enum class FindingKind {
   non_finite_coordinates,
   repeated_vertex_in_face,
   zero_area_faces,
+  duplicate_faces,
+  beyond_double_precision,
   duplicate_vertices,
   unreferenced_vertices,
   non_manifold_edges,
@@ -49,6 +51,9 @@ struct Finding {
 
 struct Validation {
   std::vector<Finding> findings;
+  // What is unusual but harmless (for example vertices at the same position that the topology
+  // keeps apart), in the user's words, for the report's `notes`.
+  std::vector<std::string> notes;
 
   bool ok() const { return findings.empty(); }
   bool all_repairable() const;
@@ -60,10 +65,14 @@ struct Validation {
 
 // Faces whose area is at most this fraction of their longest edge squared count as zero-area.
 constexpr double zero_area_tolerance = 1e-12;
+// Faces whose longest edge is below this fraction of the mesh's size cannot be resolved in
+// double precision beside the rest of the mesh.
+constexpr double smallest_relative_face = 1e-11;
 
 // A face that uses one vertex twice.
 bool repeats_a_vertex(const MeshFace &face);
-// A face whose area is at most zero_area_tolerance times its longest edge squared.
+// A face whose area is at most zero_area_tolerance times its longest edge squared (scale-safe:
+// computed on edge vectors brought to unit size).
 bool has_zero_area(const MeshFace &face);
 
 Validation validate_mesh(const Mesh &mesh);
