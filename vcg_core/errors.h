@@ -18,6 +18,7 @@ enum class ExitCode : int {
   internal_failure = 1,
   bad_arguments = 2,
   cannot_parameterize = 3,
+  cannot_write = 4,
 };
 
 class Error : public std::runtime_error {
@@ -39,6 +40,12 @@ public:
 class InputError : public Error {
 public:
   explicit InputError(const std::string &message) : Error(ExitCode::cannot_parameterize, message) {}
+};
+
+// An output file cannot be written (no such folder, no permission, disk full): the system's reason.
+class WriteError : public Error {
+public:
+  explicit WriteError(const std::string &message) : Error(ExitCode::cannot_write, message) {}
 };
 
 // The user cancelled through the progress callback.

@@ -54,6 +54,7 @@ HolomorphicForms compute_holomorphic_forms(const Mesh &input, SolverKind solver,
   const Mesh &mesh = copy ? unit : input;
 
   HolomorphicForms out;
+  out.notes = validation.notes;
   StageClock clock(out.timings_ms);
   const int vertex_count = int(mesh.vert.size());
 

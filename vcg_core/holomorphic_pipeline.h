@@ -45,6 +45,7 @@ struct HolomorphicForms {
   double wedge_rounding = 0;        // distance of the intersection numbers to integers
   double non_holomorphicity_mean = 0, non_holomorphicity_max = 0; // |g| / |f|, area-weighted mean
   std::vector<std::pair<std::string, double>> timings_ms;
+  std::vector<std::string> notes; // validation's notes (harmless oddities of the mesh)
 };
 
 HolomorphicForms compute_holomorphic_forms(const Mesh &mesh,

@@ -1,6 +1,8 @@
 #include "mesh_writer.h"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 
 #include <vcg/complex/append.h>
@@ -11,6 +13,7 @@
 
 #include "errors.h"
 #include "mesh_format.h"
+#include "staged_outputs.h"
 
 namespace meromorph {
 
@@ -28,10 +31,8 @@ void refuse_to_overwrite(const std::string &output, const std::vector<std::strin
   }
 }
 
-void write_mesh(const Mesh &mesh, const std::string &path, const WriteOptions &options,
-                const std::vector<std::string> &protected_inputs) {
-  refuse_to_overwrite(path, protected_inputs);
-  const MeshFormat format = format_from_extension(path);
+void save_mesh(const Mesh &mesh, MeshFormat format, const std::string &file,
+               const WriteOptions &options) {
   Mesh &writable =
       const_cast<Mesh &>(mesh); // vcglib's exporters take non-const meshes; they only read.
 
@@ -40,8 +41,7 @@ void write_mesh(const Mesh &mesh, const std::string &path, const WriteOptions &o
   if (options.vertex_quality) mask |= vcg::tri::io::Mask::IOM_VERTQUALITY;
   if (options.wedge_texcoords) mask |= vcg::tri::io::Mask::IOM_WEDGTEXCOORD;
 
-  // Write beside the target, then rename: a failed write never leaves a half file behind.
-  const std::string temporary = path + ".meromorph-partial";
+  errno = 0;
   int code = 0;
   switch (format) {
   case MeshFormat::ply: {
@@ -49,6 +49,16 @@ void write_mesh(const Mesh &mesh, const std::string &path, const WriteOptions &o
     Mesh copy; // named attributes go on a copy: the caller's mesh is not changed
     const bool extra = !options.vertex_properties.empty() || options.vertex_texcoords;
     if (extra) vcg::tri::Append<Mesh, Mesh>::MeshCopy(copy, writable);
+    // Every extra property is described here (with names that outlive the save), so nothing is
+    // allocated for the exporter to leak.
+    auto describe = [&](const char *name, int type) {
+      vcg::ply::PropDescriptor descriptor;
+      descriptor.elemname = "vertex";
+      descriptor.propname = name;
+      descriptor.stotype1 = descriptor.memtype1 = type;
+      info.VertDescriptorVec.push_back(descriptor);
+      info.VertAttrNameVec.push_back(name);
+    };
     if (options.vertex_texcoords) {
       // vcglib's PLY exporter writes double texture coordinates under a float header; write them
       // as the float properties texture_u, texture_v (the names MeshLab reads) instead.
@@ -57,18 +67,12 @@ void write_mesh(const Mesh &mesh, const std::string &path, const WriteOptions &o
         auto handle = vcg::tri::Allocator<Mesh>::AddPerVertexAttribute<float>(copy, name);
         for (size_t v = 0; v < copy.vert.size(); ++v)
           handle[v] = float(name[8] == 'u' ? copy.vert[v].T().U() : copy.vert[v].T().V());
-        info.AddPerVertexFloatAttribute(name);
+        describe(name, vcg::ply::T_FLOAT);
       }
     }
     info.mask = mask;
     for (const VertexProperty &property : options.vertex_properties) {
-      vcg::ply::PropDescriptor descriptor;
-      descriptor.elemname = "vertex";
-      descriptor.propname = property.name.c_str();
-      descriptor.stotype1 = descriptor.memtype1 =
-          property.byte ? vcg::ply::T_UCHAR : vcg::ply::T_INT;
-      info.VertDescriptorVec.push_back(descriptor);
-      info.VertAttrNameVec.push_back(property.name);
+      describe(property.name.c_str(), property.byte ? vcg::ply::T_UCHAR : vcg::ply::T_INT);
       if (property.byte) {
         auto handle =
             vcg::tri::Allocator<Mesh>::AddPerVertexAttribute<unsigned char>(copy, property.name);
@@ -80,31 +84,36 @@ void write_mesh(const Mesh &mesh, const std::string &path, const WriteOptions &o
           handle[v] = property.values.at(v);
       }
     }
-    code = vcg::tri::io::ExporterPLY<Mesh>::Save(extra ? copy : writable, temporary.c_str(),
+    code = vcg::tri::io::ExporterPLY<Mesh>::Save(extra ? copy : writable, file.c_str(),
                                                  options.binary, info);
+    copy.ClearAttributes();
     break;
   }
   case MeshFormat::obj:
-    code = vcg::tri::io::ExporterOBJ<Mesh>::Save(writable, temporary.c_str(), mask);
+    code = vcg::tri::io::ExporterOBJ<Mesh>::Save(writable, file.c_str(), mask);
     break;
   case MeshFormat::off:
-    code = vcg::tri::io::ExporterOFF<Mesh>::Save(writable, temporary.c_str(), mask);
+    code = vcg::tri::io::ExporterOFF<Mesh>::Save(writable, file.c_str(), mask);
     break;
   case MeshFormat::stl:
-    code = vcg::tri::io::ExporterSTL<Mesh>::Save(writable, temporary.c_str(), options.binary);
+    code = vcg::tri::io::ExporterSTL<Mesh>::Save(writable, file.c_str(), options.binary);
     break;
   }
-  std::error_code error;
   if (code != 0) {
-    std::filesystem::remove(temporary, error);
-    throw InputError(path + ": could not be written (" + format_name(format) + " exporter error " +
-                     std::to_string(code) + ")");
+    const std::string reason =
+        errno ? std::strerror(errno)
+              : std::string(format_name(format)) + " exporter error " + std::to_string(code);
+    std::remove(file.c_str());
+    throw WriteError(file + ": could not be written (" + reason + ")");
   }
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    std::filesystem::remove(temporary, error);
-    throw InputError(path + ": could not be written (" + error.message() + ")");
-  }
+}
+
+void write_mesh(const Mesh &mesh, const std::string &path, const WriteOptions &options,
+                const std::vector<std::string> &protected_inputs) {
+  const MeshFormat format = format_from_extension(path);
+  StagedOutputs outputs(protected_inputs);
+  save_mesh(mesh, format, outputs.add(path), options);
+  outputs.commit();
 }
 
 } // namespace meromorph

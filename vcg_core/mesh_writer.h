@@ -5,13 +5,15 @@
 //      coordinates, quality, per-wedge texture coordinates and extra integer per-vertex
 //      properties when asked for).
 // Errors: ArgumentError when the output is one of the protected inputs (same file, even through
-//      another path or a link) or has an unsupported extension; InputError when writing fails.
+//      another path or a link) or has an unsupported extension; WriteError (with the system's
+//      reason) when writing fails.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "mesh.h"
+#include "mesh_format.h"
 
 namespace meromorph {
 
@@ -33,6 +35,11 @@ struct WriteOptions {
 // Throws ArgumentError if `output` names the same file as any of `inputs`.
 void refuse_to_overwrite(const std::string &output, const std::vector<std::string> &inputs);
 
+// Writes `mesh` to exactly `file` in `format` (a staged temporary path, see staged_outputs.h).
+void save_mesh(const Mesh &mesh, MeshFormat format, const std::string &file,
+               const WriteOptions &options = {});
+
+// save_mesh through a temporary file beside `path`, moved into place when complete.
 void write_mesh(const Mesh &mesh, const std::string &path, const WriteOptions &options = {},
                 const std::vector<std::string> &protected_inputs = {});
 

@@ -88,6 +88,7 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
   out.genus = forms.genus;
   out.euler = 2 - 2 * out.genus;
   out.non_holomorphicity_mean = forms.non_holomorphicity_mean;
+  out.notes = forms.notes;
 
   progress.report(0.6, "meromorphic function");
   std::vector<PlaneValue> values, critical_values;

@@ -80,6 +80,7 @@ struct Parameterization {
   // When Riemann-Hurwitz fails: the likely causes found on this mesh and what to do, in the words
   // of a MeshLab or Blender user; empty otherwise.
   std::string advice;
+  std::vector<std::string> notes; // harmless oddities of the mesh (coincident vertices, ...)
 };
 
 Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &options = {},

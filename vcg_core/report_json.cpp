@@ -111,6 +111,7 @@ nlohmann::json parameterization_json(const Parameterization &map) {
     report["genus0"] = {{"pole_face", map.puncture_face}, {"raised_weights", map.raised_weights}};
   if (map.genus == 1) report["origin_vertex"] = map.origin_vertex;
   if (!map.advice.empty()) report["advice"] = map.advice;
+  report["notes"] = map.notes;
   if (map.genus >= 2) {
     report["form_pair"] = map.form_pair;
     auto coefficients = [](const Eigen::VectorXcd &c) {

@@ -12,6 +12,7 @@
 #include "mesh_writer.h"
 #include "repair.h"
 #include "report_json.h"
+#include "staged_outputs.h"
 #include "terminal_progress.h"
 
 namespace meromorph::cli {
@@ -26,7 +27,8 @@ struct FormsOptions {
 };
 
 int run_forms(const FormsOptions &options) {
-  if (!options.report.empty()) refuse_to_overwrite(options.report, {options.input});
+  StagedOutputs outputs({options.input});
+  const std::string report_file = options.report.empty() ? "" : outputs.add(options.report);
   const SolverKind solver = solver_from_name(options.solver);
   Mesh mesh;
   const JobInput input = read_job_input(options.input, options.repair, mesh);
@@ -60,7 +62,8 @@ int run_forms(const FormsOptions &options) {
   if (forms.genus >= 2) report["riemann_matrix"] = complex_matrix_json(forms.riemann_matrix);
 
   if (!options.report.empty()) {
-    std::ofstream(options.report) << report.dump(2) << "\n";
+    write_text_file(report_file, report.dump(2) + "\n");
+    outputs.commit();
   }
   if (!options.quiet || options.report.empty()) {
     std::cout << "genus " << forms.genus;

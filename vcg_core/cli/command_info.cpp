@@ -34,11 +34,31 @@ void print_text(const MeshSource &source, const Topology &topology, const Valida
             << "  genus           "
             << (topology.genus ? std::to_string(*topology.genus) : std::string("undefined"))
             << "\n";
+  for (const std::string &note : validation.notes)
+    std::cout << "  note: " << note << "\n";
   if (validation.ok()) {
     std::cout << "  ready: a closed, connected, oriented 2-manifold of genus "
               << (topology.genus ? *topology.genus : -1) << "\n";
   } else {
     std::cout << "  cannot be parameterized as it is:\n" << describe_findings(validation);
+  }
+}
+
+int run_info(const InfoOptions &options);
+
+// `info --json` always prints JSON: a file that cannot be read gives the error in it.
+int run_info_catching(const InfoOptions &options) {
+  if (!options.json) return run_info(options);
+  try {
+    return run_info(options);
+  } catch (const Error &error) {
+    const nlohmann::json report = {
+        {"input", {{"path", options.input}}},
+        {"error", {{"exit_code", int(error.code())}, {"message", error.what()}}},
+        {"ok", false},
+        {"version", MEROMORPH_VERSION}};
+    std::cout << report.dump(2) << "\n";
+    throw;
   }
 }
 
@@ -60,6 +80,7 @@ int run_info(const InfoOptions &options) {
                              {"topology", topology_json(topology)},
                              {"findings", findings_json(validation)},
                              {"repairs", repairs},
+                             {"notes", validation.notes},
                              {"ok", validation.ok()},
                              {"version", MEROMORPH_VERSION}};
     if (!repairs.empty()) report["findings_before_repair"] = findings_json(before_repair);
@@ -92,9 +113,10 @@ Command add_info_command(CLI::App &app) {
   info->add_option("INPUT", options->input, "mesh file (.ply, .obj, .off, .stl)")->required();
   info->add_flag("--json", options->json, "print a JSON report instead of text");
   info->add_flag("--repair", options->repair,
-                 "apply the safe repairs (merge duplicate vertices, drop degenerate faces and "
-                 "unreferenced vertices, orient faces consistently) before judging the mesh");
-  return [options] { return run_info(*options); };
+                 "apply the safe repairs (merge duplicate vertices along the edges of holes, drop "
+                 "faces that use a vertex twice and unreferenced vertices, orient faces "
+                 "consistently) before judging the mesh");
+  return [options] { return run_info_catching(*options); };
 }
 
 } // namespace meromorph::cli

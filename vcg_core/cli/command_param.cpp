@@ -15,6 +15,7 @@
 #include "parameterization.h"
 #include "repair.h"
 #include "report_json.h"
+#include "staged_outputs.h"
 #include "terminal_progress.h"
 
 namespace meromorph::cli {
@@ -32,8 +33,12 @@ struct ParamOptions {
 };
 
 int run_param(const ParamOptions &options) {
-  for (const std::string &output : {options.output, options.sphere, options.report})
-    if (!output.empty()) refuse_to_overwrite(output, {options.input});
+  // Every output is checked before any work and written only when the whole job succeeded.
+  StagedOutputs outputs({options.input});
+  const MeshFormat output_format = format_from_extension(options.output);
+  const std::string output_file = outputs.add(options.output);
+  const std::string sphere_file = options.sphere.empty() ? "" : outputs.add(options.sphere);
+  const std::string report_file = options.report.empty() ? "" : outputs.add(options.report);
   if (!options.sphere.empty() && format_from_extension(options.sphere) != MeshFormat::ply)
     throw ArgumentError(options.sphere + ": the layered sphere is written as PLY (.ply)");
   if (options.forms.size() != 2) throw ArgumentError("--forms takes two indices, like --forms 0,1");
@@ -54,6 +59,17 @@ int run_param(const ParamOptions &options) {
   TerminalProgress bar(options.quiet);
   const Parameterization map = parameterize(mesh, settings, bar.progress());
   bar.finish();
+  if (!map.riemann_hurwitz_ok) {
+    std::cerr << "meromorph: " << (options.strict ? "error" : "warning")
+              << ": Riemann-Hurwitz does not hold: chi = " << map.euler
+              << " but 2 * degree - ramification = " << 2 * map.degree - map.ramification
+              << " (image area " << map.area_over_4pi << " x 4 pi); the branch points or the "
+              << "degree were not measured reliably on this mesh: " << map.advice << "\n";
+    if (options.strict) {
+      std::cerr << "meromorph: --strict: nothing was written\n";
+      return int(ExitCode::internal_failure);
+    }
+  }
 
   // OUT.ply: the surface with per-vertex and per-wedge texture coordinates.
   for (size_t v = 0; v < mesh.vert.size(); ++v) {
@@ -69,7 +85,7 @@ int run_param(const ParamOptions &options) {
     }
   WriteOptions surface;
   surface.vertex_texcoords = surface.wedge_texcoords = surface.vertex_quality = true;
-  write_mesh(mesh, options.output, surface, {options.input});
+  save_mesh(mesh, output_format, output_file, surface);
 
   if (!options.sphere.empty()) {
     Mesh layered;
@@ -79,7 +95,7 @@ int run_param(const ParamOptions &options) {
     WriteOptions sphere;
     sphere.vertex_properties = {{"layer", map.sheets.vertex_layer, false},
                                 {"branch", map.branch_flag, true}};
-    write_mesh(layered, options.sphere, sphere, {options.input});
+    save_mesh(layered, MeshFormat::ply, sphere_file, sphere);
   }
 
   nlohmann::json report = parameterization_json(map);
@@ -87,7 +103,8 @@ int run_param(const ParamOptions &options) {
   report["repairs"] = input.repairs;
   report["timings_ms"]["read"] = input.read_ms;
   report["version"] = MEROMORPH_VERSION;
-  if (!options.report.empty()) std::ofstream(options.report) << report.dump(2) << "\n";
+  if (!options.report.empty()) write_text_file(report_file, report.dump(2) + "\n");
+  outputs.commit();
 
   const double total_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -104,13 +121,6 @@ int run_param(const ParamOptions &options) {
          << map.quality.overall.folded_faces << " in all); " << std::setprecision(0) << total_ms
          << " ms";
     std::cout << line.str() << "\n";
-  }
-  if (!map.riemann_hurwitz_ok) {
-    std::cerr << "meromorph: warning: Riemann-Hurwitz does not hold: chi = " << map.euler
-              << " but 2 * degree - ramification = " << 2 * map.degree - map.ramification
-              << " (image area " << map.area_over_4pi << " x 4 pi); the branch points or the "
-              << "degree were not measured reliably on this mesh: " << map.advice << "\n";
-    if (options.strict) return int(ExitCode::internal_failure);
   }
   return int(ExitCode::done);
 }
@@ -152,6 +162,7 @@ Command add_param_command(CLI::App &app) {
   param
       ->add_option("--layer-gap", options->layer_gap,
                    "place layer k on the sphere of radius 1 + G*k so the layers can be seen")
+      ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
   param->add_option("--pole-face", options->puncture_face,
                     "genus 0: the face mapped around the north pole (default: the best-shaped face "
@@ -159,7 +170,8 @@ Command add_param_command(CLI::App &app) {
   param->add_option("--solver", options->solver, "cholmod (default) or ldlt")
       ->check(CLI::IsMember({"cholmod", "ldlt"}));
   param->add_flag("--repair", options->repair, "apply the safe repairs first (see info --help)");
-  param->add_flag("--strict", options->strict, "exit with code 1 when Riemann-Hurwitz fails");
+  param->add_flag("--strict", options->strict,
+                  "exit with code 1, writing nothing, when Riemann-Hurwitz fails");
   param->add_flag("--quiet", options->quiet, "no progress bar and no summary line");
   return [options] { return run_param(*options); };
 }

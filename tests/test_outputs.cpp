@@ -1,0 +1,205 @@
+// Outputs are all-or-nothing and never clash; results do not depend on the unit; odd but valid
+// meshes (pillows, coincident vertices, huge and tiny coordinates) get a map or a clear refusal.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "test_support.h"
+
+namespace meromorph {
+namespace {
+
+using test::run_cli;
+using test::TempDir;
+
+bool exists(const std::string &path) {
+  return std::filesystem::exists(path);
+}
+
+// Nothing but the input in `dir`: no output and no partial file was left.
+size_t files_in(const TempDir &dir) {
+  size_t count = 0;
+  for (const auto &entry : std::filesystem::directory_iterator(dir.path("")))
+    count += entry.is_regular_file();
+  return count;
+}
+
+nlohmann::json read_json(const std::string &path) {
+  std::ifstream stream(path);
+  return nlohmann::json::parse(stream);
+}
+
+// eight.off with every coordinate multiplied by `scale`, as a new OFF file.
+std::string scaled_eight(const TempDir &dir, double scale) {
+  std::ifstream in(test::data_path("eight.off"));
+  std::string keyword;
+  size_t vertices = 0, faces = 0, edges = 0;
+  in >> keyword >> vertices >> faces >> edges;
+  std::ostringstream out;
+  out.precision(17);
+  out << "OFF\n" << vertices << " " << faces << " 0\n";
+  for (size_t v = 0; v < vertices; ++v) {
+    double x, y, z;
+    in >> x >> y >> z;
+    out << x * scale << " " << y * scale << " " << z * scale << "\n";
+  }
+  for (size_t f = 0; f < faces; ++f) {
+    int n, a, b, c;
+    in >> n >> a >> b >> c;
+    out << "3 " << a << " " << b << " " << c << "\n";
+  }
+  std::ostringstream name;
+  name << "eight_" << scale << ".off";
+  return dir.write(name.str(), out.str());
+}
+
+TEST(Outputs, AllOrNothing) {
+  TempDir dir;
+  const std::string input = dir.write("eight.off", [] {
+    std::ifstream in(test::data_path("eight.off"));
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }());
+  // A report in a folder that does not exist: exit 4 with the system's reason, and neither the
+  // surface nor the sphere is left behind.
+  const test::RunResult missing_folder =
+      run_cli({"param", input, "-o", dir.path("out.ply"), "--sphere", dir.path("sphere.ply"),
+               "--report", dir.path("no/such/folder/r.json"), "--quiet"});
+  EXPECT_EQ(missing_folder.exit_code, 4) << missing_folder.err;
+  EXPECT_NE(missing_folder.err.find("No such file or directory"), std::string::npos)
+      << missing_folder.err;
+  EXPECT_EQ(files_in(dir), 1u) << "only the input is left";
+
+  // Two outputs naming the same file, or an output that is a folder: exit 2, nothing written.
+  for (const std::vector<std::string> &clash :
+       {std::vector<std::string>{"-o", dir.path("a.ply"), "--sphere", dir.path("a.ply")},
+        {"-o", dir.path("a.ply"), "--report", dir.path("./a.ply")},
+        {"-o", dir.path("")}}) {
+    std::vector<std::string> arguments = {"param", input, "--quiet"};
+    arguments.insert(arguments.end(), clash.begin(), clash.end());
+    const test::RunResult r = run_cli(arguments);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(files_in(dir), 1u);
+  }
+  EXPECT_EQ(run_cli({"param", input, "-o", dir.path("a.ply"), "--layer-gap", "nan"}).exit_code, 2);
+  EXPECT_EQ(run_cli({"param", input, "-o", dir.path("a.ply"), "--layer-gap", "inf"}).exit_code, 2);
+
+  // A successful run writes all three.
+  const test::RunResult ok =
+      run_cli({"param", input, "-o", dir.path("out.ply"), "--sphere", dir.path("sphere.ply"),
+               "--report", dir.path("r.json"), "--quiet"});
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+  EXPECT_EQ(files_in(dir), 4u);
+  EXPECT_TRUE(exists(dir.path("out.ply")) && exists(dir.path("sphere.ply")) &&
+              exists(dir.path("r.json")));
+}
+
+TEST(Outputs, StrictDecidesBeforeWriting) {
+  TempDir dir;
+  const test::RunResult made =
+      run_cli({"make", "genus", "-g", "3", "--resolution", "30", "-o", dir.path("g3.ply")});
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  const test::RunResult strict =
+      run_cli({"param", dir.path("g3.ply"), "-o", dir.path("out.ply"), "--report",
+               dir.path("r.json"), "--forms", "0,2", "--strict", "--quiet"});
+  EXPECT_EQ(strict.exit_code, 1) << strict.err;
+  EXPECT_NE(strict.err.find("nothing was written"), std::string::npos) << strict.err;
+  EXPECT_EQ(files_in(dir), 1u);
+}
+
+TEST(Outputs, InfoJsonAlwaysPrintsJson) {
+  TempDir dir;
+  for (const auto &[name, content, code] :
+       {std::tuple<const char *, const char *, int>{"cut.off", "OFF\n3 1 0\n0 0 0\n", 3},
+        {"bad.ply", "ply\nformat ascii 1.0\nelement vertex\nend_header\n", 3}}) {
+    const test::RunResult r = run_cli({"info", dir.write(name, content), "--json"});
+    EXPECT_EQ(r.exit_code, code);
+    const nlohmann::json report = nlohmann::json::parse(r.out);
+    EXPECT_FALSE(report["ok"].get<bool>());
+    EXPECT_EQ(report["error"]["exit_code"], code);
+    EXPECT_NE(report["error"]["message"].get<std::string>().find(name), std::string::npos);
+  }
+  const test::RunResult missing = run_cli({"info", dir.path("missing.off"), "--json"});
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_EQ(nlohmann::json::parse(missing.out)["error"]["exit_code"], 2);
+}
+
+// The map does not depend on the unit: the same branch vertices and the same angle error for
+// eight.off in any unit from 1e-20 to 1e20 (the core computes at a power-of-two unit scale).
+TEST(Outputs, TheMapDoesNotDependOnTheUnit) {
+  TempDir dir;
+  std::set<int> branch_at_one;
+  double error_at_one = 0;
+  for (double scale : {1.0, 1e-20, 1e-7, 3e9, 1e20}) {
+    const std::string input = scaled_eight(dir, scale);
+    const test::RunResult r =
+        run_cli({"param", input, "-o", input + ".uv.ply", "--report", input + ".json", "--quiet"});
+    ASSERT_EQ(r.exit_code, 0) << scale << ": " << r.err;
+    const nlohmann::json report = read_json(input + ".json");
+    std::set<int> branch;
+    for (const auto &b : report["branch_points"])
+      branch.insert(b["vertex"].get<int>());
+    const double error = report["distortion"]["overall"]["angle_error_mean_degrees"].get<double>();
+    if (scale == 1.0) {
+      branch_at_one = branch;
+      error_at_one = error;
+      EXPECT_EQ(branch.size(), 6u);
+    }
+    EXPECT_EQ(branch, branch_at_one) << "scale " << scale;
+    EXPECT_NEAR(error, error_at_one, 1e-9) << "scale " << scale;
+  }
+}
+
+TEST(Outputs, ExtremeCoordinatesAndPillows) {
+  TempDir dir;
+  const std::string faces = "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n"
+                            "3 0 3 5\n";
+  auto octahedron = [&](const char *name, double scale, double stray) {
+    std::ostringstream text;
+    text.precision(17);
+    text << "OFF\n6 8 0\n"
+         << stray << " 0 0\n"
+         << -scale << " 0 0\n0 " << scale << " 0\n0 " << -scale << " 0\n0 0 " << scale << "\n0 0 "
+         << -scale << "\n"
+         << faces;
+    return dir.write(name, text.str());
+  };
+  for (double scale : {1e-200, 1e200, 1e300}) {
+    const test::RunResult r = run_cli(
+        {"param", octahedron("octahedron.off", scale, scale), "-o", dir.path("o.ply"), "--quiet"});
+    EXPECT_EQ(r.exit_code, 0) << scale << ": " << r.err;
+  }
+  const test::RunResult stray =
+      run_cli({"param", octahedron("stray.off", 1, 1e308), "-o", dir.path("s.ply")});
+  EXPECT_EQ(stray.exit_code, 3);
+  EXPECT_NE(stray.err.find("too small for double precision"), std::string::npos) << stray.err;
+  const test::RunResult pillow =
+      run_cli({"param",
+               dir.write("pillow.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"
+                                       "3 0 2 1\n"),
+               "-o", dir.path("p.ply")});
+  EXPECT_EQ(pillow.exit_code, 3);
+  EXPECT_NE(pillow.err.find("faces 0 and 1"), std::string::npos) << pillow.err;
+
+  // A pillowcase: apexes 4 and 5 at the same point, kept apart by the surface. Mapped, with a
+  // note; --repair leaves them apart.
+  std::ostringstream pillowcase;
+  pillowcase << "OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 0\n0 0 0\n" << faces;
+  const std::string input = dir.write("pillowcase.off", pillowcase.str());
+  for (const char *repair : {"--quiet", "--repair"}) {
+    const test::RunResult r =
+        run_cli({"param", input, "-o", dir.path("c.ply"), "--report", dir.path("c.json"), repair});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const nlohmann::json report = read_json(dir.path("c.json"));
+    EXPECT_EQ(report["degree"], 1);
+    ASSERT_EQ(report["notes"].size(), 1u);
+    EXPECT_NE(report["notes"][0].get<std::string>().find("keeps apart"), std::string::npos);
+    EXPECT_TRUE(report["repairs"].empty()) << report["repairs"];
+  }
+}
+
+} // namespace
+} // namespace meromorph

@@ -1,0 +1,36 @@
+// All-or-nothing outputs: every file of a job is written beside its target under a temporary
+// name, and moved into place only when all of them were written.
+//
+// In:  the job's inputs (never written over) and its output paths, one `add` each.
+// Out: for each output, the temporary path to write it to; `commit` moves them all into place.
+//      Whatever was not committed is removed when the object goes away, so a failed job leaves
+//      no output and no partial file behind.
+// Errors: ArgumentError when an output is an input, names the same file as another output, or is
+//      a folder; WriteError (with the system's reason) when a file cannot be written or moved.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace meromorph {
+
+class StagedOutputs {
+public:
+  explicit StagedOutputs(std::vector<std::string> inputs);
+  StagedOutputs(const StagedOutputs &) = delete;
+  StagedOutputs &operator=(const StagedOutputs &) = delete;
+  ~StagedOutputs();
+
+  // Registers `path`; returns the temporary path to write it to.
+  std::string add(const std::string &path);
+  // Moves every temporary file into place.
+  void commit();
+
+private:
+  std::vector<std::string> inputs_, outputs_, temporaries_;
+};
+
+// Writes `text` to `path` (the whole file or nothing); throws WriteError with the system's reason.
+void write_text_file(const std::string &path, const std::string &text);
+
+} // namespace meromorph
