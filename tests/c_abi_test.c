@@ -1,6 +1,8 @@
 /* The C ABI from plain C99: a torus of revolution, and every kind of misuse. Exits non-zero on
  * the first failed check; prints "N passed, 0 failed" at the end. */
+#define _POSIX_C_SOURCE 200809L
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -42,6 +44,45 @@ static void make_torus(void) {
       t[0] = a; t[1] = b; t[2] = c;
       t[3] = a; t[4] = c; t[5] = d;
     }
+}
+
+/* Four threads map tori of different sizes at once; each checks its own result. */
+typedef struct job {
+  int major, minor, ok;
+} job;
+
+static void *map_torus_in_thread(void *argument) {
+  job *work = (job *)argument;
+  const double pi = 3.14159265358979323846;
+  const int n = work->major * work->minor;
+  double *p = malloc(sizeof(double) * 3 * (size_t)n);
+  int32_t *t = malloc(sizeof(int32_t) * 6 * (size_t)n);
+  meromorph_result *r = NULL;
+  int i, j;
+  for (i = 0; i < work->major; ++i)
+    for (j = 0; j < work->minor; ++j) {
+      const double u = 2 * pi * i / work->major, v = 2 * pi * j / work->minor;
+      double *q = p + 3 * (i * work->minor + j);
+      q[0] = (2.0 + cos(v)) * cos(u);
+      q[1] = (2.0 + cos(v)) * sin(u);
+      q[2] = sin(v);
+    }
+  for (i = 0; i < work->major; ++i)
+    for (j = 0; j < work->minor; ++j) {
+      const int32_t a = i * work->minor + j, b = ((i + 1) % work->major) * work->minor + j;
+      const int32_t c = ((i + 1) % work->major) * work->minor + (j + 1) % work->minor;
+      const int32_t d = i * work->minor + (j + 1) % work->minor;
+      int32_t *f = t + 6 * a;
+      f[0] = a; f[1] = b; f[2] = c;
+      f[3] = a; f[4] = c; f[5] = d;
+    }
+  work->ok = meromorph_parameterize_d(p, (size_t)n, t, 2 * (size_t)n, NULL, &r) == MEROMORPH_OK &&
+             meromorph_degree(r) == 2 && meromorph_vertex_count(r) == (size_t)n &&
+             meromorph_branch_point_count(r) == 4;
+  meromorph_result_free(r);
+  free(p);
+  free(t);
+  return NULL;
 }
 
 static int calls = 0;
@@ -132,9 +173,61 @@ int main(void) {
   CHECK(strstr(meromorph_last_error(), "boundary loop") != NULL);
   options.origin_vertex = V + 100;
   CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(strstr(meromorph_last_error(), "origin_vertex") != NULL);
+  options.origin_vertex = -2;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  meromorph_default_options(&options);
+  options.pole_face = -3;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(strstr(meromorph_last_error(), "pole_face") != NULL);
+  options.pole_face = F;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  meromorph_default_options(&options);
+  options.uv_kind = 7;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(strstr(meromorph_last_error(), "uv_kind") != NULL);
+  meromorph_default_options(&options);
+  options.form_pair[1] = -9;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  meromorph_default_options(&options);
+  options.layer_gap = NAN;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(strstr(meromorph_last_error(), "layer_gap") != NULL);
+  options.layer_gap = INFINITY;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  options.layer_gap = 1e308;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  options.layer_gap = -0.5;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
   meromorph_default_options(&options);
   options.struct_size = 4;
   CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  options.struct_size = 100000;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(strstr(meromorph_last_error(), "struct_size") != NULL);
+  meromorph_default_options(&options);
+  CHECK(meromorph_parameterize_d(positions, (size_t)1 << 40, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  positions[3 * 17 + 2] = NAN;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_INPUT);
+  CHECK(strstr(meromorph_last_error(), "vertices 17") != NULL);
+  positions[3 * 17 + 2] = INFINITY;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_INPUT);
+  CHECK(result == NULL);
+  make_torus();
+  CHECK(meromorph_corner_uvs(NULL, corners) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_get_distortion(NULL, &distortion) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_branch_points(NULL, branch_vertices, NULL) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_report_json(NULL) != NULL && meromorph_advice(NULL) != NULL);
+  CHECK(meromorph_vertex_count(NULL) == 0 && meromorph_genus(NULL) == -1);
+  meromorph_default_options(NULL);
+  {
+    pthread_t threads[4];
+    job jobs[4] = {{40, 20, 0}, {44, 22, 0}, {48, 24, 0}, {52, 26, 0}};
+    int k;
+    for (k = 0; k < 4; ++k) CHECK(pthread_create(&threads[k], NULL, map_torus_in_thread, &jobs[k]) == 0);
+    for (k = 0; k < 4; ++k) CHECK(pthread_join(threads[k], NULL) == 0);
+    for (k = 0; k < 4; ++k) CHECK(jobs[k].ok);
+  }
   meromorph_default_options(&options);
   options.progress = cancel_at_third_call;
   CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_CANCELLED);

@@ -1,6 +1,7 @@
 // The C ABI (meromorph.h) over the core: arrays in, the parameterization out, errors as codes.
 #include "meromorph.h"
 
+#include <cstdint>
 #include <cstring>
 #include <new>
 #include <string>
@@ -25,6 +26,29 @@ meromorph_status fail(meromorph_status status, const std::string &message) {
   return status;
 }
 
+// What is wrong with `options` for a mesh of these sizes ("" when nothing is).
+std::string check_options(const meromorph_options &options, size_t vertex_count,
+                          size_t triangle_count) {
+  if (options.uv_kind != 0 && options.uv_kind != 1)
+    return "options.uv_kind is " + std::to_string(options.uv_kind) +
+           "; use 0 (spherical) or 1 (stereographic)";
+  if (options.mobius != 0 && options.mobius != 1)
+    return "options.mobius is " + std::to_string(options.mobius) + "; use 0 or 1";
+  if (options.origin_vertex < -1 || (long long)options.origin_vertex >= (long long)vertex_count)
+    return "options.origin_vertex is " + std::to_string(options.origin_vertex) +
+           "; use -1 (automatic) or a vertex from 0 to " + std::to_string(vertex_count - 1);
+  if (options.pole_face < -1 || (long long)options.pole_face >= (long long)triangle_count)
+    return "options.pole_face is " + std::to_string(options.pole_face) +
+           "; use -1 (automatic) or a triangle from 0 to " + std::to_string(triangle_count - 1);
+  for (int k = 0; k < 2; ++k)
+    if (options.form_pair[k] < -1)
+      return "options.form_pair[" + std::to_string(k) + "] is " +
+             std::to_string(options.form_pair[k]) + "; use -1 (a generic pair) or a form index";
+  if (!(options.layer_gap >= 0 && options.layer_gap <= 1e6))
+    return "options.layer_gap must be a number from 0 to 1e6";
+  return "";
+}
+
 template <class Scalar>
 meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
                               const int32_t *triangles, size_t triangle_count,
@@ -40,15 +64,23 @@ meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
   if (vertex_count == 0 || triangle_count == 0)
     return fail(MEROMORPH_ERROR_INPUT,
                 "the mesh has no " + std::string(vertex_count ? "faces" : "vertices"));
+  if (vertex_count > size_t(INT32_MAX) || triangle_count > size_t(INT32_MAX) / 3)
+    return fail(MEROMORPH_ERROR_ARGUMENT,
+                "the mesh has more vertices or triangles than 32-bit indices can address");
   meromorph_options settings;
   meromorph_default_options(&settings);
   if (options) {
-    if (options->struct_size < offsetof(meromorph_options, progress))
-      return fail(
-          MEROMORPH_ERROR_ARGUMENT,
-          "options.struct_size is too small (not initialized with meromorph_default_options?)");
-    std::memcpy(&settings, options, std::min(options->struct_size, sizeof(settings)));
+    if (options->struct_size != sizeof(meromorph_options))
+      return fail(MEROMORPH_ERROR_ARGUMENT,
+                  "options.struct_size is " + std::to_string(options->struct_size) +
+                      ", which matches no version of meromorph_options (this library's is " +
+                      std::to_string(sizeof(meromorph_options)) +
+                      "): initialize the options with meromorph_default_options");
+    std::memcpy(&settings, options, sizeof(settings));
   }
+  if (const std::string problem = check_options(settings, vertex_count, triangle_count);
+      !problem.empty())
+    return fail(MEROMORPH_ERROR_ARGUMENT, problem);
   try {
     MeshArrays arrays;
     arrays.positions.reserve(vertex_count);

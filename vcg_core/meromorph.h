@@ -7,9 +7,16 @@
  * Out: an opaque result with per-vertex sphere positions, layered-sphere positions, texture
  *      coordinates (per vertex and per triangle corner), layers, branch points with local
  *      degrees, degree, genus, distortion figures and the JSON report of `meromorph param`.
- * Errors: every function returns a status; meromorph_last_error() says what went wrong in words
- *      (with vertex / face indices), for this thread. No C++ exception and no abort crosses this
- *      boundary. Compiles as C99 and as C++.
+ * Errors: meromorph_parameterize_* and the buffer getters return a status; the scalar getters
+ *      return a value that marks a NULL result (-1, 0 or ""). meromorph_last_error() says what went
+ *      wrong in words (with vertex / face indices).
+ * Ownership: the caller owns every buffer it passes (nothing is kept after a call returns) and
+ *      frees a result with meromorph_result_free. Strings returned by a result live as long as
+ *      the result.
+ * Threads: every function may be called from several threads at once on different results and
+ *      meshes; a result may be read by several threads at once; the last error is per thread and
+ *      stays valid until that thread's next call of meromorph_parameterize_*.
+ * No C++ exception and no abort crosses this boundary. Compiles as C99 and as C++.
  */
 #ifndef MEROMORPH_H
 #define MEROMORPH_H
@@ -60,6 +67,14 @@ MEROMORPH_API const char *meromorph_version(void);
 MEROMORPH_API void meromorph_default_options(meromorph_options *options);
 MEROMORPH_API const char *meromorph_last_error(void);
 
+/* Maps a mesh. positions: 3 * vertex_count values (x, y, z per vertex; finite). triangles:
+   3 * triangle_count vertex indices (0-based, < vertex_count). options: NULL for the defaults, or
+   initialized by meromorph_default_options (struct_size must be this header's sizeof); uv_kind 0
+   or 1, mobius 0 or 1, origin_vertex -1 or a vertex, pole_face -1 or a triangle, form_pair -1 or
+   form indices below the genus, layer_gap finite in [0, 1e6]. result: where the new result goes
+   (set to NULL on failure). Returns MEROMORPH_ERROR_ARGUMENT for NULL pointers and bad options,
+   MEROMORPH_ERROR_INPUT for a mesh that cannot be mapped (open, non-manifold, out-of-range
+   index, non-finite coordinate, ...), MEROMORPH_ERROR_CANCELLED when progress returned 0. */
 MEROMORPH_API meromorph_status meromorph_parameterize_d(
     const double *positions, size_t vertex_count, const int32_t *triangles, size_t triangle_count,
     const meromorph_options *options, meromorph_result **result);
@@ -70,6 +85,8 @@ MEROMORPH_API meromorph_status meromorph_parameterize_f(const float *positions, 
                                                         meromorph_result **result);
 MEROMORPH_API void meromorph_result_free(meromorph_result *result);
 
+/* Scalar getters: a NULL result gives 0 for counts, -1 for genus and degree, 0 for the
+   Riemann-Hurwitz flag and "" for strings. */
 MEROMORPH_API size_t meromorph_vertex_count(const meromorph_result *result);
 MEROMORPH_API size_t meromorph_triangle_count(const meromorph_result *result);
 MEROMORPH_API int meromorph_genus(const meromorph_result *result);
@@ -79,7 +96,9 @@ MEROMORPH_API int meromorph_riemann_hurwitz_ok(const meromorph_result *result);
    result. */
 MEROMORPH_API const char *meromorph_advice(const meromorph_result *result);
 
-/* Buffers are the caller's: 3 per vertex, 2 per vertex, 6 per triangle, 1 per vertex. */
+/* Copies into the caller's buffer, which must hold: sphere and layered positions 3 doubles per
+   vertex, vertex uvs 2 doubles per vertex, corner uvs 6 doubles per triangle (u, v for each of
+   its three corners), layers 1 int32 per vertex. MEROMORPH_ERROR_ARGUMENT if a pointer is NULL. */
 MEROMORPH_API meromorph_status meromorph_sphere_positions(const meromorph_result *result,
                                                           double *xyz);
 MEROMORPH_API meromorph_status meromorph_layered_positions(const meromorph_result *result,
@@ -89,7 +108,8 @@ MEROMORPH_API meromorph_status meromorph_corner_uvs(const meromorph_result *resu
 MEROMORPH_API meromorph_status meromorph_layers(const meromorph_result *result, int32_t *layer);
 
 MEROMORPH_API size_t meromorph_branch_point_count(const meromorph_result *result);
-/* vertices and local_degrees: meromorph_branch_point_count entries each. */
+/* vertices and local_degrees: meromorph_branch_point_count entries each; local_degrees may be
+   NULL. */
 MEROMORPH_API meromorph_status meromorph_branch_points(const meromorph_result *result,
                                                        int32_t *vertices, int32_t *local_degrees);
 
@@ -99,6 +119,7 @@ typedef struct meromorph_distortion {
   int32_t folded_faces_away_from_branch_points;
   int32_t folded_faces;
 } meromorph_distortion;
+/* Fills *distortion; MEROMORPH_ERROR_ARGUMENT if a pointer is NULL. */
 MEROMORPH_API meromorph_status meromorph_get_distortion(const meromorph_result *result,
                                                         meromorph_distortion *distortion);
 
