@@ -57,7 +57,13 @@ int run_param(const ParamOptions &options) {
   const JobInput input = read_job_input(options.input, options.repair, mesh);
 
   TerminalProgress bar(options.quiet);
-  const Parameterization map = parameterize(mesh, settings, bar.progress());
+  const Parameterization map = [&] {
+    try {
+      return parameterize(mesh, settings, bar.progress());
+    } catch (const InputError &error) { // what is wrong with the mesh: say which file
+      throw InputError(options.input + ": " + error.what());
+    }
+  }();
   bar.finish();
   if (!map.riemann_hurwitz_ok) {
     std::cerr << "meromorph: " << (options.strict ? "error" : "warning")

@@ -1,0 +1,65 @@
+// libFuzzer target: the C ABI's mesh intake. The bytes become a vertex count, a triangle count,
+// options and the arrays (with whatever values they hold: NaN, huge, negative or out-of-range
+// indices, mismatched counts within the buffers given); meromorph_parameterize_d must return a
+// status, never crash, and a successful result must answer every getter.
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+#include "meromorph.h"
+
+namespace {
+
+template <class T> T take(const uint8_t *&data, size_t &size) {
+  T value{};
+  const size_t n = size < sizeof(T) ? size : sizeof(T);
+  std::memcpy(&value, data, n);
+  data += n;
+  size -= n;
+  return value;
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
+  const size_t vertex_count = take<uint8_t>(data, size) % 64;
+  const size_t triangle_count = take<uint8_t>(data, size) % 128;
+  meromorph_options options;
+  meromorph_default_options(&options);
+  const uint8_t flags = take<uint8_t>(data, size);
+  if (flags & 1) options.uv_kind = take<int8_t>(data, size);
+  if (flags & 2) options.origin_vertex = take<int8_t>(data, size);
+  if (flags & 4) options.pole_face = take<int8_t>(data, size);
+  if (flags & 8) options.layer_gap = take<double>(data, size);
+  if (flags & 16) options.form_pair[0] = take<int8_t>(data, size);
+  if (flags & 32) options.mobius = take<int8_t>(data, size);
+  // Positions: small integers (a lattice, so meshes are often valid) or raw doubles.
+  std::vector<double> positions(3 * vertex_count);
+  for (double &p : positions)
+    p = (flags & 64) ? take<double>(data, size) : double(take<int8_t>(data, size) % 8);
+  std::vector<int32_t> triangles(3 * triangle_count);
+  for (int32_t &t : triangles)
+    t = (flags & 128) ? take<int32_t>(data, size)
+                      : int32_t(take<uint8_t>(data, size) % (vertex_count + 1));
+  meromorph_result *result = nullptr;
+  const meromorph_status status = meromorph_parameterize_d(
+      positions.data(), vertex_count, triangles.data(), triangle_count, &options, &result);
+  if (status == MEROMORPH_OK) {
+    std::vector<double> buffer(6 * (vertex_count + triangle_count) + 6);
+    std::vector<int32_t> ints(vertex_count + 1), degrees(vertex_count + 1);
+    meromorph_sphere_positions(result, buffer.data());
+    meromorph_layered_positions(result, buffer.data());
+    meromorph_vertex_uvs(result, buffer.data());
+    meromorph_corner_uvs(result, buffer.data());
+    meromorph_layers(result, ints.data());
+    if (meromorph_branch_point_count(result) <= vertex_count)
+      meromorph_branch_points(result, ints.data(), degrees.data());
+    meromorph_distortion distortion;
+    meromorph_get_distortion(result, &distortion);
+    (void)std::strlen(meromorph_report_json(result));
+  } else if (result != nullptr || std::strlen(meromorph_last_error()) == 0) {
+    __builtin_trap(); // a failure must leave no result and say why
+  }
+  meromorph_result_free(result);
+  return 0;
+}
