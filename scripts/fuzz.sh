@@ -20,7 +20,7 @@ for target in fuzz_read_ply fuzz_read_off fuzz_read_obj fuzz_read_stl fuzz_c_abi
   fuzz_read_*)
     format="${target#fuzz_read_}"
     for f in "$here"/tests/data/*."$format" "$corpus"/seeds/*."$format" "$corpus"/regressions/*."$format"; do
-      [ -f "$f" ] && [ "$(stat -c %s "$f")" -lt 300000 ] && cp -n "$f" "$work/" 2>/dev/null
+      [ -f "$f" ] && [ "$(stat -c %s "$f")" -lt 20000 ] && cp -n "$f" "$work/" 2>/dev/null
     done
     ;;
   fuzz_c_abi)
@@ -28,7 +28,7 @@ for target in fuzz_read_ply fuzz_read_off fuzz_read_obj fuzz_read_stl fuzz_c_abi
     ;;
   esac
   log="$bin/$target.log"
-  ASAN_OPTIONS=detect_leaks=1 "$bin/$target" -max_total_time="$seconds" -max_len=65536 \
+  ASAN_OPTIONS=detect_leaks=1 "$bin/$target" -max_total_time="$seconds" -max_len=16384 \
     -print_final_stats=1 -artifact_prefix="$bin/findings/$target-" -close_fd_mask=3 \
     "$work" >"$log" 2>&1
   code=$?

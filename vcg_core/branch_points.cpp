@@ -1,5 +1,6 @@
 #include "branch_points.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "sphere_geometry.h"
@@ -25,6 +26,25 @@ double corner_sweep(const std::vector<Eigen::Vector3d> &sphere, const std::array
   if (side_midpoints.empty()) return swept_angle(v, a, b);
   const Eigen::Vector3d &middle = side_midpoints[3 * size_t(face) + size_t(k)];
   return swept_angle(v, a, middle) + swept_angle(v, middle, b);
+}
+
+bool folded_or_flat(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere, int f) {
+  const auto &c = in.corners[f];
+  const Eigen::Vector3d &a = sphere[c[0]], &b = sphere[c[1]], &d = sphere[c[2]];
+  const double chord =
+      std::max({(a - b).squaredNorm(), (b - d).squaredNorm(), (d - a).squaredNorm()});
+  return !(signed_solid_angle(a, b, d) > 1e-9 * chord);
+}
+
+int vertex_winding(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere, int v,
+                   const std::vector<Eigen::Vector3d> &side_midpoints) {
+  double total = 0;
+  for (int f : in.faces_of_vertex[v]) {
+    const auto &c = in.corners[f];
+    const int k = int(std::find(c.begin(), c.end(), v) - c.begin());
+    total += corner_sweep(sphere, c, k, side_midpoints, f);
+  }
+  return int(std::lround(total / (2 * M_PI)));
 }
 
 Branching analyse_branching(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere, int euler,

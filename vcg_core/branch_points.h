@@ -18,6 +18,7 @@
 #include <Eigen/Core>
 
 #include "mesh.h"
+#include "mesh_edges.h"
 
 namespace meromorph {
 
@@ -36,6 +37,14 @@ Branching analyse_branching(const Mesh &mesh, const std::vector<Eigen::Vector3d>
 // The angle the image of the side of face `face` opposite corner k sweeps around that corner.
 double corner_sweep(const std::vector<Eigen::Vector3d> &sphere, const std::array<int, 3> &corners,
                     int k, const std::vector<Eigen::Vector3d> &side_midpoints, int face);
+
+// Folded or flat: a face whose image is not positively oriented by a margin (1e-9 of its longest
+// chord squared): what a repair of the map must not leave behind.
+bool folded_or_flat(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere, int face);
+
+// The local degree of the written map at `vertex` (side_midpoints as in analyse_branching).
+int vertex_winding(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere, int vertex,
+                   const std::vector<Eigen::Vector3d> &side_midpoints = {});
 
 // Signed spherical area of each face's image.
 std::vector<double> face_solid_angles(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere);

@@ -14,63 +14,6 @@
 namespace meromorph {
 namespace {
 
-// Folded or flat: what a repair must not leave behind (a repair that copies a neighbour's image
-// would flatten faces instead of folding them).
-bool not_positive(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere, int f) {
-  const auto &c = in.corners[f];
-  const Eigen::Vector3d &a = sphere[c[0]], &b = sphere[c[1]], &d = sphere[c[2]];
-  const double chord =
-      std::max({(a - b).squaredNorm(), (b - d).squaredNorm(), (d - a).squaredNorm()});
-  return !(signed_solid_angle(a, b, d) > 1e-9 * chord);
-}
-
-int winding(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere, int v,
-            const std::vector<Eigen::Vector3d> &side_midpoints = {}) {
-  double total = 0;
-  for (int f : in.faces_of_vertex[v]) {
-    const auto &c = in.corners[f];
-    const int k = int(std::find(c.begin(), c.end(), v) - c.begin());
-    total += corner_sweep(sphere, c, k, side_midpoints, f);
-  }
-  return int(std::lround(total / (2 * M_PI)));
-}
-
-} // namespace
-
-int place_critical_value(const Mesh &mesh, std::vector<PlaneValue> &values,
-                         const std::vector<int> &candidates, const PlaneValue &critical_value,
-                         const std::vector<Eigen::Vector3d> &side_midpoints) {
-  const FaceIncidence in = face_incidence(mesh);
-  std::vector<Eigen::Vector3d> sphere;
-  for (const PlaneValue &v : values)
-    sphere.push_back(to_sphere(v));
-  const Eigen::Vector3d target = to_sphere(critical_value);
-  int best = candidates.front();
-  std::pair<int, int> best_score{1 << 30, 1 << 30};
-  for (int v : candidates) {
-    const Eigen::Vector3d original = sphere[v];
-    sphere[v] = target;
-    std::set<int> nearby;
-    for (int f : in.faces_of_vertex[v])
-      for (int w : in.corners[f])
-        for (int g : in.faces_of_vertex[w])
-          nearby.insert(g);
-    int bad = 0;
-    for (int f : nearby)
-      bad += not_positive(in, sphere, f);
-    const std::pair<int, int> score{winding(in, sphere, v, side_midpoints) == 2 ? 0 : 1, bad};
-    if (score < best_score) {
-      best_score = score;
-      best = v;
-    }
-    sphere[v] = original;
-  }
-  values[best] = critical_value;
-  return best;
-}
-
-namespace {
-
 // Ring distance from `sources` of every vertex at most `radius` rings away.
 std::map<int, int> ring_distances(const FaceIncidence &in, const std::vector<int> &sources,
                                   int radius) {
@@ -121,11 +64,11 @@ std::vector<std::vector<int>> trouble_spots(const FaceIncidence &in,
   const int vertex_count = int(in.faces_of_vertex.size());
   std::vector<char> trouble(vertex_count, 0);
   for (size_t f = 0; f < in.corners.size(); ++f)
-    if (not_positive(in, sphere, int(f)))
+    if (folded_or_flat(in, sphere, int(f)))
       for (int v : in.corners[f])
         trouble[v] = 1;
   for (int v = 0; v < vertex_count; ++v)
-    if (!trouble[v] && winding(in, sphere, v) < 1) trouble[v] = 1;
+    if (!trouble[v] && vertex_winding(in, sphere, v) < 1) trouble[v] = 1;
   std::vector<std::vector<int>> spots;
   std::vector<char> done(vertex_count, 0);
   for (int seed = 0; seed < vertex_count; ++seed) {
@@ -172,12 +115,12 @@ int snap_branch_points(const Mesh &mesh, const MeshEdges &edges,
     // after doubling: not a fold), then winding not 2 at the branch vertex, then angle distortion.
     using Score = std::tuple<int, int, int, double>;
     auto score_region = [&](int branch_vertex) {
-      Score score{0, 0, branch_vertex < 0 || winding(in, sphere, branch_vertex) != 2, 0.0};
+      Score score{0, 0, branch_vertex < 0 || vertex_winding(in, sphere, branch_vertex) != 2, 0.0};
       for (int f : region_faces) {
         const auto &c = in.corners[f];
         const bool folded = folded_image(sphere[c[0]], sphere[c[1]], sphere[c[2]]);
         std::get<0>(score) += folded;
-        std::get<1>(score) += !folded && not_positive(in, sphere, f);
+        std::get<1>(score) += !folded && folded_or_flat(in, sphere, f);
         std::get<3>(score) += face_angle_error_degrees(mesh, sphere, f);
       }
       return score;
@@ -191,7 +134,7 @@ int snap_branch_points(const Mesh &mesh, const MeshEdges &edges,
     {
       std::set<int> spot_faces;
       for (int v : spot) {
-        critical_points += winding(in, sphere, v) - 1;
+        critical_points += vertex_winding(in, sphere, v) - 1;
         spot_faces.insert(in.faces_of_vertex[v].begin(), in.faces_of_vertex[v].end());
       }
       for (int f : spot_faces) {

@@ -32,11 +32,4 @@ int snap_branch_points(const Mesh &mesh, const MeshEdges &edges,
                        const std::vector<const Eigen::VectorXcd *> &coordinate_forms,
                        std::vector<PlaneValue> &values);
 
-// A critical value known exactly (genus 1: P at a half period) goes to the candidate vertex
-// (those nearest the critical point) that then winds twice with the fewest folded or flat faces
-// around it. Returns that vertex.
-int place_critical_value(const Mesh &mesh, std::vector<PlaneValue> &values,
-                         const std::vector<int> &candidates, const PlaneValue &critical_value,
-                         const std::vector<Eigen::Vector3d> &side_midpoints = {});
-
 } // namespace meromorph

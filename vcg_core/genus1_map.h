@@ -6,9 +6,10 @@
 // Out: z per vertex by integrating psi along a breadth-first tree from the origin (defined up to
 //      the lattice), F = P(z) per vertex (single-valued: P is doubly periodic) as a sphere point,
 //      the P-function object, and the four branch values: P at the three half periods and infinity.
-//      A piecewise-linear map branches only at vertices: for each half period, the 12 vertices
-//      nearest it are the candidates to take its critical value (see place_critical_value); and P
-//      at the midpoint of every face side, to measure winding numbers (branch_points.h).
+//      A piecewise-linear map branches only at vertices: the origin is a vertex, and
+//      genus1_branch_placement.h puts the three others on vertices. The automatic origin is the
+//      first vertex whose corners in the flat coordinate are all below 80 degrees (the double pole
+//      doubles them), else the vertex whose widest corner is narrowest.
 #pragma once
 
 #include <array>
@@ -28,8 +29,6 @@ struct Genus1Map {
   std::vector<PlaneValue> values; // P(z) per vertex
   WeierstrassP p_function;
   std::array<PlaneValue, 4> branch_values;
-  std::array<std::vector<int>, 3> branch_candidates; // per half period, nearest first
-  std::vector<PlaneValue> side_midpoints; // P at the midpoint of the side opposite each corner
   int origin_vertex = -1;
 };
 

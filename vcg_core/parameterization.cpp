@@ -12,6 +12,7 @@
 #include "form_pairs.h"
 #include "form_ratio_map.h"
 #include "genus0_map.h"
+#include "genus1_branch_placement.h"
 #include "genus1_map.h"
 #include "holomorphic_pipeline.h"
 #include "unit_scale.h"
@@ -91,9 +92,8 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
   out.notes = forms.notes;
 
   progress.report(0.6, "meromorphic function");
-  std::vector<PlaneValue> values, critical_values;
-  std::array<std::vector<int>, 3> critical_candidates; // genus 1
-  std::vector<PlaneValue> side_midpoints;              // genus 1 (branch_points.h)
+  std::vector<PlaneValue> values;
+  std::optional<Genus1Map> torus_map; // genus 1
 
   if (out.genus == 0) {
     // The plain cotangent map is the most conformal; if it folds (negative weights on meshes with
@@ -171,9 +171,7 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
                                      forms.riemann_matrix(0, 0), options.origin_vertex);
     values = map.values;
     out.origin_vertex = map.origin_vertex;
-    critical_values.assign(map.branch_values.begin(), map.branch_values.begin() + 3);
-    critical_candidates = map.branch_candidates;
-    side_midpoints = map.side_midpoints;
+    torus_map = map;
     out.method = "genus 1: Weierstrass P-function of the flat coordinate";
   } else {
     out.riemann_matrix = forms.riemann_matrix;
@@ -247,22 +245,15 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
     progress.report(0.7, "Moebius normalisation");
     out.mobius = center_on_sphere(values, areas);
     out.mobius_applied = true;
-    for (PlaneValue &value : critical_values)
-      value = out.mobius.transformation.apply(value);
-    for (PlaneValue &value : side_midpoints)
-      value = out.mobius.transformation.apply(value);
     lap("mobius");
   }
-
-  // A piecewise-linear map branches only at vertices; decided on the centred map, where nothing
-  // is crowded. Genus 1 knows its critical points; genus >= 2 placed them above, per pair.
-  std::vector<Eigen::Vector3d> midpoints;
-  for (const PlaneValue &value : side_midpoints)
-    midpoints.push_back(to_sphere(value));
-  if (out.genus == 1) {
-    for (int k = 0; k < 3; ++k)
-      place_critical_value(mesh, values, critical_candidates[k], critical_values[k], midpoints);
-    out.snapped_branch_points = 3;
+  if (torus_map) {
+    // A piecewise-linear map branches only at vertices: the half periods go onto vertices,
+    // decided on the centred map as it will be written (genus1_branch_placement.h).
+    const Genus1Placement placed = place_half_period_branch_points(
+        mesh, face_incidence(mesh), *torus_map, out.mobius.transformation, values);
+    out.snapped_branch_points =
+        int(std::count(placed.fold_free.begin(), placed.fold_free.end(), true));
     lap("branch_placement");
   }
   out.sphere.reserve(values.size());
@@ -270,7 +261,8 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
     out.sphere.push_back(to_sphere(value));
 
   progress.report(0.8, "branch points and layers");
-  Branching branching = analyse_branching(mesh, out.sphere, out.euler, midpoints);
+  // Everything below is measured on the map as written: vertex values, linear on each face.
+  Branching branching = analyse_branching(mesh, out.sphere, out.euler);
   out.untangled_vertices = untangle_folds(mesh, out.sphere, branching.branch_vertices);
   if (options.mobius && (out.untangled_vertices || out.snapped_branch_points)) {
     // The vertices moved above shift the centroid a little: centre once more.
@@ -281,16 +273,11 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
     out.mobius.transformation = again.transformation.after(out.mobius.transformation);
     out.mobius.centroid_after = again.centroid_after;
     out.mobius.steps += again.steps;
-    for (PlaneValue &value : side_midpoints)
-      value = again.transformation.apply(value);
-    midpoints.clear();
-    for (const PlaneValue &value : side_midpoints)
-      midpoints.push_back(to_sphere(value));
     for (size_t v = 0; v < values.size(); ++v)
       out.sphere[v] = to_sphere(values[v]);
   }
   if (out.untangled_vertices || options.mobius)
-    branching = analyse_branching(mesh, out.sphere, out.euler, midpoints);
+    branching = analyse_branching(mesh, out.sphere, out.euler);
   out.degree = branching.degree;
   out.area_over_4pi = branching.area_over_4pi;
   out.ramification = branching.ramification;

@@ -72,8 +72,10 @@ struct Parameterization {
   std::vector<std::pair<std::string, double>> timings_ms;
   // What the method used.
   int puncture_face = -1, raised_weights = 0, origin_vertex = -1;
-  int snapped_branch_points = 0; // vertices moved onto a critical value (branch_snapping.h)
-  int untangled_vertices = 0;    // sliver corners moved to unfold them (fold_untangling.h)
+  // Branch points placed on vertices fold-free: genus 1, half periods (genus1_branch_placement.h);
+  // genus >= 2, critical points repaired inside faces (branch_snapping.h).
+  int snapped_branch_points = 0;
+  int untangled_vertices = 0; // sliver corners moved to unfold them (fold_untangling.h)
   std::array<int, 2> form_pair{-1, -1};
   FormPair form_coefficients; // genus >= 2: a_k, b_k of the pair used (form_pairs.h)
   int pair_attempts = 0;      // genus >= 2: pairs tried until one was generic

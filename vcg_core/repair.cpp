@@ -68,7 +68,13 @@ std::vector<std::string> repair_mesh(Mesh &mesh) {
   vcg::tri::Allocator<Mesh>::CompactEveryVector(mesh);
 
   vcg::tri::UpdateTopology<Mesh>::FaceFace(mesh);
-  if (Clean::CountNonManifoldEdgeFF(mesh) == 0 && !Clean::IsCoherentlyOrientedMesh(mesh)) {
+  // (Not Clean::CountNonManifoldEdgeFF: it never frees the three face flag bits it takes, so
+  // a long-running host (MeshLab, Blender) would run out of them.)
+  const bool edge_manifold = std::all_of(mesh.face.begin(), mesh.face.end(), [](MeshFace &face) {
+    return face.IsD() || (vcg::face::IsManifold(face, 0) && vcg::face::IsManifold(face, 1) &&
+                          vcg::face::IsManifold(face, 2));
+  });
+  if (edge_manifold && !Clean::IsCoherentlyOrientedMesh(mesh)) {
     bool oriented = false, orientable = true;
     Clean::OrientCoherentlyMesh(mesh, oriented, orientable);
     if (orientable) {

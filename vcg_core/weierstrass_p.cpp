@@ -83,14 +83,20 @@ WeierstrassP::Complex WeierstrassP::reduce(Complex z) const {
   return u;
 }
 
-double WeierstrassP::lattice_distance(Complex z) const {
+WeierstrassP::Complex WeierstrassP::shortest_representative(Complex z) const {
   // The reduced u is within the parallelogram centred at 0; check its neighbours too.
   const Complex u = reduce(z);
-  double best = std::abs(u);
+  Complex best = u;
   for (int a = -1; a <= 1; ++a)
-    for (int b = -1; b <= 1; ++b)
-      best = std::min(best, std::abs(u - double(a) - double(b) * tau_));
-  return best * std::abs(w1_);
+    for (int b = -1; b <= 1; ++b) {
+      const Complex candidate = u - double(a) - double(b) * tau_;
+      if (std::abs(candidate) < std::abs(best)) best = candidate;
+    }
+  return best * w1_;
+}
+
+double WeierstrassP::lattice_distance(Complex z) const {
+  return std::abs(shortest_representative(z));
 }
 
 bool WeierstrassP::is_lattice_point(Complex z, double tolerance) const {

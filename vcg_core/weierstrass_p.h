@@ -23,7 +23,8 @@ public:
   Complex value(Complex z) const;      // P(z); infinite at lattice points
   Complex derivative(Complex z) const; // P'(z)
   bool is_lattice_point(Complex z, double tolerance) const;
-  double lattice_distance(Complex z) const; // distance from z to the nearest lattice point
+  double lattice_distance(Complex z) const;         // distance from z to the nearest lattice point
+  Complex shortest_representative(Complex z) const; // z minus the lattice point nearest it
 
   Complex g2() const { return g2_; }
   Complex g3() const { return g3_; }
