@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <queue>
 
 #include "branch_points.h"
@@ -10,7 +11,7 @@ namespace meromorph {
 namespace {
 
 constexpr int candidates_per_half_period = 40;
-constexpr double fade_factor = 6.0; // K: the fade spans K |s| beyond the one-ring
+constexpr double fade_factor = 4.0; // K: the fade spans K |s| beyond the one-ring
 
 // 1 up to `inner`, 0 from `outer` on, smooth (C1) in between.
 double fade(double distance, double inner, double outer) {
@@ -41,8 +42,16 @@ Shifted shift_onto(const FaceIncidence &in, const Genus1Map &map, int c, Complex
     for (int w : in.corners[size_t(f)])
       ring = std::max(
           ring, std::abs(p.shortest_representative(map.flat[size_t(w)] - map.flat[size_t(c)])));
-  const double outer = ring * (1 + 1e-9) + fade_factor * std::abs(s);
+  // The fade stays clear of the other branch points (the pole at 0, the other half periods):
+  // within half the distance to the nearest; too steep a fade would shear faces over.
+  double clearance = std::numeric_limits<double>::infinity();
+  for (const Complex &other :
+       {Complex(0, 0), p.half_periods()[0], p.half_periods()[1], p.half_periods()[2]})
+    if (p.lattice_distance(other - half_period) > 1e-12)
+      clearance = std::min(clearance, p.lattice_distance(other - map.flat[size_t(c)]) / 2);
+  const double outer = std::min(ring * (1 + 1e-9) + fade_factor * std::abs(s), clearance);
   Shifted out;
+  if (outer < ring * (1 + 1e-9) + 1.5 * std::abs(s)) return out; // no room: not a candidate
   std::vector<int> seen{c};
   std::queue<int> queue;
   queue.push(c);
@@ -123,17 +132,23 @@ void reshape_ring(const FaceIncidence &in, const Genus1Map &map, int c, Shifted 
     return size_t(std::find(shifted.vertices.begin(), shifted.vertices.end(), v) -
                   shifted.vertices.begin());
   };
+  // The chart centred at c's value: w - centre, or 1 / w at the pole.
+  if (position(c) == shifted.vertices.size()) return;
   const PlaneValue centre = shifted.new_values[position(c)];
+  auto chart = [&](Complex w) { return centre.infinite ? 1.0 / w : w - centre.w; };
+  auto unchart = [&](Complex x) { return centre.infinite ? 1.0 / x : centre.w + x; };
   // Keep the ring's overall turn: start where the first neighbour's image is.
   std::vector<Complex> offsets;
   for (int v : ring) {
     const size_t i = position(v);
-    if (i == shifted.vertices.size() || shifted.new_values[i].infinite) return;
-    offsets.push_back(shifted.new_values[i].w - centre.w);
+    if (i == shifted.vertices.size() || shifted.new_values[i].infinite ||
+        std::abs(shifted.new_values[i].w) == 0)
+      return;
+    offsets.push_back(chart(shifted.new_values[i].w));
   }
   double angle = std::arg(offsets[0]);
   for (size_t j = 0; j < ring.size(); ++j) {
-    shifted.new_values[position(ring[j])].w = centre.w + std::polar(std::abs(offsets[j]), angle);
+    shifted.new_values[position(ring[j])].w = unchart(std::polar(std::abs(offsets[j]), angle));
     const double corner =
         doubled[j] > cap ? cap : doubled[j] + excess * std::max(0.0, cap - doubled[j]) / room;
     angle += corner;
@@ -166,6 +181,43 @@ Genus1Placement place_half_period_branch_points(const Mesh &mesh, const FaceInci
   std::vector<Eigen::Vector3d> sphere(values.size());
   for (size_t v = 0; v < values.size(); ++v)
     sphere[v] = to_sphere(values[v]);
+  // The double pole doubles the origin's corners too (in the chart 1 / w): where one is 90
+  // degrees or more, re-place the origin's one-ring, if that folds fewer faces there.
+  {
+    Shifted pole;
+    pole.vertices.push_back(map.origin_vertex);
+    pole.new_values.push_back(PlaneValue{Complex(), true});
+    for (int w : ordered_ring(in, map.origin_vertex)) {
+      pole.vertices.push_back(w);
+      pole.new_values.push_back(PlaneValue{map.p_function.value(map.flat[size_t(w)]), false});
+    }
+    reshape_ring(in, map, map.origin_vertex, pole);
+    std::vector<int> faces;
+    for (int v : pole.vertices)
+      faces.insert(faces.end(), in.faces_of_vertex[size_t(v)].begin(),
+                   in.faces_of_vertex[size_t(v)].end());
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    auto folds = [&] {
+      int count = 0;
+      for (int f : faces)
+        count += folded_or_flat(in, sphere, f);
+      return count;
+    };
+    const int before = folds();
+    std::vector<Eigen::Vector3d> saved;
+    for (size_t j = 0; j < pole.vertices.size(); ++j) {
+      saved.push_back(sphere[size_t(pole.vertices[j])]);
+      sphere[size_t(pole.vertices[j])] = to_sphere(centring.apply(pole.new_values[j]));
+    }
+    if (folds() < before && vertex_winding(in, sphere, map.origin_vertex) == 2) {
+      for (size_t j = 0; j < pole.vertices.size(); ++j)
+        values[size_t(pole.vertices[j])] = centring.apply(pole.new_values[j]);
+    } else {
+      for (size_t j = 0; j < pole.vertices.size(); ++j)
+        sphere[size_t(pole.vertices[j])] = saved[j];
+    }
+  }
   const auto half_periods = map.p_function.half_periods();
   for (int k = 0; k < 3; ++k) {
     std::vector<std::pair<double, int>> by_distance;
@@ -183,12 +235,16 @@ Genus1Placement place_half_period_branch_points(const Mesh &mesh, const FaceInci
       const int c = by_distance[i % count].second;
       ++out.candidates_tried;
       Shifted trial = shift_onto(in, map, c, half_periods[size_t(k)], map.branch_values[size_t(k)]);
+      if (trial.vertices.empty()) continue; // no room for a fade there
       if (i >= count) reshape_ring(in, map, c, trial);
       for (PlaneValue &value : trial.new_values)
         value = centring.apply(value);
       int folded = 0, stray = 0;
       for (int f : trial.fading_faces)
         folded -= folded_or_flat(in, sphere, f);
+      std::vector<int> winding_before;
+      for (int v : trial.vertices)
+        winding_before.push_back(vertex_winding(in, sphere, v));
       std::vector<Eigen::Vector3d> saved;
       for (size_t j = 0; j < trial.vertices.size(); ++j) {
         saved.push_back(sphere[size_t(trial.vertices[j])]);
@@ -198,9 +254,11 @@ Genus1Placement place_half_period_branch_points(const Mesh &mesh, const FaceInci
         folded += folded_or_flat(in, sphere, f);
       for (int f : trial.fading_faces)
         folded += folded_or_flat(in, sphere, f);
-      for (int f : trial.faces)
-        for (int v : in.corners[size_t(f)])
-          stray += v != c && vertex_winding(in, sphere, v) != 1;
+      // No other vertex may start or stop branching (the pole next to a coarse torus's half
+      // period included).
+      for (size_t j = 0; j < trial.vertices.size(); ++j)
+        stray += trial.vertices[j] != c &&
+                 vertex_winding(in, sphere, trial.vertices[j]) != winding_before[j];
       const std::tuple<int, int, int> score{folded, vertex_winding(in, sphere, c) != 2, stray};
       for (size_t j = 0; j < trial.vertices.size(); ++j)
         sphere[size_t(trial.vertices[j])] = saved[j];

@@ -1,0 +1,123 @@
+// Every map the suite makes, judged from the files `meromorph param` wrote, by code of the test's
+// own (written_map.h): no folded face anywhere (branch vertices included), the local degree of
+// every vertex as written equals the `branch` property and the report's branch points, the degree
+// is 1 / 2 / 2g - 2, Riemann-Hurwitz holds and each layer covers the sphere once.
+#include <cmath>
+#include <fstream>
+#include <set>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "test_support.h"
+#include "written_map.h"
+
+namespace meromorph {
+namespace {
+
+using test::run_cli;
+
+// A torus as modelling tools make it: a grid of quads, each split along the same diagonal, so
+// every vertex has two right-angled corners.
+std::string quad_split_torus(const test::TempDir &dir, int major, int minor, double r) {
+  std::ostringstream text;
+  text.precision(17);
+  text << "OFF\n" << major * minor << " " << 2 * major * minor << " 0\n";
+  for (int i = 0; i < major; ++i)
+    for (int j = 0; j < minor; ++j) {
+      const double u = 2 * M_PI * i / major, v = 2 * M_PI * j / minor;
+      text << (1 + r * std::cos(v)) * std::cos(u) << " " << (1 + r * std::cos(v)) * std::sin(u)
+           << " " << r * std::sin(v) << "\n";
+    }
+  for (int i = 0; i < major; ++i)
+    for (int j = 0; j < minor; ++j) {
+      const int a = i * minor + j, b = ((i + 1) % major) * minor + j;
+      const int c = ((i + 1) % major) * minor + (j + 1) % minor, d = i * minor + (j + 1) % minor;
+      text << "3 " << a << " " << b << " " << c << "\n3 " << a << " " << c << " " << d << "\n";
+    }
+  return dir.write("quad_torus_" + std::to_string(major) + ".off", text.str());
+}
+
+void expect_valid_written_map(const test::TempDir &dir, const std::string &input, int genus) {
+  const std::string name = input.substr(input.rfind('/') + 1);
+  const test::RunResult r =
+      run_cli({"param", input, "-o", dir.path(name + ".uv.ply"), "--sphere",
+               dir.path(name + ".sphere.ply"), "--report", dir.path(name + ".json"), "--quiet"});
+  ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+  std::ifstream report_stream(dir.path(name + ".json"));
+  const nlohmann::json report = nlohmann::json::parse(report_stream);
+  const int euler = 2 - 2 * genus;
+  const test::WrittenMap map = test::read_written_map(dir.path(name + ".sphere.ply"), euler);
+  const int degree = genus == 0 ? 1 : genus == 1 ? 2 : 2 * genus - 2;
+
+  EXPECT_EQ(map.folded_faces.size(), 0u)
+      << name << ": folded faces, first " << (map.folded_faces.empty() ? -1 : map.folded_faces[0]);
+  EXPECT_EQ(map.degree, degree) << name << ": area " << map.area_over_4pi << " x 4 pi";
+  EXPECT_TRUE(map.riemann_hurwitz) << name << ": ramification " << map.ramification;
+  EXPECT_EQ(report["degree"], map.degree) << name;
+  EXPECT_EQ(report["genus"], genus) << name;
+  // What the file and the report say about branching is what the written map does.
+  std::set<int> reported;
+  for (const auto &b : report["branch_points"]) {
+    reported.insert(b["vertex"].get<int>());
+    EXPECT_EQ(b["ramification"], map.local_degree[b["vertex"].get<size_t>()]) << name;
+  }
+  EXPECT_EQ(reported, std::set<int>(map.branch_vertices.begin(), map.branch_vertices.end()))
+      << name;
+  for (int v = 0; v < map.vertices; ++v)
+    ASSERT_EQ(map.branch_property[size_t(v)],
+              map.local_degree[size_t(v)] >= 2 ? map.local_degree[size_t(v)] : 0)
+        << name << ": vertex " << v;
+  ASSERT_EQ(int(map.layer_coverage.size()), degree) << name;
+  for (double coverage : map.layer_coverage)
+    EXPECT_NEAR(coverage, 1.0, 0.025) << name;
+}
+
+TEST(WrittenMaps, SharedMeshes) {
+  test::TempDir dir;
+  for (const auto &[name, genus] :
+       std::vector<std::pair<const char *, int>>{{"sphere.off", 0},
+                                                 {"maxplanck.nf25k.off", 0},
+                                                 {"torus.off", 1},
+                                                 {"knot.obj", 1},
+                                                 {"kitten.nf20k.off", 1},
+                                                 {"kitten.nv40k.off", 1},
+                                                 {"eight.off", 2}})
+    expect_valid_written_map(dir, test::data_path(name), genus);
+}
+
+TEST(WrittenMaps, QuadSplitTori) {
+  test::TempDir dir;
+  for (const auto &[major, minor, r] : std::vector<std::tuple<int, int, double>>{
+           {48, 16, 0.25}, {48, 12, 0.25}, {32, 16, 0.5}, {64, 24, 0.4}})
+    expect_valid_written_map(dir, quad_split_torus(dir, major, minor, r), 1);
+}
+
+TEST(WrittenMaps, GeneratedSurfaces) {
+  test::TempDir dir;
+  struct Made {
+    std::vector<std::string> arguments;
+    int genus;
+  };
+  for (const Made &made :
+       std::vector<Made>{{{"sphere", "-s", "3"}, 0},
+                         {{"blob", "--tentacles", "4", "--length", "2"}, 0},
+                         {{"torus", "--method", "grid", "--resolution", "24"}, 1},
+                         {{"torus", "--method", "implicit", "--resolution", "32"}, 1},
+                         {{"genus", "-g", "2", "--resolution", "30"}, 2},
+                         {{"genus", "-g", "3", "--resolution", "30"}, 3},
+                         {{"genus", "-g", "4", "--resolution", "30"}, 4}}) {
+    std::string name = "made";
+    for (const std::string &a : made.arguments)
+      name += "_" + a;
+    std::vector<std::string> arguments = {"make"};
+    arguments.insert(arguments.end(), made.arguments.begin(), made.arguments.end());
+    arguments.insert(arguments.end(), {"-o", dir.path(name + ".ply")});
+    const test::RunResult r = run_cli(arguments);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    expect_valid_written_map(dir, dir.path(name + ".ply"), made.genus);
+  }
+}
+
+} // namespace
+} // namespace meromorph

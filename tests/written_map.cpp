@@ -1,0 +1,152 @@
+#include "written_map.h"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+namespace meromorph::test {
+namespace {
+
+using Vec = std::array<double, 3>;
+
+Vec sub(const Vec &a, const Vec &b) {
+  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+double dot(const Vec &a, const Vec &b) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+Vec cross(const Vec &a, const Vec &b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+// Signed solid angle of the spherical triangle a, b, c (unit vectors): Van Oosterom and
+// Strackee, with the triple product taken on edge differences (exact for tiny triangles).
+double solid_angle(const Vec &a, const Vec &b, const Vec &c) {
+  const double numerator = dot(a, cross(sub(b, a), sub(c, a)));
+  const double denominator = 1 + dot(a, b) + dot(b, c) + dot(c, a);
+  return 2 * std::atan2(numerator, denominator);
+}
+
+// Stereographic projection of x from -p onto the tangent plane at p, in the basis e1, e2.
+std::array<double, 2> chart(const Vec &p, const Vec &e1, const Vec &e2, const Vec &x) {
+  const double scale = 1 / (1 + dot(x, p));
+  return {dot(x, e1) * scale, dot(x, e2) * scale};
+}
+
+template <class T> T read_value(const std::string &bytes, size_t &at) {
+  if (at + sizeof(T) > bytes.size()) throw std::runtime_error("sphere file ends early");
+  T value;
+  std::memcpy(&value, bytes.data() + at, sizeof(T));
+  at += sizeof(T);
+  return value;
+}
+
+} // namespace
+
+WrittenMap read_written_map(const std::string &path, int euler) {
+  std::ifstream stream(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(stream)), {});
+  const size_t header_end = bytes.find("end_header\n");
+  if (bytes.compare(0, 4, "ply\n") != 0 || header_end == std::string::npos)
+    throw std::runtime_error(path + ": not a PLY file");
+  std::istringstream header(bytes.substr(0, header_end));
+  std::vector<std::string> vertex_properties;
+  std::string line, element;
+  WrittenMap out;
+  while (std::getline(header, line)) {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (keyword == "format") {
+      std::string format;
+      words >> format;
+      if (format != "binary_little_endian") throw std::runtime_error("expected binary PLY");
+    } else if (keyword == "element") {
+      int count = 0;
+      words >> element >> count;
+      (element == "vertex" ? out.vertices : out.faces) = count;
+    } else if (keyword == "property" && element == "vertex") {
+      std::string type, name;
+      words >> type >> name;
+      vertex_properties.push_back(type + " " + name);
+    }
+  }
+  size_t at = header_end + std::strlen("end_header\n");
+  for (int v = 0; v < out.vertices; ++v) {
+    Vec p{};
+    int layer = 0, branch = 0;
+    for (const std::string &property : vertex_properties) {
+      if (property == "double x")
+        p[0] = read_value<double>(bytes, at);
+      else if (property == "double y")
+        p[1] = read_value<double>(bytes, at);
+      else if (property == "double z")
+        p[2] = read_value<double>(bytes, at);
+      else if (property == "int layer")
+        layer = read_value<int32_t>(bytes, at);
+      else if (property == "uchar branch")
+        branch = read_value<uint8_t>(bytes, at);
+      else
+        throw std::runtime_error("unexpected vertex property " + property);
+    }
+    const double r = std::sqrt(dot(p, p));
+    out.sphere.push_back({p[0] / r, p[1] / r, p[2] / r});
+    out.layer.push_back(layer);
+    out.branch_property.push_back(branch);
+  }
+  for (int f = 0; f < out.faces; ++f) {
+    if (read_value<uint8_t>(bytes, at) != 3) throw std::runtime_error("expected triangles");
+    std::array<int, 3> t;
+    for (int &index : t)
+      index = read_value<int32_t>(bytes, at);
+    out.triangles.push_back(t);
+  }
+
+  // Folds, degree and layer coverage from the faces' images.
+  std::vector<double> winding(size_t(out.vertices), 0.0);
+  double total = 0;
+  std::map<int, double> by_layer;
+  for (int f = 0; f < out.faces; ++f) {
+    const auto &t = out.triangles[size_t(f)];
+    const Vec &a = out.sphere[size_t(t[0])], &b = out.sphere[size_t(t[1])],
+              &c = out.sphere[size_t(t[2])];
+    if (!(dot(a, cross(sub(b, a), sub(c, a))) > 0)) out.folded_faces.push_back(f);
+    const double angle = solid_angle(a, b, c);
+    total += angle;
+    for (int k = 0; k < 3; ++k)
+      by_layer[out.layer[size_t(t[size_t(k)])]] += angle / 3;
+    // Winding: each face (v, a, b) adds the angle from a's image to b's around v's image.
+    for (int k = 0; k < 3; ++k) {
+      const Vec &p = out.sphere[size_t(t[size_t(k)])];
+      const Vec &x = out.sphere[size_t(t[size_t((k + 1) % 3)])];
+      const Vec &y = out.sphere[size_t(t[size_t((k + 2) % 3)])];
+      Vec helper = std::abs(p[0]) < 0.9 ? Vec{1, 0, 0} : Vec{0, 1, 0};
+      Vec e1 = cross(p, helper);
+      const double n = std::sqrt(dot(e1, e1));
+      e1 = {e1[0] / n, e1[1] / n, e1[2] / n};
+      const Vec e2 = cross(p, e1);
+      const auto qx = chart(p, e1, e2, x), qy = chart(p, e1, e2, y);
+      winding[size_t(t[size_t(k)])] +=
+          std::atan2(qx[0] * qy[1] - qx[1] * qy[0], qx[0] * qy[0] + qx[1] * qy[1]);
+    }
+  }
+  for (int v = 0; v < out.vertices; ++v) {
+    const int e = int(std::lround(winding[size_t(v)] / (2 * M_PI)));
+    out.local_degree.push_back(e);
+    if (e >= 2) out.branch_vertices.push_back(v);
+    out.ramification += e - 1;
+  }
+  out.area_over_4pi = total / (4 * M_PI);
+  out.degree = int(std::lround(out.area_over_4pi));
+  out.riemann_hurwitz =
+      euler == 2 * out.degree - out.ramification && std::abs(out.area_over_4pi - out.degree) < 0.01;
+  for (const auto &[layer, area] : by_layer)
+    out.layer_coverage.push_back(area / (4 * M_PI));
+  return out;
+}
+
+} // namespace meromorph::test

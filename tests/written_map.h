@@ -1,0 +1,37 @@
+// An independent check of a written map: reads the layered-sphere file that `meromorph param
+// --sphere` wrote, with a PLY parser and geometry of its own (nothing from the core), and
+// re-derives what the report claims.
+//
+// In:  the sphere file (binary little-endian PLY: vertex x, y, z, int layer, uchar branch; face
+//      vertex_indices) and the Euler characteristic of the surface.
+// Out: `WrittenMap`: folded faces (chordal image triangle with non-positive signed volume),
+//      the local degree of every vertex (winding of its one-ring's image in the tangent-plane
+//      stereographic chart at its image), the degree (total signed solid angle / 4 pi), whether
+//      Riemann-Hurwitz holds, the `branch` property as written, and each layer's signed area over
+//      4 pi (each face counted a third for the layer of each of its corners).
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace meromorph::test {
+
+struct WrittenMap {
+  int vertices = 0, faces = 0;
+  std::vector<std::array<double, 3>> sphere; // radial projections onto the unit sphere
+  std::vector<std::array<int, 3>> triangles;
+  std::vector<int> layer, branch_property;
+  std::vector<int> folded_faces;
+  std::vector<int> local_degree;
+  std::vector<int> branch_vertices; // local degree >= 2
+  int ramification = 0;
+  double area_over_4pi = 0;
+  int degree = 0;
+  bool riemann_hurwitz = false;
+  std::vector<double> layer_coverage; // per layer: signed area / 4 pi
+};
+
+WrittenMap read_written_map(const std::string &sphere_ply, int euler);
+
+} // namespace meromorph::test
