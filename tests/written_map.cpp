@@ -149,4 +149,61 @@ WrittenMap read_written_map(const std::string &path, int euler) {
   return out;
 }
 
+double written_angle_error_degrees(const WrittenMap &map, const std::string &surface_ply) {
+  std::ifstream stream(surface_ply, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(stream)), {});
+  const size_t header_end = bytes.find("end_header\n");
+  if (bytes.compare(0, 4, "ply\n") != 0 || header_end == std::string::npos)
+    throw std::runtime_error(surface_ply + ": not a PLY file");
+  std::istringstream header(bytes.substr(0, header_end));
+  std::vector<std::string> vertex_properties;
+  std::string line, element;
+  int vertices = 0;
+  while (std::getline(header, line)) {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (keyword == "element") {
+      int count = 0;
+      words >> element >> count;
+      if (element == "vertex") vertices = count;
+    } else if (keyword == "property" && element == "vertex") {
+      std::string type, name;
+      words >> type >> name;
+      vertex_properties.push_back(type + " " + name);
+    }
+  }
+  if (vertices != map.vertices) throw std::runtime_error(surface_ply + ": other vertex count");
+  size_t at = header_end + std::strlen("end_header\n");
+  std::vector<Vec> position(static_cast<size_t>(vertices));
+  for (Vec &p : position)
+    for (const std::string &property : vertex_properties) {
+      if (property == "double x")
+        p[0] = read_value<double>(bytes, at);
+      else if (property == "double y")
+        p[1] = read_value<double>(bytes, at);
+      else if (property == "double z")
+        p[2] = read_value<double>(bytes, at);
+      else if (property.rfind("double ", 0) == 0)
+        read_value<double>(bytes, at);
+      else if (property.rfind("float ", 0) == 0)
+        read_value<float>(bytes, at);
+      else
+        throw std::runtime_error("unexpected vertex property " + property);
+    }
+  auto corner = [](const Vec &at, const Vec &b, const Vec &c) {
+    const Vec u = sub(b, at), v = sub(c, at);
+    const Vec n = cross(u, v);
+    return std::atan2(std::sqrt(dot(n, n)), dot(u, v));
+  };
+  double sum = 0;
+  for (const auto &t : map.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[size_t(k)], b = t[size_t((k + 1) % 3)], c = t[size_t((k + 2) % 3)];
+      sum += std::abs(corner(position[size_t(a)], position[size_t(b)], position[size_t(c)]) -
+                      corner(map.sphere[size_t(a)], map.sphere[size_t(b)], map.sphere[size_t(c)]));
+    }
+  return sum / (3.0 * double(map.triangles.size())) * 180 / M_PI;
+}
+
 } // namespace meromorph::test

@@ -34,4 +34,8 @@ struct WrittenMap {
 
 WrittenMap read_written_map(const std::string &sphere_ply, int euler);
 
+// The mean corner-angle error in degrees between the surface as written by `param -o` (binary
+// PLY with double x, y, z) and the chordal triangles of the written sphere.
+double written_angle_error_degrees(const WrittenMap &map, const std::string &surface_ply);
+
 } // namespace meromorph::test

@@ -116,6 +116,7 @@ Genus0Map genus0_map(const Mesh &mesh, const MeshEdges &edges, const std::vector
     if (size < 1e-12 * distance) continue;
     if (std::imag(std::conj(z[1] - z[0]) * (z[2] - z[0])) <= 0) out.folded_faces.push_back(int(f));
   }
+  out.weights = std::move(positive);
   return out;
 }
 

@@ -28,6 +28,7 @@ struct Genus0Map {
   std::vector<PlaneValue> values;
   int puncture_face = -1;
   int raised_weights = 0;
+  std::vector<double> weights;   // the edge weights solved with (some raised)
   std::vector<int> folded_faces; // in the plane, before projection, among faces doubles resolve
 };
 

@@ -11,6 +11,7 @@
 #include "fold_untangling.h"
 #include "form_pairs.h"
 #include "form_ratio_map.h"
+#include "genus0_correction.h"
 #include "genus0_map.h"
 #include "genus1_branch_placement.h"
 #include "genus1_map.h"
@@ -126,13 +127,24 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
         attempt = genus0_map(mesh, forms.edges, forms.weights, options.solver, pole_face, {});
       return attempt;
     };
-    Genus0Map map = solve(options.puncture_face);
+    // The pinned-pole map, its shear removed and its pole region solved again
+    // (genus0_correction.h).
+    auto solve_and_correct = [&](int pole_face) {
+      Genus0Map map = solve(pole_face);
+      map.values = correct_genus0_map(mesh, forms.edges, map.weights, options.solver,
+                                      map.puncture_face, map.values)
+                       .values;
+      return map;
+    };
+    Genus0Map map = solve_and_correct(options.puncture_face);
     if (options.puncture_face < 0) {
-      // Parts far from the pole crowd into a tiny spot, where rounding can fold faces and the
-      // pole model is least accurate. Solve again with the pole at the face that the centred map
-      // puts on the north pole: the new map is nearly centred, so nothing is crowded.
+      // Parts far from the pole crowd into a tiny spot, where rounding can fold or collapse
+      // faces. Then solve again with the pole at the face that the centred map puts on the north
+      // pole: the new map is nearly centred, so nothing is crowded.
       std::vector<PlaneValue> centred = map.values;
-      if (center_on_sphere(centred, areas).centroid_before.norm() > 1e-3) {
+      const bool centred_ok = center_on_sphere(centred, areas).centroid_after.norm() < 1e-9;
+      const int collapsed = collapsed_faces(mesh, centred);
+      if (!centred_ok || collapsed > 0 || !folded_plane_faces(mesh, centred).empty()) {
         // Any face the centred map puts near the north pole will do; the best-shaped of those
         // models the pole most accurately.
         int pole_face = -1;
@@ -151,11 +163,10 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
         if (pole_face >= 0) {
           // Where long thin parts shrink below what doubles resolve, a pole in the wrong place
           // loses more of them: keep the first solution if the second collapses more faces.
-          Genus0Map again = solve(pole_face);
+          Genus0Map again = solve_and_correct(pole_face);
           std::vector<PlaneValue> centred_again = again.values;
           center_on_sphere(centred_again, areas);
-          if (collapsed_faces(mesh, centred_again) <= collapsed_faces(mesh, centred))
-            map = std::move(again);
+          if (collapsed_faces(mesh, centred_again) <= collapsed) map = std::move(again);
         }
       }
     }
