@@ -17,7 +17,7 @@ packages=(
   meshlab xvfb xauth
   blender python3-numpy
   libcli11-dev nlohmann-json3-dev
-  dpkg-dev clang-format
+  dpkg-dev clang-format clang libclang-rt-14-dev
 )
 
 missing=()

@@ -9,11 +9,24 @@
 #include <vcg/complex/algorithms/stat.h>
 
 namespace meromorph {
+namespace {
+
+using Volume = vcg::SimpleVolume<vcg::SimpleVoxel<double>>;
+
+// vcglib's walker allocates its five slice buffers and never frees them.
+struct Walker : vcg::tri::TrivialWalker<Mesh, Volume> {
+  ~Walker() {
+    if (_slice_dimension == 0) return;
+    for (VertexIndexPointer buffer : {_x_cs, _y_cs, _z_cs, _x_ns, _z_ns})
+      delete[] buffer;
+  }
+  using VertexIndexPointer = decltype(_x_cs);
+};
+
+} // namespace
 
 void extract_isosurface(const ScalarField &field, const vcg::Box3d &box, double voxel, Mesh &mesh,
                         bool remesh) {
-  using Volume = vcg::SimpleVolume<vcg::SimpleVoxel<double>>;
-  using Walker = vcg::tri::TrivialWalker<Mesh, Volume>;
   using MarchingCubes = vcg::tri::MarchingCubes<Mesh, Walker>;
 
   // Two voxels of margin on every side: the walker skips the last layer of cells.
