@@ -1,5 +1,7 @@
 #include "mobius_centering.h"
 
+#include <algorithm>
+
 #include <Eigen/Dense>
 
 namespace meromorph {
@@ -40,17 +42,31 @@ std::vector<Eigen::Vector3d> project(const std::vector<PlaneValue> &values) {
   return points;
 }
 
-// The plane form of the ball translation by c: fitted through three well-separated points.
+// The plane form of the ball translation by c: fitted through three points of the 26 cube
+// directions whose points and images stay farthest from infinity (a strong translation pushes
+// nearly everything towards one spot, which may be the north pole).
 Mobius translation_matrix(const Eigen::Vector3d &c) {
-  const Eigen::Vector3d axes[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
-                                   {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
+  std::vector<std::pair<double, Eigen::Vector3d>> samples;
+  for (int x = -1; x <= 1; ++x)
+    for (int y = -1; y <= 1; ++y)
+      for (int z = -1; z <= 1; ++z)
+        if (x || y || z) {
+          const Eigen::Vector3d p = Eigen::Vector3d(x, y, z).normalized();
+          samples.push_back({std::max(p.z(), translate(p, c).z()), p});
+        }
+  std::sort(samples.begin(), samples.end(),
+            [](const auto &a, const auto &b) { return a.first < b.first; });
   Complex from[3], to[3];
   int found = 0;
-  for (const Eigen::Vector3d &p : axes) {
-    const Eigen::Vector3d image = translate(p, c);
-    if (p.z() > 0.5 || image.z() > 0.5) continue; // keep away from infinity
-    from[found] = to_plane(p);
-    to[found] = to_plane(image);
+  for (const auto &[height, p] : samples) {
+    if (height > 0.999) break;
+    const Complex w = to_plane(p), image = to_plane(translate(p, c));
+    bool apart = true;
+    for (int k = 0; k < found; ++k)
+      apart &= std::abs(w - from[k]) > 1e-3 && std::abs(image - to[k]) > 1e-9;
+    if (!apart) continue;
+    from[found] = w;
+    to[found] = image;
     if (++found == 3) break;
   }
   if (found < 3) return Mobius{};
