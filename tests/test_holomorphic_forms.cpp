@@ -1,11 +1,13 @@
 // Holomorphic 1-forms against exact results: torus moduli, Riemann's bilinear relations,
 // closedness, co-closedness, the symplectic basis, invariance, and the two solvers.
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
 
+#include "cotan_laplacian.h"
 #include "errors.h"
 #include "holomorphic_pipeline.h"
 #include "rigid_motion.h"
@@ -62,14 +64,29 @@ void expect_riemann_relations(const HolomorphicForms &forms, const std::string &
 }
 
 void expect_exact_structure(const HolomorphicForms &forms, const std::string &name) {
-  // Closed forms close on every face; harmonic forms are co-closed to the solver's precision.
+  // Closed forms close on every face of the triangulation they live on (the intrinsic Delaunay
+  // one); harmonic forms are co-closed to the solver's precision.
+  ASSERT_TRUE(forms.intrinsic) << name;
+  const MeshEdges &intrinsic = forms.intrinsic->edges();
   for (const Eigen::VectorXd &omega : forms.homology.dual_forms)
-    for (size_t f = 0; f < forms.edges.face_edges.size(); ++f) {
+    for (size_t f = 0; f < intrinsic.face_edges.size(); ++f) {
       double sum = 0;
       for (int k = 0; k < 3; ++k)
-        sum += forms.edges.face_signs[f][k] * omega[forms.edges.face_edges[f][k]];
+        sum += intrinsic.face_signs[f][k] * omega[intrinsic.face_edges[f][k]];
       ASSERT_LE(std::abs(sum), 1e-12) << name << " face " << f;
     }
+  // Taken to the mesh's edges along homotopic paths, the normalized forms close on every face of
+  // the mesh too.
+  for (const Eigen::VectorXcd &psi : forms.normalized) {
+    double scale = psi.cwiseAbs().maxCoeff(), worst = 0;
+    for (size_t f = 0; f < forms.edges.face_edges.size(); ++f) {
+      std::complex<double> sum = 0;
+      for (int k = 0; k < 3; ++k)
+        sum += double(forms.edges.face_signs[f][k]) * psi[forms.edges.face_edges[f][k]];
+      worst = std::max(worst, std::abs(sum));
+    }
+    EXPECT_LE(worst, 1e-9 * scale) << name;
+  }
   EXPECT_LE(forms.closedness_residual, 1e-12) << name;
   EXPECT_LE(forms.coclosedness_residual, 1e-9) << name;
   // Loop i meets dual loop j iff i = j.
@@ -111,6 +128,24 @@ TEST(HolomorphicForms, RawMarchingCubesTrianglesDoNotBreakIt) {
   const HolomorphicForms forms = compute_holomorphic_forms(mesh);
   expect_exact_structure(forms, "raw marching cubes");
   expect_riemann_relations(forms, "raw marching cubes");
+  // Its obtuse triangles give negative cotangent weights; the intrinsic Delaunay triangulation
+  // the forms are computed on has none.
+  const std::vector<double> mesh_weights = cotan_weights(mesh, forms.edges);
+  EXPECT_LT(*std::min_element(mesh_weights.begin(), mesh_weights.end()), -0.1);
+  EXPECT_GT(forms.intrinsic->flips(), 0);
+  const std::vector<double> weights = forms.intrinsic->cotan_weights();
+  EXPECT_GE(*std::min_element(weights.begin(), weights.end()), -1e-9);
+}
+
+TEST(HolomorphicForms, ModulusOfANeedleTorusMatchesTheExactValue) {
+  // The implicit torus by raw marching cubes (needles and caps): the exact modulus
+  // i sqrt(R^2 - r^2) / r holds on the intrinsic Delaunay triangulation as on clean meshes.
+  Mesh mesh;
+  make_implicit_torus(mesh, 2.0, 1.0, 48, false);
+  const HolomorphicForms forms = compute_holomorphic_forms(mesh);
+  ASSERT_TRUE(forms.modulus);
+  const std::complex<double> exact(0, std::sqrt(3.0));
+  EXPECT_LT(std::abs(*forms.modulus - exact), 0.01 * std::abs(exact)) << *forms.modulus;
 }
 
 TEST(HolomorphicForms, InvariantUnderRigidMotionAndScale) {

@@ -9,6 +9,7 @@
 #include "face_vectors.h"
 #include "harmonic_forms.h"
 #include "holomorphic_forms.h"
+#include "intrinsic_delaunay.h"
 #include "periods.h"
 #include "unit_scale.h"
 #include "validation.h"
@@ -61,34 +62,42 @@ HolomorphicForms compute_holomorphic_forms(const Mesh &input, SolverKind solver,
   progress.report(0.0, "edges and cotangent weights");
   out.edges = build_mesh_edges(mesh);
   out.weights = cotan_weights(mesh, out.edges);
+  out.genus = (2 - (vertex_count - out.edges.edge_count() + int(mesh.face.size()))) / 2;
+  if (out.genus == 0) {
+    clock.done("laplacian");
+    return out; // no forms: nothing to factor
+  }
+  // The forms live on the intrinsic Delaunay triangulation (non-negative weights), and are taken
+  // back to the mesh's edges at the end.
+  out.intrinsic = std::make_shared<IntrinsicDelaunay>(mesh, out.edges);
+  const MeshEdges &edges = out.intrinsic->edges();
+  const std::vector<double> weights = out.intrinsic->cotan_weights();
+  const Mesh &faces = out.intrinsic->flat_faces();
   clock.done("laplacian");
 
   progress.report(0.1, "homology basis");
-  out.homology = tree_cotree(mesh, out.edges);
-  out.genus = out.homology.genus;
+  out.homology = tree_cotree(vertex_count, edges);
   clock.done("homology");
-  if (out.genus == 0) return out; // no forms: nothing to factor
 
   progress.report(0.2, "factoring the Laplacian");
   const std::unique_ptr<LaplacianSolver> factored =
-      factor_laplacian(cotan_laplacian(vertex_count, out.edges, out.weights), solver);
+      factor_laplacian(cotan_laplacian(vertex_count, edges, weights), solver);
   clock.done("factorization");
 
   progress.report(0.6, "harmonic forms");
-  out.harmonic =
-      harmonic_forms(out.homology.dual_forms, vertex_count, out.edges, out.weights, *factored);
+  out.harmonic = harmonic_forms(out.homology.dual_forms, vertex_count, edges, weights, *factored);
   clock.done("harmonic");
 
   progress.report(0.8, "holomorphic forms and periods");
-  const FaceGeometry geometry = face_geometry(mesh);
+  const FaceGeometry geometry = face_geometry(faces);
   std::vector<Eigen::MatrixX3d> vectors;
   for (const Eigen::VectorXd &h : out.harmonic) {
-    vectors.push_back(face_vectors(mesh, out.edges, geometry, h));
-    out.closedness_residual = std::max(out.closedness_residual, closedness(out.edges, h));
-    const Eigen::VectorXd divergence = weighted_divergence(vertex_count, out.edges, out.weights, h);
+    vectors.push_back(face_vectors(faces, edges, geometry, h));
+    out.closedness_residual = std::max(out.closedness_residual, closedness(edges, h));
+    const Eigen::VectorXd divergence = weighted_divergence(vertex_count, edges, weights, h);
     double scale = 0;
-    for (int e = 0; e < out.edges.edge_count(); ++e)
-      scale = std::max(scale, std::abs(out.weights[e] * h[e]));
+    for (int e = 0; e < edges.edge_count(); ++e)
+      scale = std::max(scale, std::abs(weights[e] * h[e]));
     out.coclosedness_residual = std::max(
         out.coclosedness_residual, divergence.tail(vertex_count - 1).cwiseAbs().maxCoeff() / scale);
   }
@@ -139,7 +148,7 @@ HolomorphicForms compute_holomorphic_forms(const Mesh &input, SolverKind solver,
   // Edge values of phi_k = sum_j P_jk tau_j, then of the normalized psi = A^-1 phi.
   std::vector<Eigen::VectorXcd> tau;
   for (int j = 0; j < n; ++j) {
-    Eigen::VectorXd conjugate = Eigen::VectorXd::Zero(out.edges.edge_count());
+    Eigen::VectorXd conjugate = Eigen::VectorXd::Zero(edges.edge_count());
     for (int l = 0; l < n; ++l)
       conjugate += out.conjugate(j, l) * out.harmonic[l];
     tau.push_back(out.harmonic[j].cast<std::complex<double>>() +
@@ -147,18 +156,18 @@ HolomorphicForms compute_holomorphic_forms(const Mesh &input, SolverKind solver,
   }
   const Eigen::MatrixXcd a_inverse = out.a_periods.inverse();
   for (int m = 0; m < g; ++m) {
-    Eigen::VectorXcd psi = Eigen::VectorXcd::Zero(out.edges.edge_count());
+    Eigen::VectorXcd psi = Eigen::VectorXcd::Zero(edges.edge_count());
     for (int k = 0; k < g; ++k)
       for (int j = 0; j < n; ++j)
         psi += a_inverse(m, k) * basis(j, k) * tau[j];
-    out.normalized.push_back(std::move(psi));
+    out.normalized.push_back(out.intrinsic->integrate_along_mesh_edges(psi));
   }
 
   // Non-holomorphicity of phi_1.
   Eigen::VectorXd first = basis.col(0);
   const Eigen::MatrixX3d real_part = combine(vectors, first);
   const Eigen::MatrixX3d imaginary_part = combine(vectors, out.conjugate.transpose() * first);
-  const LocalCoefficients local = local_coefficients(mesh, geometry, real_part, imaginary_part);
+  const LocalCoefficients local = local_coefficients(faces, geometry, real_part, imaginary_part);
   double weighted = 0, total_area = 0;
   for (size_t f = 0; f < local.f.size(); ++f) {
     const double ratio = std::abs(local.g[f]) / std::abs(local.f[f]);

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <complex>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
@@ -17,6 +18,7 @@
 #include <Eigen/Core>
 
 #include "homology_basis.h"
+#include "intrinsic_delaunay.h"
 #include "laplacian_solver.h"
 #include "mesh.h"
 #include "mesh_edges.h"
@@ -26,8 +28,11 @@ namespace meromorph {
 
 struct HolomorphicForms {
   int genus = 0;
-  MeshEdges edges;
-  std::vector<double> weights;
+  MeshEdges edges;             // the mesh's
+  std::vector<double> weights; // the mesh's cotangent weights
+  // Genus >= 1: the triangulation the forms are computed on (intrinsic_delaunay.h); the homology
+  // basis and the harmonic forms live on its edges, `normalized` on the mesh's.
+  std::shared_ptr<const IntrinsicDelaunay> intrinsic;
   HomologyBasis homology;
   std::vector<Eigen::VectorXd> harmonic;       // h_j, 2g of them
   Eigen::MatrixXd conjugate;                   // *h_j ~ sum_k C_jk h_k

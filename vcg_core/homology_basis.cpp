@@ -42,8 +42,8 @@ double integrate(const Eigen::VectorXd &form, const std::vector<std::pair<int, i
   return sum;
 }
 
-HomologyBasis tree_cotree(const Mesh &mesh, const MeshEdges &edges) {
-  const int vertex_count = int(mesh.vert.size()), face_count = int(mesh.face.size());
+HomologyBasis tree_cotree(int vertex_count, const MeshEdges &edges) {
+  const int face_count = int(edges.face_edges.size());
   const int edge_count = edges.edge_count();
 
   const std::vector<std::vector<int>> incident = edges_at_vertices(edges, vertex_count);
