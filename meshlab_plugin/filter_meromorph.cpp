@@ -168,6 +168,8 @@ bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
   meromorph_get_distortion(result, &distortion);
   const int genus = meromorph_genus(result), degree = meromorph_degree(result);
   const bool riemann_hurwitz = meromorph_riemann_hurwitz_ok(result) != 0;
+  const bool valid = meromorph_map_valid(result) != 0;
+  const std::string invalid_reasons = meromorph_invalid_reasons(result);
   const std::string advice = meromorph_advice(result);
   meromorph_result_free(result);
 
@@ -216,11 +218,11 @@ bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
       branch_list.toStdString().c_str(), riemann_hurwitz ? "holds" : "FAILS",
       distortion.angle_error_mean_degrees, distortion.quasi_conformal_mean,
       int(distortion.folded_faces_away_from_branch_points), (long long)timer.elapsed());
-  if (!riemann_hurwitz)
+  if (!valid)
     Log(GLLogStream::WARNING,
-        "Riemann-Hurwitz does not hold: the branch points or the degree were not measured "
-        "reliably on this mesh: %s",
-        advice.c_str());
+        "The map is not a valid branched cover of the sphere on this triangulation: %s. What to "
+        "do: %s",
+        invalid_reasons.c_str(), advice.c_str());
   return true;
 }
 

@@ -11,14 +11,15 @@
 
 static int passed = 0;
 
-#define CHECK(condition)                                                                          \
-  do {                                                                                            \
-    if (!(condition)) {                                                                           \
-      printf("FAILED line %d: %s (last error: %s)\n", __LINE__, #condition, meromorph_last_error()); \
-      printf("%d passed, 1 failed\n", passed);                                                    \
-      exit(1);                                                                                    \
-    }                                                                                             \
-    ++passed;                                                                                     \
+#define CHECK(condition)                                                                           \
+  do {                                                                                             \
+    if (!(condition)) {                                                                            \
+      printf("FAILED line %d: %s (last error: %s)\n", __LINE__, #condition,                        \
+             meromorph_last_error());                                                              \
+      printf("%d passed, 1 failed\n", passed);                                                     \
+      exit(1);                                                                                     \
+    }                                                                                              \
+    ++passed;                                                                                      \
   } while (0)
 
 enum { MAJOR = 48, MINOR = 24, V = MAJOR * MINOR, F = 2 * V };
@@ -39,10 +40,15 @@ static void make_torus(void) {
   for (i = 0; i < MAJOR; ++i)
     for (j = 0; j < MINOR; ++j) {
       const int32_t a = i * MINOR + j, b = ((i + 1) % MAJOR) * MINOR + j;
-      const int32_t c = ((i + 1) % MAJOR) * MINOR + (j + 1) % MINOR, d = i * MINOR + (j + 1) % MINOR;
+      const int32_t c = ((i + 1) % MAJOR) * MINOR + (j + 1) % MINOR,
+                    d = i * MINOR + (j + 1) % MINOR;
       int32_t *t = triangles + 6 * a;
-      t[0] = a; t[1] = b; t[2] = c;
-      t[3] = a; t[4] = c; t[5] = d;
+      t[0] = a;
+      t[1] = b;
+      t[2] = c;
+      t[3] = a;
+      t[4] = c;
+      t[5] = d;
     }
 }
 
@@ -73,8 +79,12 @@ static void *map_torus_in_thread(void *argument) {
       const int32_t c = ((i + 1) % work->major) * work->minor + (j + 1) % work->minor;
       const int32_t d = i * work->minor + (j + 1) % work->minor;
       int32_t *f = t + 6 * a;
-      f[0] = a; f[1] = b; f[2] = c;
-      f[3] = a; f[4] = c; f[5] = d;
+      f[0] = a;
+      f[1] = b;
+      f[2] = c;
+      f[3] = a;
+      f[4] = c;
+      f[5] = d;
     }
   work->ok = meromorph_parameterize_d(p, (size_t)n, t, 2 * (size_t)n, NULL, &r) == MEROMORPH_OK &&
              meromorph_degree(r) == 2 && meromorph_vertex_count(r) == (size_t)n &&
@@ -112,6 +122,9 @@ int main(void) {
   CHECK(meromorph_genus(result) == 1);
   CHECK(meromorph_degree(result) == 2);
   CHECK(meromorph_riemann_hurwitz_ok(result) == 1);
+  CHECK(meromorph_map_valid(result) == 1);
+  CHECK(meromorph_invalid_reasons(result) != NULL && meromorph_invalid_reasons(result)[0] == '\0');
+  CHECK(meromorph_map_valid(NULL) == 0 && meromorph_invalid_reasons(NULL) != NULL);
   CHECK(meromorph_advice(result) != NULL && meromorph_advice(result)[0] == '\0');
   CHECK(meromorph_advice(NULL) != NULL);
   CHECK(meromorph_vertex_count(result) == V);
@@ -124,12 +137,15 @@ int main(void) {
   CHECK(meromorph_sphere_positions(result, sphere) == MEROMORPH_OK);
   for (v = 0; v < V; ++v)
     CHECK(fabs(sqrt(sphere[3 * v] * sphere[3 * v] + sphere[3 * v + 1] * sphere[3 * v + 1] +
-                    sphere[3 * v + 2] * sphere[3 * v + 2]) - 1.0) < 1e-9);
+                    sphere[3 * v + 2] * sphere[3 * v + 2]) -
+               1.0) < 1e-9);
   CHECK(meromorph_vertex_uvs(result, uv) == MEROMORPH_OK);
-  for (v = 0; v < V; ++v) CHECK(uv[2 * v] >= 0 && uv[2 * v] <= 1 && uv[2 * v + 1] >= 0 && uv[2 * v + 1] <= 1);
+  for (v = 0; v < V; ++v)
+    CHECK(uv[2 * v] >= 0 && uv[2 * v] <= 1 && uv[2 * v + 1] >= 0 && uv[2 * v + 1] <= 1);
   CHECK(meromorph_corner_uvs(result, corners) == MEROMORPH_OK);
   CHECK(meromorph_layers(result, layers) == MEROMORPH_OK);
-  for (v = 0; v < V; ++v) CHECK(layers[v] == 0 || layers[v] == 1);
+  for (v = 0; v < V; ++v)
+    CHECK(layers[v] == 0 || layers[v] == 1);
   CHECK(meromorph_layered_positions(result, sphere) == MEROMORPH_OK);
   for (v = 0; v < V; ++v) {
     const double r = sqrt(sphere[3 * v] * sphere[3 * v] + sphere[3 * v + 1] * sphere[3 * v + 1] +
@@ -139,7 +155,8 @@ int main(void) {
   branch_count = meromorph_branch_point_count(result);
   CHECK(branch_count == 4);
   CHECK(meromorph_branch_points(result, branch_vertices, branch_degrees) == MEROMORPH_OK);
-  for (v = 0; v < branch_count; ++v) CHECK(branch_degrees[v] == 2 && branch_vertices[v] < V);
+  for (v = 0; v < branch_count; ++v)
+    CHECK(branch_degrees[v] == 2 && branch_vertices[v] < V);
   CHECK(meromorph_get_distortion(result, &distortion) == MEROMORPH_OK);
   CHECK(distortion.folded_faces_away_from_branch_points == 0);
   CHECK(distortion.quasi_conformal_mean >= 1.0);
@@ -149,69 +166,92 @@ int main(void) {
 
   /* The same mesh in single precision, without options. */
   float_positions = malloc(sizeof(float) * 3 * V);
-  for (v = 0; v < 3 * V; ++v) float_positions[v] = (float)positions[v];
+  for (v = 0; v < 3 * V; ++v)
+    float_positions[v] = (float)positions[v];
   CHECK(meromorph_parameterize_f(float_positions, V, triangles, F, NULL, &result) == MEROMORPH_OK);
   CHECK(meromorph_degree(result) == 2);
   meromorph_result_free(result);
   result = NULL;
 
   /* Misuse: a clear status and message, never a crash. */
-  CHECK(meromorph_parameterize_d(NULL, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_parameterize_d(NULL, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_ARGUMENT);
   CHECK(strstr(meromorph_last_error(), "positions") != NULL);
-  CHECK(meromorph_parameterize_d(positions, V, NULL, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
-  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, NULL) == MEROMORPH_ERROR_ARGUMENT);
-  CHECK(meromorph_parameterize_d(positions, V, triangles, 0, &options, &result) == MEROMORPH_ERROR_INPUT);
+  CHECK(meromorph_parameterize_d(positions, V, NULL, F, &options, &result) ==
+        MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, NULL) ==
+        MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, 0, &options, &result) ==
+        MEROMORPH_ERROR_INPUT);
   CHECK(strstr(meromorph_last_error(), "no faces") != NULL);
   CHECK(result == NULL);
   triangles[3 * 7 + 1] = V + 5;
-  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_INPUT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_INPUT);
   CHECK(strstr(meromorph_last_error(), "face 7 refers to vertex") != NULL);
   triangles[3 * 7 + 1] = -1;
-  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_INPUT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_INPUT);
   make_torus();
-  CHECK(meromorph_parameterize_d(positions, V, triangles, F - 1, &options, &result) == MEROMORPH_ERROR_INPUT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F - 1, &options, &result) ==
+        MEROMORPH_ERROR_INPUT);
   CHECK(strstr(meromorph_last_error(), "boundary loop") != NULL);
   options.origin_vertex = V + 100;
-  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_ARGUMENT);
   CHECK(strstr(meromorph_last_error(), "origin_vertex") != NULL);
   options.origin_vertex = -2;
-  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_ARGUMENT);
   meromorph_default_options(&options);
   options.pole_face = -3;
-  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_ARGUMENT);
   CHECK(strstr(meromorph_last_error(), "pole_face") != NULL);
   options.pole_face = F;
-  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_ARGUMENT);
   meromorph_default_options(&options);
   options.uv_kind = 7;
-  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_ARGUMENT);
   CHECK(strstr(meromorph_last_error(), "uv_kind") != NULL);
   meromorph_default_options(&options);
   options.form_pair[1] = -9;
-  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_ARGUMENT);
   meromorph_default_options(&options);
   options.layer_gap = NAN;
-  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_ARGUMENT);
   CHECK(strstr(meromorph_last_error(), "layer_gap") != NULL);
   options.layer_gap = INFINITY;
-  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_ARGUMENT);
   options.layer_gap = 1e308;
-  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_ARGUMENT);
   options.layer_gap = -0.5;
-  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_ARGUMENT);
   meromorph_default_options(&options);
   options.struct_size = 4;
-  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_ARGUMENT);
   options.struct_size = 100000;
-  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_ARGUMENT);
   CHECK(strstr(meromorph_last_error(), "struct_size") != NULL);
   meromorph_default_options(&options);
-  CHECK(meromorph_parameterize_d(positions, (size_t)1 << 40, triangles, F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+  CHECK(meromorph_parameterize_d(positions, (size_t)1 << 40, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_ARGUMENT);
   positions[3 * 17 + 2] = NAN;
-  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_INPUT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_INPUT);
   CHECK(strstr(meromorph_last_error(), "vertices 17") != NULL);
   positions[3 * 17 + 2] = INFINITY;
-  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_INPUT);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_INPUT);
   CHECK(result == NULL);
   make_torus();
   CHECK(meromorph_corner_uvs(NULL, corners) == MEROMORPH_ERROR_ARGUMENT);
@@ -224,13 +264,17 @@ int main(void) {
     pthread_t threads[4];
     job jobs[4] = {{40, 20, 0}, {44, 22, 0}, {48, 24, 0}, {52, 26, 0}};
     int k;
-    for (k = 0; k < 4; ++k) CHECK(pthread_create(&threads[k], NULL, map_torus_in_thread, &jobs[k]) == 0);
-    for (k = 0; k < 4; ++k) CHECK(pthread_join(threads[k], NULL) == 0);
-    for (k = 0; k < 4; ++k) CHECK(jobs[k].ok);
+    for (k = 0; k < 4; ++k)
+      CHECK(pthread_create(&threads[k], NULL, map_torus_in_thread, &jobs[k]) == 0);
+    for (k = 0; k < 4; ++k)
+      CHECK(pthread_join(threads[k], NULL) == 0);
+    for (k = 0; k < 4; ++k)
+      CHECK(jobs[k].ok);
   }
   meromorph_default_options(&options);
   options.progress = cancel_at_third_call;
-  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_ERROR_CANCELLED);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_CANCELLED);
   CHECK(result == NULL);
   CHECK(meromorph_sphere_positions(NULL, sphere) == MEROMORPH_ERROR_ARGUMENT);
   CHECK(meromorph_degree(NULL) == -1);

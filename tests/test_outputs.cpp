@@ -97,16 +97,16 @@ TEST(Outputs, AllOrNothing) {
               exists(dir.path("r.json")));
 }
 
-TEST(Outputs, StrictDecidesBeforeWriting) {
+TEST(Outputs, AnInvalidMapWritesNothing) {
   TempDir dir;
-  const test::RunResult made =
-      run_cli({"make", "genus", "-g", "3", "--resolution", "30", "-o", dir.path("g3.ply")});
+  const test::RunResult made = run_cli({"make", "genus", "-g", "3", "--resolution", "30",
+                                        "--raw-marching-cubes", "-o", dir.path("g3.ply")});
   ASSERT_EQ(made.exit_code, 0) << made.err;
-  const test::RunResult strict =
+  const test::RunResult refused =
       run_cli({"param", dir.path("g3.ply"), "-o", dir.path("out.ply"), "--report",
-               dir.path("r.json"), "--forms", "0,2", "--strict", "--quiet"});
-  EXPECT_EQ(strict.exit_code, 1) << strict.err;
-  EXPECT_NE(strict.err.find("nothing was written"), std::string::npos) << strict.err;
+               dir.path("r.json"), "--sphere", dir.path("s.ply"), "--quiet"});
+  EXPECT_EQ(refused.exit_code, 3) << refused.err;
+  EXPECT_NE(refused.err.find("nothing was written"), std::string::npos) << refused.err;
   EXPECT_EQ(files_in(dir), 1u);
 }
 

@@ -14,6 +14,7 @@
 struct meromorph_result {
   meromorph::Parameterization map;
   std::string report;
+  std::string invalid_reasons;
   size_t triangles = 0;
 };
 
@@ -114,6 +115,8 @@ meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
       nlohmann::json report = parameterization_json(out->map);
       report["version"] = MEROMORPH_VERSION;
       out->report = report.dump(2);
+      for (const std::string &reason : out->map.invalid)
+        out->invalid_reasons += (out->invalid_reasons.empty() ? "" : "; ") + reason;
       out->triangles = triangle_count;
     } catch (...) {
       delete out;
@@ -195,6 +198,12 @@ int meromorph_degree(const meromorph_result *r) {
 }
 int meromorph_riemann_hurwitz_ok(const meromorph_result *r) {
   return r ? r->map.riemann_hurwitz_ok : 0;
+}
+int meromorph_map_valid(const meromorph_result *r) {
+  return r ? r->map.valid : 0;
+}
+const char *meromorph_invalid_reasons(const meromorph_result *r) {
+  return r ? r->invalid_reasons.c_str() : "";
 }
 const char *meromorph_advice(const meromorph_result *r) {
   return r ? r->map.advice.c_str() : "";

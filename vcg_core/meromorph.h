@@ -92,7 +92,13 @@ MEROMORPH_API size_t meromorph_triangle_count(const meromorph_result *result);
 MEROMORPH_API int meromorph_genus(const meromorph_result *result);
 MEROMORPH_API int meromorph_degree(const meromorph_result *result);
 MEROMORPH_API int meromorph_riemann_hurwitz_ok(const meromorph_result *result);
-/* When Riemann-Hurwitz fails: the likely causes and what to do ("" otherwise); owned by the
+/* 1 when the map is a valid branched cover of the sphere (the expected degree, Riemann-Hurwitz,
+   no face turned over), 0 otherwise. */
+MEROMORPH_API int meromorph_map_valid(const meromorph_result *result);
+/* When the map is not valid: what fails, with face indices, reasons joined by "; " ("" when
+   valid); owned by the result. */
+MEROMORPH_API const char *meromorph_invalid_reasons(const meromorph_result *result);
+/* When the map is not valid: the likely causes and what to do ("" otherwise); owned by the
    result. */
 MEROMORPH_API const char *meromorph_advice(const meromorph_result *result);
 

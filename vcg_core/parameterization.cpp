@@ -31,7 +31,35 @@ int collapsed_faces(const Mesh &mesh, const std::vector<PlaneValue> &values) {
   return count;
 }
 
-// What a user can do when Riemann-Hurwitz fails, from what this mesh and map show.
+// What keeps the written map from being a valid branched cover of the sphere.
+std::vector<std::string> invalid_reasons(const Mesh &mesh, const ParameterizeOptions &options,
+                                         const Parameterization &map) {
+  std::vector<std::string> reasons;
+  const int expected = map.genus == 0 ? 1 : map.genus == 1 ? 2 : 2 * map.genus - 2;
+  const bool chosen_pair = map.genus >= 2 && options.form_pair[0] >= 0;
+  if (chosen_pair ? (map.degree < 1 || map.degree > expected) : map.degree != expected)
+    reasons.push_back("the map covers the sphere " + std::to_string(map.degree) +
+                      " times instead of " + std::to_string(expected));
+  if (!map.riemann_hurwitz_ok)
+    reasons.push_back(
+        "Riemann-Hurwitz does not hold (chi = " + std::to_string(map.euler) +
+        ", 2 * degree - ramification = " + std::to_string(2 * map.degree - map.ramification) +
+        "): branch points were missed or are wrong");
+  std::vector<int> folded;
+  for (size_t f = 0; f < mesh.face.size(); ++f) {
+    const MeshFace &face = mesh.face[f];
+    if (folded_image(map.sphere[size_t(index_of(mesh, face.cV(0)))],
+                     map.sphere[size_t(index_of(mesh, face.cV(1)))],
+                     map.sphere[size_t(index_of(mesh, face.cV(2)))]))
+      folded.push_back(int(f));
+  }
+  if (!folded.empty())
+    reasons.push_back(std::to_string(folded.size()) + " faces are turned over (faces " +
+                      list_indices(folded) + ")");
+  return reasons;
+}
+
+// What a user can do when the map is not valid, from what this mesh and map show.
 std::string riemann_hurwitz_advice(const Mesh &mesh, const ParameterizeOptions &options,
                                    const Parameterization &map) {
   std::vector<std::string> causes;
@@ -309,7 +337,9 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
   progress.report(0.9, "texture coordinates and distortion");
   out.uv = texture_coordinates(mesh, out.sphere, options.uv);
   out.quality = measure_map_quality(mesh, out.sphere, branching.branch_vertices);
-  if (!out.riemann_hurwitz_ok) out.advice = riemann_hurwitz_advice(mesh, options, out);
+  out.invalid = invalid_reasons(mesh, options, out);
+  out.valid = out.invalid.empty();
+  if (!out.valid) out.advice = riemann_hurwitz_advice(mesh, options, out);
   lap("texture_and_quality");
   progress.report(1.0, "done");
   return out;

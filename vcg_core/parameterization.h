@@ -79,7 +79,12 @@ struct Parameterization {
   std::array<int, 2> form_pair{-1, -1};
   FormPair form_coefficients; // genus >= 2: a_k, b_k of the pair used (form_pairs.h)
   int pair_attempts = 0;      // genus >= 2: pairs tried until one was generic
-  // When Riemann-Hurwitz fails: the likely causes found on this mesh and what to do, in the words
+  // Whether the map as written is a valid branched cover: the expected degree (1, 2 or 2g - 2;
+  // a chosen pair of forms may share zeros and give less), Riemann-Hurwitz, no face turned
+  // over. `invalid` says what fails, with face indices.
+  bool valid = false;
+  std::vector<std::string> invalid;
+  // When the map is not valid: the likely causes found on this mesh and what to do, in the words
   // of a MeshLab or Blender user; empty otherwise.
   std::string advice;
   std::vector<std::string> notes; // harmless oddities of the mesh (coincident vertices, ...)

@@ -110,6 +110,8 @@ nlohmann::json parameterization_json(const Parameterization &map) {
   if (map.genus == 0)
     report["genus0"] = {{"pole_face", map.puncture_face}, {"raised_weights", map.raised_weights}};
   if (map.genus == 1) report["origin_vertex"] = map.origin_vertex;
+  report["valid"] = map.valid;
+  report["invalid"] = map.invalid;
   if (!map.advice.empty()) report["advice"] = map.advice;
   report["notes"] = map.notes;
   if (map.genus >= 2) {

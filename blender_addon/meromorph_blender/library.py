@@ -60,13 +60,15 @@ def load():
         lib.meromorph_report_json.restype = ctypes.c_char_p
         lib.meromorph_advice.restype = ctypes.c_char_p
         lib.meromorph_advice.argtypes = [ctypes.c_void_p]
+        lib.meromorph_invalid_reasons.restype = ctypes.c_char_p
+        lib.meromorph_invalid_reasons.argtypes = [ctypes.c_void_p]
         lib.meromorph_parameterize_f.argtypes = [
             ctypes.c_void_p, ctypes.c_size_t, ctypes.c_void_p, ctypes.c_size_t,
             ctypes.POINTER(Options), ctypes.POINTER(ctypes.c_void_p)]
         for name in ("vertex_count", "triangle_count", "branch_point_count"):
             getattr(lib, "meromorph_" + name).restype = ctypes.c_size_t
             getattr(lib, "meromorph_" + name).argtypes = [ctypes.c_void_p]
-        for name in ("genus", "degree", "riemann_hurwitz_ok"):
+        for name in ("genus", "degree", "riemann_hurwitz_ok", "map_valid"):
             getattr(lib, "meromorph_" + name).argtypes = [ctypes.c_void_p]
         for name in ("sphere_positions", "layered_positions", "vertex_uvs", "corner_uvs", "layers",
                      "report_json", "result_free", "get_distortion"):
@@ -125,6 +127,8 @@ def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
         out["genus"] = lib.meromorph_genus(result)
         out["degree"] = lib.meromorph_degree(result)
         out["riemann_hurwitz_ok"] = bool(lib.meromorph_riemann_hurwitz_ok(result))
+        out["valid"] = bool(lib.meromorph_map_valid(result))
+        out["invalid_reasons"] = lib.meromorph_invalid_reasons(result).decode("utf-8", "replace")
         out["advice"] = lib.meromorph_advice(result).decode("utf-8", "replace")
         out["report"] = json.loads(lib.meromorph_report_json(result).decode("utf-8"))
         return out

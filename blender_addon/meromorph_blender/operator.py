@@ -129,8 +129,9 @@ class MESH_OT_conformal_sphere_map(bpy.types.Operator):
         self.report({"INFO"}, "%s: genus %d, degree %d, %d branch points, angle error %.2f deg, "
                     "%.2f s%s" % (obj.name, result["genus"], result["degree"], len(branch),
                                   result["angle_error"], elapsed,
-                                  "" if result["riemann_hurwitz_ok"]
-                                  else "; WARNING: Riemann-Hurwitz does not hold: "
+                                  "" if result["valid"]
+                                  else "; WARNING: not a valid map on this triangulation: "
+                                  + result["invalid_reasons"] + ". What to do: "
                                   + result["advice"]))
         return {"FINISHED"}
 

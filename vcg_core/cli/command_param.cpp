@@ -25,7 +25,7 @@ struct ParamOptions {
   std::string input, output, sphere, report;
   std::string uv = "spherical";
   std::string solver = "cholmod";
-  bool no_mobius = false, repair = false, strict = false, quiet = false;
+  bool no_mobius = false, repair = false, keep_invalid = false, quiet = false;
   int origin = -1;
   std::vector<int> forms{-1, -1};
   double layer_gap = 0.0;
@@ -65,15 +65,16 @@ int run_param(const ParamOptions &options) {
     }
   }();
   bar.finish();
-  if (!map.riemann_hurwitz_ok) {
-    std::cerr << "meromorph: " << (options.strict ? "error" : "warning")
-              << ": Riemann-Hurwitz does not hold: chi = " << map.euler
-              << " but 2 * degree - ramification = " << 2 * map.degree - map.ramification
-              << " (image area " << map.area_over_4pi << " x 4 pi); the branch points or the "
-              << "degree were not measured reliably on this mesh: " << map.advice << "\n";
-    if (options.strict) {
-      std::cerr << "meromorph: --strict: nothing was written\n";
-      return int(ExitCode::internal_failure);
+  if (!map.valid) {
+    std::string reasons;
+    for (const std::string &reason : map.invalid)
+      reasons += (reasons.empty() ? "" : "; ") + reason;
+    std::cerr << "meromorph: error: " << options.input
+              << ": no valid map on this triangulation: " << reasons
+              << ". What to do: " << map.advice << "\n";
+    if (!options.keep_invalid) {
+      std::cerr << "meromorph: nothing was written (--keep-invalid writes the map anyway)\n";
+      return int(ExitCode::cannot_parameterize);
     }
   }
 
@@ -128,7 +129,7 @@ int run_param(const ParamOptions &options) {
          << " ms";
     std::cout << line.str() << "\n";
   }
-  return int(ExitCode::done);
+  return int(map.valid ? ExitCode::done : ExitCode::cannot_parameterize);
 }
 
 } // namespace
@@ -176,8 +177,9 @@ Command add_param_command(CLI::App &app) {
   param->add_option("--solver", options->solver, "cholmod (default) or ldlt")
       ->check(CLI::IsMember({"cholmod", "ldlt"}));
   param->add_flag("--repair", options->repair, "apply the safe repairs first (see info --help)");
-  param->add_flag("--strict", options->strict,
-                  "exit with code 1, writing nothing, when Riemann-Hurwitz fails");
+  param->add_flag("--keep-invalid", options->keep_invalid,
+                  "write the map even when it is not a valid branched cover (the exit code is "
+                  "still 3)");
   param->add_flag("--quiet", options->quiet, "no progress bar and no summary line");
   return [options] { return run_param(*options); };
 }
