@@ -26,30 +26,33 @@ enum { MAJOR = 48, MINOR = 24, V = MAJOR * MINOR, F = 2 * V };
 static double positions[3 * V];
 static int32_t triangles[3 * F];
 
-static void make_torus(void) {
+/* A torus of revolution with radii 2 and 1 on a major x minor grid: 3 doubles per vertex, two
+   triangles per grid cell. */
+static void fill_torus(int major, int minor, double *p, int32_t *t) {
   const double pi = 3.14159265358979323846;
   int i, j;
-  for (i = 0; i < MAJOR; ++i)
-    for (j = 0; j < MINOR; ++j) {
-      const double u = 2 * pi * i / MAJOR, v = 2 * pi * j / MINOR, ring = 2.0 + cos(v);
-      double *p = positions + 3 * (i * MINOR + j);
-      p[0] = ring * cos(u);
-      p[1] = ring * sin(u);
-      p[2] = sin(v);
+  for (i = 0; i < major; ++i)
+    for (j = 0; j < minor; ++j) {
+      const double u = 2 * pi * i / major, v = 2 * pi * j / minor, ring = 2.0 + cos(v);
+      double *q = p + 3 * (i * minor + j);
+      const int32_t a = i * minor + j, b = ((i + 1) % major) * minor + j;
+      const int32_t c = ((i + 1) % major) * minor + (j + 1) % minor,
+                    d = i * minor + (j + 1) % minor;
+      int32_t *f = t + 6 * a;
+      q[0] = ring * cos(u);
+      q[1] = ring * sin(u);
+      q[2] = sin(v);
+      f[0] = a;
+      f[1] = b;
+      f[2] = c;
+      f[3] = a;
+      f[4] = c;
+      f[5] = d;
     }
-  for (i = 0; i < MAJOR; ++i)
-    for (j = 0; j < MINOR; ++j) {
-      const int32_t a = i * MINOR + j, b = ((i + 1) % MAJOR) * MINOR + j;
-      const int32_t c = ((i + 1) % MAJOR) * MINOR + (j + 1) % MINOR,
-                    d = i * MINOR + (j + 1) % MINOR;
-      int32_t *t = triangles + 6 * a;
-      t[0] = a;
-      t[1] = b;
-      t[2] = c;
-      t[3] = a;
-      t[4] = c;
-      t[5] = d;
-    }
+}
+
+static void make_torus(void) {
+  fill_torus(MAJOR, MINOR, positions, triangles);
 }
 
 /* Four threads map tori of different sizes at once; each checks its own result. */
@@ -59,33 +62,11 @@ typedef struct job {
 
 static void *map_torus_in_thread(void *argument) {
   job *work = (job *)argument;
-  const double pi = 3.14159265358979323846;
   const int n = work->major * work->minor;
   double *p = malloc(sizeof(double) * 3 * (size_t)n);
   int32_t *t = malloc(sizeof(int32_t) * 6 * (size_t)n);
   meromorph_result *r = NULL;
-  int i, j;
-  for (i = 0; i < work->major; ++i)
-    for (j = 0; j < work->minor; ++j) {
-      const double u = 2 * pi * i / work->major, v = 2 * pi * j / work->minor;
-      double *q = p + 3 * (i * work->minor + j);
-      q[0] = (2.0 + cos(v)) * cos(u);
-      q[1] = (2.0 + cos(v)) * sin(u);
-      q[2] = sin(v);
-    }
-  for (i = 0; i < work->major; ++i)
-    for (j = 0; j < work->minor; ++j) {
-      const int32_t a = i * work->minor + j, b = ((i + 1) % work->major) * work->minor + j;
-      const int32_t c = ((i + 1) % work->major) * work->minor + (j + 1) % work->minor;
-      const int32_t d = i * work->minor + (j + 1) % work->minor;
-      int32_t *f = t + 6 * a;
-      f[0] = a;
-      f[1] = b;
-      f[2] = c;
-      f[3] = a;
-      f[4] = c;
-      f[5] = d;
-    }
+  fill_torus(work->major, work->minor, p, t);
   work->ok = meromorph_parameterize_d(p, (size_t)n, t, 2 * (size_t)n, NULL, &r) == MEROMORPH_OK &&
              meromorph_degree(r) == 2 && meromorph_vertex_count(r) == (size_t)n &&
              meromorph_branch_point_count(r) == 4;
