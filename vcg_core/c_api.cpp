@@ -115,8 +115,7 @@ meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
       nlohmann::json report = parameterization_json(out->map);
       report["version"] = MEROMORPH_VERSION;
       out->report = report.dump(2);
-      for (const std::string &reason : out->map.invalid)
-        out->invalid_reasons += (out->invalid_reasons.empty() ? "" : "; ") + reason;
+      out->invalid_reasons = join_phrases(out->map.invalid);
       out->triangles = triangle_count;
     } catch (...) {
       delete out;

@@ -13,4 +13,11 @@ std::string list_indices(const std::vector<int> &indices, size_t shown) {
   return text;
 }
 
+std::string join_phrases(const std::vector<std::string> &phrases) {
+  std::string text;
+  for (const std::string &phrase : phrases)
+    text += (text.empty() ? "" : "; ") + phrase;
+  return text;
+}
+
 } // namespace meromorph

@@ -57,4 +57,7 @@ public:
 // "vertices 3, 8, 12 and 40 more": at most `shown` indices, then how many were left out.
 std::string list_indices(const std::vector<int> &indices, size_t shown = 10);
 
+// Phrases joined by "; ", as messages list several reasons or causes.
+std::string join_phrases(const std::vector<std::string> &phrases);
+
 } // namespace meromorph

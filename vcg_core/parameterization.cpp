@@ -32,7 +32,7 @@ int collapsed_faces(const Mesh &mesh, const std::vector<PlaneValue> &values) {
 }
 
 // What keeps the written map from being a valid branched cover of the sphere.
-std::vector<std::string> invalid_reasons(const Mesh &mesh, const ParameterizeOptions &options,
+std::vector<std::string> invalid_reasons(const ParameterizeOptions &options,
                                          const Parameterization &map) {
   std::vector<std::string> reasons;
   const int expected = map.genus == 0 ? 1 : map.genus == 1 ? 2 : 2 * map.genus - 2;
@@ -45,14 +45,7 @@ std::vector<std::string> invalid_reasons(const Mesh &mesh, const ParameterizeOpt
         "Riemann-Hurwitz does not hold (chi = " + std::to_string(map.euler) +
         ", 2 * degree - ramification = " + std::to_string(2 * map.degree - map.ramification) +
         "): branch points were missed or are wrong");
-  std::vector<int> folded;
-  for (size_t f = 0; f < mesh.face.size(); ++f) {
-    const MeshFace &face = mesh.face[f];
-    if (folded_image(map.sphere[size_t(index_of(mesh, face.cV(0)))],
-                     map.sphere[size_t(index_of(mesh, face.cV(1)))],
-                     map.sphere[size_t(index_of(mesh, face.cV(2)))]))
-      folded.push_back(int(f));
-  }
+  const std::vector<int> &folded = map.quality.folded_face_indices;
   if (!folded.empty())
     reasons.push_back(std::to_string(folded.size()) + " faces are turned over (faces " +
                       list_indices(folded) + ")");
@@ -60,8 +53,8 @@ std::vector<std::string> invalid_reasons(const Mesh &mesh, const ParameterizeOpt
 }
 
 // What a user can do when the map is not valid, from what this mesh and map show.
-std::string riemann_hurwitz_advice(const Mesh &mesh, const ParameterizeOptions &options,
-                                   const Parameterization &map) {
+std::string invalid_map_advice(const Mesh &mesh, const ParameterizeOptions &options,
+                               const Parameterization &map) {
   std::vector<std::string> causes;
   if (map.quality.overall.collapsed_faces > 0)
     causes.push_back(std::to_string(map.quality.overall.collapsed_faces) +
@@ -83,10 +76,7 @@ std::string riemann_hurwitz_advice(const Mesh &mesh, const ParameterizeOptions &
     causes.push_back("the mesh may be too coarse near the branch points: refine it (MeshLab: "
                      "Filters > Remeshing, Simplification and Reconstruction > Subdivision "
                      "Surfaces: Midpoint; Blender: Subdivide) and run again");
-  std::string advice;
-  for (const std::string &cause : causes)
-    advice += (advice.empty() ? "" : "; ") + cause;
-  return advice;
+  return join_phrases(causes);
 }
 
 } // namespace
@@ -337,9 +327,9 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
   progress.report(0.9, "texture coordinates and distortion");
   out.uv = texture_coordinates(mesh, out.sphere, options.uv);
   out.quality = measure_map_quality(mesh, out.sphere, branching.branch_vertices);
-  out.invalid = invalid_reasons(mesh, options, out);
+  out.invalid = invalid_reasons(options, out);
   out.valid = out.invalid.empty();
-  if (!out.valid) out.advice = riemann_hurwitz_advice(mesh, options, out);
+  if (!out.valid) out.advice = invalid_map_advice(mesh, options, out);
   lap("texture_and_quality");
   progress.report(1.0, "done");
   return out;

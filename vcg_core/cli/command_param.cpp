@@ -66,11 +66,8 @@ int run_param(const ParamOptions &options) {
   }();
   bar.finish();
   if (!map.valid) {
-    std::string reasons;
-    for (const std::string &reason : map.invalid)
-      reasons += (reasons.empty() ? "" : "; ") + reason;
     std::cerr << "meromorph: error: " << options.input
-              << ": no valid map on this triangulation: " << reasons
+              << ": no valid map on this triangulation: " << join_phrases(map.invalid)
               << ". What to do: " << map.advice << "\n";
     if (!options.keep_invalid) {
       std::cerr << "meromorph: nothing was written (--keep-invalid writes the map anyway)\n";
