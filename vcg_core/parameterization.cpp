@@ -47,8 +47,10 @@ std::vector<std::string> invalid_reasons(const ParameterizeOptions &options,
         "): branch points were missed or are wrong");
   const std::vector<int> &folded = map.quality.folded_face_indices;
   if (!folded.empty())
-    reasons.push_back(std::to_string(folded.size()) + " faces are turned over (faces " +
-                      list_indices(folded) + ")");
+    reasons.push_back(folded.size() == 1
+                          ? "1 face is turned over (face " + list_indices(folded) + ")"
+                          : std::to_string(folded.size()) + " faces are turned over (faces " +
+                                list_indices(folded) + ")");
   return reasons;
 }
 
