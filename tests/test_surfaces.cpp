@@ -1,4 +1,8 @@
 // The generated test surfaces: sizes, shape, orientation, determinism of the rigid motion.
+#include <algorithm>
+#include <cmath>
+#include <set>
+
 #include <gtest/gtest.h>
 
 #include <vcg/complex/algorithms/stat.h>
@@ -81,6 +85,50 @@ TEST(Surfaces, RigidMotionIsRigidAndReproducible) {
     EXPECT_NEAR((f.cP(0) - f.cP(1)).Norm(), (g.cP(0) - g.cP(1)).Norm(), 1e-12);
   }
   EXPECT_GT(vcg::tri::Stat<Mesh>::ComputeMeshVolume(moved), 0.0) << "a rotation keeps orientation";
+}
+
+TEST(Surfaces, InjectedNeedlesKeepTheSurfaceAndItsTopology) {
+  Mesh mesh;
+  make_grid_torus(mesh, 2.0, 1.0, 48, 24);
+  const int before = int(mesh.vert.size());
+  std::vector<Point3> original;
+  for (const MeshVertex &v : mesh.vert)
+    original.push_back(v.cP());
+  inject_needles(mesh, 0.5);
+  const Topology topology = compute_topology(mesh);
+  EXPECT_TRUE(validate_mesh(mesh).ok());
+  ASSERT_TRUE(topology.genus);
+  EXPECT_EQ(*topology.genus, 1);
+  EXPECT_GT(int(mesh.vert.size()), before + 100);
+  // The first vertices are the original ones, where they were.
+  for (int v = 0; v < before; ++v)
+    ASSERT_EQ(mesh.vert[size_t(v)].cP(), original[size_t(v)]) << v;
+  // Every new vertex lies on a segment between two original vertices (the same surface), very
+  // close to one end, so the smallest angle falls below 0.1 degrees.
+  double smallest = M_PI;
+  for (const MeshFace &face : mesh.face)
+    for (int k = 0; k < 3; ++k) {
+      const Point3 u = face.cP((k + 1) % 3) - face.cP(k), w = face.cP((k + 2) % 3) - face.cP(k);
+      smallest = std::min(smallest, std::atan2((u ^ w).Norm(), u * w));
+    }
+  EXPECT_LT(smallest * 180 / M_PI, 0.1);
+  std::vector<std::set<int>> neighbours(mesh.vert.size());
+  for (const MeshFace &face : mesh.face)
+    for (int k = 0; k < 3; ++k)
+      neighbours[size_t(index_of(mesh, face.cV(k)))].insert(index_of(mesh, face.cV((k + 1) % 3)));
+  for (size_t v = size_t(before); v < mesh.vert.size(); ++v) {
+    const Point3 &p = mesh.vert[v].cP();
+    double nearest = 1e300;
+    for (int a : neighbours[v])
+      for (int b : neighbours[v]) {
+        if (a >= before || b >= before || a == b) continue;
+        const Point3 ab = original[size_t(b)] - original[size_t(a)];
+        const double t = ((p - original[size_t(a)]) * ab) / ab.SquaredNorm();
+        if (t > 0 && t < 0.02)
+          nearest = std::min(nearest, (original[size_t(a)] + ab * t - p).Norm());
+      }
+    EXPECT_LT(nearest, 1e-12) << "vertex " << v;
+  }
 }
 
 } // namespace

@@ -123,14 +123,21 @@ TEST(WrittenMaps, GeneratedSurfaces) {
     std::vector<std::string> arguments;
     int genus;
   };
-  for (const Made &made :
-       std::vector<Made>{{{"sphere", "-s", "3"}, 0},
-                         {{"blob", "--tentacles", "4", "--length", "2"}, 0},
-                         {{"torus", "--method", "grid", "--resolution", "24"}, 1},
-                         {{"torus", "--method", "implicit", "--resolution", "32"}, 1},
-                         {{"genus", "-g", "2", "--resolution", "30"}, 2},
-                         {{"genus", "-g", "3", "--resolution", "30"}, 3},
-                         {{"genus", "-g", "4", "--resolution", "30"}, 4}}) {
+  for (const Made &made : std::vector<Made>{
+           {{"sphere", "-s", "3"}, 0},
+           {{"blob", "--tentacles", "4", "--length", "2"}, 0},
+           {{"torus", "--method", "grid", "--resolution", "24"}, 1},
+           {{"torus", "--method", "implicit", "--resolution", "32"}, 1},
+           {{"genus", "-g", "2", "--resolution", "30"}, 2},
+           {{"genus", "-g", "3", "--resolution", "30"}, 3},
+           {{"genus", "-g", "4", "--resolution", "30"}, 4},
+           // Needles as scans and exporters leave them, and raw marching cubes.
+           {{"sphere", "-s", "3", "--needles", "0.5"}, 0},
+           {{"torus", "--method", "grid", "--resolution", "24", "--needles", "0.5"}, 1},
+           {{"torus", "--method", "implicit", "--resolution", "32", "--raw-marching-cubes"}, 1},
+           {{"genus", "-g", "2", "--resolution", "30", "--needles", "0.5"}, 2},
+           {{"genus", "-g", "3", "--resolution", "30", "--needles", "0.5"}, 3},
+           {{"genus", "-g", "2", "--resolution", "30", "--raw-marching-cubes"}, 2}}) {
     std::string name = "made";
     for (const std::string &a : made.arguments)
       name += "_" + a;

@@ -6,6 +6,7 @@
 
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/create/platonic.h>
+#include <vcg/complex/algorithms/refine.h>
 #include <vcg/complex/algorithms/stat.h>
 
 #include "errors.h"
@@ -170,6 +171,61 @@ void make_genus_surface(Mesh &mesh, int genus, int resolution, bool remesh) {
         return d;
       },
       box, voxel, mesh, remesh);
+}
+
+namespace {
+
+// A hash of an edge's two vertex indices in [0, 1): the same from either side of the edge.
+double edge_hash(const Mesh &mesh, const MeshVertex *a, const MeshVertex *b) {
+  std::uint64_t x =
+      std::uint64_t(std::min(index_of(mesh, a), index_of(mesh, b))) * 0x9E3779B97F4A7C15ull ^
+      std::uint64_t(std::max(index_of(mesh, a), index_of(mesh, b))) * 0xC2B2AE3D27D4EB4Full;
+  x ^= x >> 31;
+  x *= 0xBF58476D1CE4E5B9ull;
+  x ^= x >> 29;
+  return double(x >> 11) / double(1ull << 53);
+}
+
+// An edge is split when its hash says so and that of no other side of its two faces does: at
+// most one split per face, so every needle is one split's.
+struct NeedleEdges {
+  const Mesh *mesh;
+  double fraction;
+  bool operator()(vcg::face::Pos<MeshFace> ep) const {
+    if (edge_hash(*mesh, ep.V(), ep.VFlip()) >= fraction) return false;
+    for (const MeshFace *face : {ep.F(), ep.FFlip()})
+      for (int k = 0; k < 3; ++k) {
+        const MeshVertex *a = face->cV(k), *b = face->cV((k + 1) % 3);
+        const bool this_edge = (a == ep.V() && b == ep.VFlip()) || (a == ep.VFlip() && b == ep.V());
+        if (!this_edge && edge_hash(*mesh, a, b) < fraction) return false;
+      }
+    return true;
+  }
+};
+
+// Moves the midpoint RefineE made towards the edge's lower-address end (the end MidPoint uses).
+struct NeedlePlacement {
+  const Mesh *mesh;
+  void operator()(MeshVertex &made, vcg::face::Pos<MeshFace> ep) {
+    const MeshVertex *a = std::min(ep.V(), ep.VFlip()), *b = std::max(ep.V(), ep.VFlip());
+    const double t = 0.002 + 0.008 * edge_hash(*mesh, b, a);
+    made.P() = a->cP() + (b->cP() - a->cP()) * t;
+  }
+};
+
+} // namespace
+
+void inject_needles(Mesh &mesh, double fraction) {
+  if (!(fraction >= 0 && fraction <= 1))
+    throw ArgumentError("the fraction of edges to split must be between 0 and 1");
+  vcg::tri::UpdateTopology<Mesh>::FaceFace(mesh);
+  NeedlePlacement placement{&mesh};
+  vcg::tri::MidPoint<Mesh, NeedlePlacement> midpoint(&mesh, &placement);
+  NeedleEdges edges{&mesh, fraction};
+  vcg::tri::RefineE(mesh, midpoint, edges);
+  vcg::tri::Allocator<Mesh>::CompactEveryVector(mesh);
+  vcg::tri::UpdateTopology<Mesh>::FaceFace(mesh);
+  vcg::tri::UpdateBounding<Mesh>::Box(mesh);
 }
 
 } // namespace meromorph

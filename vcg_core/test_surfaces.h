@@ -34,4 +34,11 @@ void make_genus_surface(Mesh &mesh, int genus, int resolution, bool remesh = tru
 // The hard case for conformal maps to the sphere: thin parts shrink exponentially.
 void make_tentacle_blob(Mesh &mesh, int tentacles, double length, int resolution);
 
+// What scans and exporters do to a triangulation, on the same surface: splits a `fraction` of
+// the edges (chosen by a hash of their vertex indices, the same on every machine, at most one per
+// face) at a point 0.2% to 1% of the way along them (vcglib's RefineE); every split leaves two
+// needles with angles down to about 0.05 degrees and their obtuse partners (up to about 150).
+// The shape does not change.
+void inject_needles(Mesh &mesh, double fraction);
+
 } // namespace meromorph

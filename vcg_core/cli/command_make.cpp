@@ -16,6 +16,7 @@ struct MakeOptions {
   bool rigid_motion = false;
   std::uint64_t seed = 1;
   double scale = 1.0;
+  double needles = 0.0;
   // sphere
   int subdivisions = 4;
   double radius = 1.0;
@@ -33,6 +34,7 @@ struct MakeOptions {
 };
 
 int finish(Mesh &mesh, const MakeOptions &options) {
+  if (options.needles > 0) inject_needles(mesh, options.needles);
   if (options.rigid_motion || options.scale != 1.0) {
     Similarity motion = options.rigid_motion ? random_rigid_motion(options.seed) : Similarity{};
     motion.scale = options.scale;
@@ -57,6 +59,11 @@ void add_common(CLI::App *command, MakeOptions &options) {
   command->add_option("--scale", options.scale, "uniform scale applied at the end")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  command
+      ->add_option("--needles", options.needles,
+                   "split this fraction of the edges close to one end, leaving needles down to "
+                   "about 0.1 degrees on the same surface (as scans and exporters do)")
+      ->check(CLI::Range(0.0, 1.0));
 }
 
 } // namespace
