@@ -159,6 +159,28 @@ TEST(Parameterization, GenusZeroWithLongThinPartsFoldsNothing) {
   }
 }
 
+TEST(Parameterization, GenusOneWithLongLimbsIsMappedOrRefusedWithTheCause) {
+  // A ball with a hole and four limbs of radius 0.12: reaching 2 (about 8 times longer than
+  // thick) the map is valid; reaching 4 (about 16 times) the limbs' images shrink below what
+  // doubles resolve, and the map is refused, saying so, instead of written broken.
+  Mesh mesh;
+  make_tentacle_blob(mesh, 4, 2.0, 30, true);
+  const Parameterization map = parameterize(mesh);
+  expect_valid_map(mesh, map, 2, "limbs of length 2");
+  EXPECT_TRUE(map.valid);
+
+  test::TempDir dir;
+  const test::RunResult made = test::run_cli(
+      {"make", "blob", "--hole", "--tentacles", "4", "--length", "4", "-o", dir.path("limbs.ply")});
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  const test::RunResult refused =
+      test::run_cli({"param", dir.path("limbs.ply"), "-o", dir.path("limbs.uv.ply"), "--quiet"});
+  EXPECT_EQ(refused.exit_code, 3) << refused.err;
+  EXPECT_NE(refused.err.find("smaller than double precision resolves"), std::string::npos)
+      << refused.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path("limbs.uv.ply")));
+}
+
 TEST(Parameterization, SolidAnglesOfTinyTrianglesKeepTheirSign) {
   // Three points 1e-10 apart on the unit sphere: the triple product in differences resolves
   // their orientation (the plain product errs by about 1e-16, more than their area of 1e-20).

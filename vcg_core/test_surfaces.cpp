@@ -100,17 +100,21 @@ double distance_to_segment(const Point3 &p, const Point3 &a, const Point3 &b) {
 
 } // namespace
 
-void make_tentacle_blob(Mesh &mesh, int tentacles, double length, int resolution) {
+void make_tentacle_blob(Mesh &mesh, int tentacles, double length, int resolution, bool hole) {
   if (tentacles < 0 || tentacles > 32) throw ArgumentError("tentacles must be between 0 and 32");
   if (length < 1.0 || length > 20.0)
     throw ArgumentError("tentacle length must be between 1 and 20");
   if (resolution < 10) throw ArgumentError("resolution must be at least 10");
-  // Directions spread by the golden-angle spiral.
-  std::vector<Point3> tips;
+  // Directions spread by the golden-angle spiral; with a hole (along z), within 30 degrees of the
+  // equator, so that every tentacle leaves the ring around the hole.
+  std::vector<Point3> tips, roots;
+  const double band = hole ? 0.5 : 1.0;
   for (int k = 0; k < tentacles; ++k) {
-    const double z = 1.0 - 2.0 * (k + 0.5) / tentacles, r = std::sqrt(1 - z * z);
+    const double z = band * (1.0 - 2.0 * (k + 0.5) / tentacles), r = std::sqrt(1 - z * z);
     const double phi = k * M_PI * (3.0 - std::sqrt(5.0));
-    tips.push_back(Point3(r * std::cos(phi), r * std::sin(phi), z) * length);
+    const Point3 direction(r * std::cos(phi), r * std::sin(phi), z);
+    tips.push_back(direction * length);
+    roots.push_back(hole ? direction * 0.75 : Point3(0, 0, 0));
   }
   const double tube = 0.12, voxel = 2.0 / resolution;
   vcg::Box3d box(Point3(-1, -1, -1), Point3(1, 1, 1));
@@ -121,8 +125,9 @@ void make_tentacle_blob(Mesh &mesh, int tentacles, double length, int resolution
   extract_isosurface(
       [&](const Point3 &p) {
         double d = p.Norm() - 1.0;
-        for (const Point3 &tip : tips)
-          d = smooth_min(d, distance_to_segment(p, Point3(0, 0, 0), tip) - tube, 0.2);
+        if (hole) d = std::max(d, 0.45 - std::hypot(p[0], p[1]));
+        for (size_t k = 0; k < tips.size(); ++k)
+          d = smooth_min(d, distance_to_segment(p, roots[k], tips[k]) - tube, 0.2);
         return d;
       },
       box, voxel, mesh);

@@ -31,8 +31,11 @@ void make_genus_surface(Mesh &mesh, int genus, int resolution, bool remesh = tru
 
 // Genus 0 with long thin parts: a ball with `tentacles` tubes of radius 0.12 reaching `length`
 // from its centre in well-spread directions, blended in (marching cubes + isotropic remeshing).
-// The hard case for conformal maps to the sphere: thin parts shrink exponentially.
-void make_tentacle_blob(Mesh &mesh, int tentacles, double length, int resolution);
+// The hard case for conformal maps to the sphere: thin parts shrink exponentially. With `hole`,
+// the ball has a hole through it (genus 1, a figure with long limbs) and the tentacles leave the
+// ring around it.
+void make_tentacle_blob(Mesh &mesh, int tentacles, double length, int resolution,
+                        bool hole = false);
 
 // What scans and exporters do to a triangulation, on the same surface: splits a `fraction` of
 // the edges (chosen by a hash of their vertex indices, the same on every machine, at most one per

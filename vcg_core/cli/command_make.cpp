@@ -31,6 +31,7 @@ struct MakeOptions {
   // blob
   int tentacles = 6;
   double tentacle_length = 4.0;
+  bool hole = false;
 };
 
 int finish(Mesh &mesh, const MakeOptions &options) {
@@ -126,6 +127,8 @@ Command add_make_command(CLI::App &app) {
       ->capture_default_str();
   blob->add_option("--resolution", options->resolution, "edges across the ball")
       ->capture_default_str();
+  blob->add_flag("--hole", options->hole,
+                 "a hole through the ball: genus 1, a figure with long limbs");
 
   return [options, sphere, torus, genus, blob]() {
     Mesh mesh;
@@ -145,7 +148,8 @@ Command add_make_command(CLI::App &app) {
         make_grid_torus(mesh, options->major_radius, options->minor_radius, major, minor);
       }
     } else if (blob->parsed()) {
-      make_tentacle_blob(mesh, options->tentacles, options->tentacle_length, options->resolution);
+      make_tentacle_blob(mesh, options->tentacles, options->tentacle_length, options->resolution,
+                         options->hole);
     } else {
       make_genus_surface(mesh, options->genus, options->resolution, !options->raw_marching_cubes);
     }
