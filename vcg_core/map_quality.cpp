@@ -76,7 +76,7 @@ MapQuality measure_map_quality(const Mesh &mesh, const std::vector<Eigen::Vector
   for (int v : branch_vertices)
     near_branch[v] = 1;
   std::vector<FaceMeasure> all, away;
-  std::vector<int> folded;
+  std::vector<int> folded, collapsed;
   all.reserve(mesh.face.size());
   for (size_t f = 0; f < mesh.face.size(); ++f) {
     const MeshFace &face = mesh.face[f];
@@ -98,10 +98,11 @@ MapQuality measure_map_quality(const Mesh &mesh, const std::vector<Eigen::Vector
     if (!std::isfinite(m.quasi_conformal)) m.quasi_conformal = 1e300;
     m.angle_error_degrees = face_angle_error_degrees(mesh, sphere, int(f));
     if (m.folded) folded.push_back(int(f));
+    if (m.collapsed) collapsed.push_back(int(f));
     all.push_back(m);
     if (!touches_branch) away.push_back(m);
   }
-  return {summarize(all), summarize(away), std::move(folded)};
+  return {summarize(all), summarize(away), std::move(folded), std::move(collapsed)};
 }
 
 } // namespace meromorph

@@ -9,7 +9,7 @@
 //      a branch vertex: quasi-conformal mean, 95th percentile and max, mean angle error, folded
 //      count, and the count of collapsed faces, whose image's longest side is below 1e-14 (long
 //      thin parts shrink exponentially under any conformal map; below that, double precision
-//      cannot tell their orientation). Also the indices of the folded faces.
+//      cannot tell their orientation). Also the indices of the folded and of the collapsed faces.
 #pragma once
 
 #include <vector>
@@ -31,7 +31,8 @@ struct QualityStatistics {
 struct MapQuality {
   QualityStatistics overall;
   QualityStatistics away_from_branch_points;
-  std::vector<int> folded_face_indices; // every folded face, branch vertices included
+  std::vector<int> folded_face_indices;    // every folded face, branch vertices included
+  std::vector<int> collapsed_face_indices; // every collapsed face
 };
 
 // The mean absolute difference of a face's corner angles and its image's, in degrees.

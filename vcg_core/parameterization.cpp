@@ -3,6 +3,7 @@
 #include <chrono>
 #include <optional>
 #include <set>
+#include <sstream>
 
 #include "branch_points.h"
 #include "branch_snapping.h"
@@ -55,14 +56,21 @@ std::vector<std::string> invalid_reasons(const ParameterizeOptions &options,
 }
 
 // What a user can do when the map is not valid, from what this mesh and map show.
-std::string invalid_map_advice(const Mesh &mesh, const ParameterizeOptions &options,
-                               const Parameterization &map) {
+// `mesh` is the unit-scale copy; places are given in `input`'s coordinates.
+std::string invalid_map_advice(const Mesh &input, const Mesh &mesh,
+                               const ParameterizeOptions &options, const Parameterization &map) {
   std::vector<std::string> causes;
-  if (map.quality.overall.collapsed_faces > 0)
-    causes.push_back(std::to_string(map.quality.overall.collapsed_faces) +
-                     " faces map to spots smaller than double precision resolves: long thin parts "
-                     "shrink exponentially under a conformal map (shorten or thicken them, or "
-                     "map them separately)");
+  const std::vector<int> &collapsed = map.quality.collapsed_face_indices;
+  if (!collapsed.empty()) {
+    const Point3 &at = input.face[size_t(collapsed.front())].cP(0);
+    std::ostringstream where;
+    where << " (faces " << list_indices(collapsed) << "; the first at " << at[0] << ", " << at[1]
+          << ", " << at[2] << ")";
+    causes.push_back(std::to_string(collapsed.size()) +
+                     " faces map to spots smaller than double precision resolves" + where.str() +
+                     ": long thin parts shrink exponentially under a conformal map (shorten or "
+                     "thicken them, or map them separately)");
+  }
   int needles = 0;
   for (const MeshFace &face : mesh.face)
     needles += smallest_angle(face) < M_PI / 180;
@@ -331,7 +339,7 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
   out.quality = measure_map_quality(mesh, out.sphere, branching.branch_vertices);
   out.invalid = invalid_reasons(options, out);
   out.valid = out.invalid.empty();
-  if (!out.valid) out.advice = invalid_map_advice(mesh, options, out);
+  if (!out.valid) out.advice = invalid_map_advice(input, mesh, options, out);
   lap("texture_and_quality");
   progress.report(1.0, "done");
   return out;
