@@ -1,6 +1,9 @@
 #include "filter_meromorph.h"
 
 #include <QElapsedTimer>
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonValue>
 #include <vector>
 
 #include "meromorph.h"
@@ -83,6 +86,10 @@ void FilterMeromorphPlugin::initParameterSet(QAction *, MeshModel &,
                "k on the sphere of radius 1 + gap * k, so the layers can be seen."));
   parameters.addParam(RichFloat("layerGap", 0.2f, "Layer gap",
                                 "Radius step between layers of the layered sphere."));
+  parameters.addParam(RichBool("closeHoles", true, "Close holes",
+                               "Close every hole for the computation only: the mesh keeps its "
+                               "faces, the holes show as gaps on the sphere. Off: a mesh with "
+                               "holes is refused."));
 }
 
 bool FilterMeromorphPlugin::fail(const QString &message) {
@@ -142,6 +149,7 @@ bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
   options.form_pair[0] = parameters.getInt("formI");
   options.form_pair[1] = parameters.getInt("formJ");
   options.layer_gap = parameters.getFloat("layerGap");
+  options.close_holes = parameters.getBool("closeHoles") ? 1 : 0;
   ProgressBridge bridge{callback};
   options.progress = report_progress;
   options.progress_user = &bridge;
@@ -171,6 +179,9 @@ bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
   const bool valid = meromorph_map_valid(result) != 0;
   const std::string invalid_reasons = meromorph_invalid_reasons(result);
   const std::string advice = meromorph_advice(result);
+  // What was closed or split for the computation, in the report's words.
+  const QJsonArray notes =
+      QJsonDocument::fromJson(QByteArray(meromorph_report_json(result)))["notes"].toArray();
   meromorph_result_free(result);
 
   model->updateDataMask(MeshModel::MM_VERTTEXCOORD | MeshModel::MM_VERTQUALITY);
@@ -218,6 +229,8 @@ bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
       branch_list.toStdString().c_str(), riemann_hurwitz ? "holds" : "FAILS",
       distortion.angle_error_mean_degrees, distortion.quasi_conformal_mean,
       int(distortion.folded_faces_away_from_branch_points), (long long)timer.elapsed());
+  for (const QJsonValue &note : notes)
+    Log("Conformal spherical parameterization: %s", note.toString().toStdString().c_str());
   if (!valid)
     Log(GLLogStream::WARNING,
         "The map is not a valid branched cover of the sphere on this triangulation: %s. What to "

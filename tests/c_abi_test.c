@@ -3,6 +3,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
 #include <pthread.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -177,6 +178,28 @@ int main(void) {
   CHECK(meromorph_parameterize_d(positions, V, triangles, F - 1, &options, &result) ==
         MEROMORPH_ERROR_INPUT);
   CHECK(strstr(meromorph_last_error(), "boundary loop") != NULL);
+  CHECK(strstr(meromorph_last_error(), "close") != NULL);
+  /* The same torus with one face missing: its hole closed for the computation only. */
+  options.close_holes = 1;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F - 1, &options, &result) ==
+        MEROMORPH_OK);
+  CHECK(meromorph_vertex_count(result) == V && meromorph_triangle_count(result) == F - 1);
+  CHECK(meromorph_genus(result) == 1 && meromorph_degree(result) == 2);
+  CHECK(meromorph_map_valid(result) == 1);
+  CHECK(strstr(meromorph_report_json(result), "holes_closed") != NULL);
+  meromorph_result_free(result);
+  result = NULL;
+  options.close_holes = 2;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_ARGUMENT);
+  CHECK(strstr(meromorph_last_error(), "close_holes") != NULL);
+  /* A caller compiled against ABI version 1 (no close_holes) is still served. */
+  meromorph_default_options(&options);
+  options.struct_size = offsetof(meromorph_options, close_holes);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_OK);
+  meromorph_result_free(result);
+  result = NULL;
+  meromorph_default_options(&options);
   options.origin_vertex = V + 100;
   CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
         MEROMORPH_ERROR_ARGUMENT);

@@ -95,17 +95,41 @@ TEST(MeshLabPlugin, TorusAndGenusTwoMatchTheCommandLine) {
   expect_same_as_cli(meshlab, test::data_path("eight.off"), 6);
 }
 
-TEST(MeshLabPlugin, OpenMeshFailsWithTheReasonInTheLog) {
+TEST(MeshLabPlugin, HolesAreClosedForTheComputationOrRefused) {
   const MeshLab meshlab;
   std::string log;
+  // Close holes off: refused, with the reason in the log, nothing written.
+  std::ifstream script_stream(script);
+  std::stringstream script_text;
+  script_text << script_stream.rdbuf();
+  std::string refusing = script_text.str();
+  const std::string on = "value=\"true\" name=\"closeHoles\"";
+  ASSERT_NE(refusing.find(on), std::string::npos);
+  refusing.replace(refusing.find(on), on.size(), "value=\"false\" name=\"closeHoles\"");
+  const std::string refusing_script = meshlab.path("refusing.mlx");
+  std::ofstream(refusing_script) << refusing;
   EXPECT_NE(meshlab.run("-i " + test::data_path("eight.hole.off") + " -o " + meshlab.path("x.ply") +
-                            " -s " + script,
+                            " -s " + refusing_script,
                         log),
             0);
   EXPECT_NE(log.find("Conformal Spherical Parameterization failed: the surface is open"),
             std::string::npos)
       << log;
   EXPECT_FALSE(fs::exists(meshlab.path("x.ply")));
+  // Close holes on (the default): mapped, every vertex keeps its texture coordinates, the log
+  // says what was closed.
+  ASSERT_EQ(meshlab.run("-i " + test::data_path("eight.hole.off") + " -o " +
+                            meshlab.path("holed.ply") + " -m vt vq vf -s " + script,
+                        log),
+            0)
+      << log;
+  EXPECT_NE(log.find("genus 2, degree 2, 6 branch points"), std::string::npos) << log;
+  EXPECT_NE(log.find("1 hole was closed for the computation only"), std::string::npos) << log;
+  Mesh input, holed;
+  test::load(test::data_path("eight.hole.off"), input);
+  test::load_ply_attributes(meshlab.path("holed.ply"), holed);
+  EXPECT_EQ(holed.VN(), input.VN());
+  EXPECT_EQ(holed.FN(), input.FN());
 }
 
 TEST(MeshLabPlugin, FilterIsListedWithItsParameters) {
@@ -119,10 +143,10 @@ TEST(MeshLabPlugin, FilterIsListedWithItsParameters) {
   const size_t at = dump.find("Conformal Spherical Parameterization");
   ASSERT_NE(at, std::string::npos);
   const std::string section = dump.substr(at, dump.find("\\section", at + 1) - at);
-  for (const char *label :
-       {"Texture coordinates", "Moebius normalization", "Genus 1: pole vertex",
-        "Genus >= 2: first form", "Genus >= 2: second form",
-        "Seam-correct wedge texture coordinates", "Create the layered sphere", "Layer gap"})
+  for (const char *label : {"Texture coordinates", "Moebius normalization", "Genus 1: pole vertex",
+                            "Genus >= 2: first form", "Genus >= 2: second form",
+                            "Seam-correct wedge texture coordinates", "Create the layered sphere",
+                            "Layer gap", "Close holes"})
     EXPECT_NE(section.find(label), std::string::npos) << label;
 }
 

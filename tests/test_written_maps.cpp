@@ -150,5 +150,106 @@ TEST(WrittenMaps, GeneratedSurfaces) {
   }
 }
 
+// Meshes as users bring them: holes closed for the computation, several parts. Judged from the
+// files: every input vertex and face is there, in order; no face is folded; every vertex away from
+// a hole winds as the report says; each part covers the sphere `degree` times (less its holes'
+// gaps), and closed parts satisfy Riemann-Hurwitz on their own.
+struct PartExpected {
+  int genus;
+  bool has_holes;
+};
+
+void expect_valid_parts_map(const test::TempDir &dir, const std::string &input,
+                            const std::vector<std::string> &options,
+                            const std::vector<PartExpected> &parts) {
+  const std::string name = input.substr(input.rfind('/') + 1);
+  std::vector<std::string> arguments = {"param",    input,
+                                        "-o",       dir.path(name + ".uv.ply"),
+                                        "--sphere", dir.path(name + ".sphere.ply"),
+                                        "--report", dir.path(name + ".json"),
+                                        "--quiet"};
+  arguments.insert(arguments.end(), options.begin(), options.end());
+  const test::RunResult r = run_cli(arguments);
+  ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+  std::ifstream report_stream(dir.path(name + ".json"));
+  const nlohmann::json report = nlohmann::json::parse(report_stream);
+  const test::WrittenMap map = test::read_written_map(dir.path(name + ".sphere.ply"), 0,
+                                                      report.value("component_spacing", 0.0));
+  Mesh original;
+  test::load(input, original);
+  EXPECT_EQ(map.vertices, original.VN()) << name;
+  EXPECT_EQ(map.faces, original.FN()) << name;
+  for (int v = 0; v < map.vertices; ++v)
+    ASSERT_EQ(map.source_vertex[size_t(v)], v) << name;
+  for (int f = 0; f < map.faces; ++f)
+    for (int k = 0; k < 3; ++k)
+      ASSERT_EQ(map.triangles[size_t(f)][size_t(k)],
+                index_of(original, original.face[size_t(f)].cV(k)))
+          << name << ": face " << f;
+  EXPECT_EQ(map.folded_faces.size(), 0u)
+      << name << ": folded faces, first " << (map.folded_faces.empty() ? -1 : map.folded_faces[0]);
+  std::set<int> reported;
+  for (const auto &b : report["branch_points"]) {
+    reported.insert(b["vertex"].get<int>());
+    EXPECT_EQ(b["ramification"], map.local_degree[b["vertex"].get<size_t>()]) << name;
+  }
+  EXPECT_EQ(reported, std::set<int>(map.branch_vertices.begin(), map.branch_vertices.end()))
+      << name;
+  ASSERT_EQ(map.component_area_over_4pi.size(), parts.size()) << name;
+  ASSERT_EQ(report["components"].size(), parts.size()) << name;
+  for (size_t k = 0; k < parts.size(); ++k) {
+    const int genus = parts[k].genus;
+    const int degree = genus == 0 ? 1 : genus == 1 ? 2 : 2 * genus - 2;
+    EXPECT_EQ(report["components"][k]["genus"], genus) << name << " part " << k;
+    EXPECT_EQ(report["components"][k]["degree"], degree) << name << " part " << k;
+    const double area = map.component_area_over_4pi.at(int(k));
+    if (parts[k].has_holes) {
+      EXPECT_LT(area, degree) << name << " part " << k << ": the holes leave gaps";
+      EXPECT_GT(area, degree - 0.5) << name << " part " << k;
+    } else {
+      EXPECT_NEAR(area, degree, 0.01) << name << " part " << k;
+      EXPECT_EQ(2 - 2 * genus, 2 * degree - map.component_ramification.at(int(k)))
+          << name << " part " << k << ": Riemann-Hurwitz";
+    }
+  }
+}
+
+std::string several_parts(const test::TempDir &dir) {
+  // The shared sphere, torus and "eight", side by side in one file.
+  std::ostringstream vertices, faces;
+  vertices.precision(17);
+  int vertex_count = 0, face_count = 0, offset = 0;
+  for (const char *name : {"sphere.off", "torus.off", "eight.off"}) {
+    Mesh part;
+    test::load(test::data_path(name), part);
+    for (const MeshVertex &v : part.vert)
+      vertices << v.cP()[0] + 3 * offset << " " << v.cP()[1] << " " << v.cP()[2] << "\n";
+    for (const MeshFace &f : part.face)
+      faces << "3 " << vertex_count + index_of(part, f.cV(0)) << " "
+            << vertex_count + index_of(part, f.cV(1)) << " "
+            << vertex_count + index_of(part, f.cV(2)) << "\n";
+    vertex_count += part.VN();
+    face_count += part.FN();
+    ++offset;
+  }
+  return dir.write("three_parts.off", "OFF\n" + std::to_string(vertex_count) + " " +
+                                          std::to_string(face_count) + " 0\n" + vertices.str() +
+                                          faces.str());
+}
+
+TEST(WrittenMaps, HolesClosedAndSeveralParts) {
+  test::TempDir dir;
+  expect_valid_parts_map(dir, test::data_path("bunny.off"), {"--close-holes"}, {{0, true}});
+  expect_valid_parts_map(dir, test::data_path("eight.hole.off"), {"--close-holes"}, {{2, true}});
+  expect_valid_parts_map(dir, test::data_path("face.off"), {"--close-holes"}, {{0, true}});
+  expect_valid_parts_map(dir, several_parts(dir), {"--layer-gap", "0.2"},
+                         {{0, false}, {1, false}, {2, false}});
+  // Without --close-holes a mesh with holes is refused, naming the option.
+  const test::RunResult refused =
+      run_cli({"param", test::data_path("bunny.off"), "-o", dir.path("b.ply"), "--quiet"});
+  EXPECT_EQ(refused.exit_code, 3);
+  EXPECT_NE(refused.err.find("--close-holes"), std::string::npos) << refused.err;
+}
+
 } // namespace
 } // namespace meromorph

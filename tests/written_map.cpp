@@ -47,7 +47,7 @@ template <class T> T read_value(const std::string &bytes, size_t &at) {
 
 } // namespace
 
-WrittenMap read_written_map(const std::string &path, int euler) {
+WrittenMap read_written_map(const std::string &path, int euler, double component_spacing) {
   std::ifstream stream(path, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(stream)), {});
   const size_t header_end = bytes.find("end_header\n");
@@ -78,7 +78,7 @@ WrittenMap read_written_map(const std::string &path, int euler) {
   size_t at = header_end + std::strlen("end_header\n");
   for (int v = 0; v < out.vertices; ++v) {
     Vec p{};
-    int layer = 0, branch = 0;
+    int layer = 0, branch = 0, source = v, component = 0;
     for (const std::string &property : vertex_properties) {
       if (property == "double x")
         p[0] = read_value<double>(bytes, at);
@@ -90,9 +90,16 @@ WrittenMap read_written_map(const std::string &path, int euler) {
         layer = read_value<int32_t>(bytes, at);
       else if (property == "uchar branch")
         branch = read_value<uint8_t>(bytes, at);
+      else if (property == "int source_vertex")
+        source = read_value<int32_t>(bytes, at);
+      else if (property == "int component")
+        component = read_value<int32_t>(bytes, at);
       else
         throw std::runtime_error("unexpected vertex property " + property);
     }
+    p[0] -= component * component_spacing; // part k's sphere is centred at x = k * spacing
+    out.source_vertex.push_back(source);
+    out.component.push_back(component);
     const double r = std::sqrt(dot(p, p));
     out.sphere.push_back({p[0] / r, p[1] / r, p[2] / r});
     out.layer.push_back(layer);
@@ -106,6 +113,16 @@ WrittenMap read_written_map(const std::string &path, int euler) {
     out.triangles.push_back(t);
   }
 
+  // Vertices on a hole of the written surface (its one-ring is not closed): no winding.
+  std::map<std::pair<int, int>, int> walked;
+  for (const auto &t : out.triangles)
+    for (int k = 0; k < 3; ++k)
+      ++walked[{t[size_t(k)], t[size_t((k + 1) % 3)]}];
+  out.on_boundary.assign(size_t(out.vertices), 0);
+  for (const auto &[edge, count] : walked)
+    if (!walked.count({edge.second, edge.first}))
+      out.on_boundary[size_t(edge.first)] = out.on_boundary[size_t(edge.second)] = 1;
+
   // Folds, degree and layer coverage from the faces' images.
   std::vector<double> winding(size_t(out.vertices), 0.0);
   double total = 0;
@@ -117,6 +134,7 @@ WrittenMap read_written_map(const std::string &path, int euler) {
     if (!(dot(a, cross(sub(b, a), sub(c, a))) > 0)) out.folded_faces.push_back(f);
     const double angle = solid_angle(a, b, c);
     total += angle;
+    out.component_area_over_4pi[out.component[size_t(t[0])]] += angle / (4 * M_PI);
     for (int k = 0; k < 3; ++k)
       by_layer[out.layer[size_t(t[size_t(k)])]] += angle / 3;
     // Winding: each face (v, a, b) adds the angle from a's image to b's around v's image.
@@ -135,10 +153,12 @@ WrittenMap read_written_map(const std::string &path, int euler) {
     }
   }
   for (int v = 0; v < out.vertices; ++v) {
-    const int e = int(std::lround(winding[size_t(v)] / (2 * M_PI)));
+    const int e =
+        out.on_boundary[size_t(v)] ? 1 : int(std::lround(winding[size_t(v)] / (2 * M_PI)));
     out.local_degree.push_back(e);
     if (e >= 2) out.branch_vertices.push_back(v);
     out.ramification += e - 1;
+    out.component_ramification[out.component[size_t(v)]] += e - 1;
   }
   out.area_over_4pi = total / (4 * M_PI);
   out.degree = int(std::lround(out.area_over_4pi));

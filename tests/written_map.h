@@ -2,8 +2,9 @@
 // --sphere` wrote, with a PLY parser and geometry of its own (nothing from the core), and
 // re-derives what the report claims.
 //
-// In:  the sphere file (binary little-endian PLY: vertex x, y, z, int layer, uchar branch; face
-//      vertex_indices) and the Euler characteristic of the surface.
+// In:  the sphere file (binary little-endian PLY: vertex x, y, z, int layer, uchar branch, int
+//      source_vertex, int component; face vertex_indices) and the Euler characteristic of the
+//      surface.
 // Out: `WrittenMap`: folded faces (chordal image triangle with non-positive signed volume),
 //      the local degree of every vertex (winding of its one-ring's image in the tangent-plane
 //      stereographic chart at its image), the degree (total signed solid angle / 4 pi), whether
@@ -12,6 +13,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -30,9 +32,17 @@ struct WrittenMap {
   int degree = 0;
   bool riemann_hurwitz = false;
   std::vector<double> layer_coverage; // per layer: signed area / 4 pi
+  // Several parts and closed holes: the `source_vertex` and `component` properties, vertices on
+  // a hole of the written surface (their winding is not measured: local degree 1), and per
+  // component the signed area / 4 pi and the ramification.
+  std::vector<int> source_vertex, component;
+  std::vector<char> on_boundary;
+  std::map<int, double> component_area_over_4pi;
+  std::map<int, int> component_ramification;
 };
 
-WrittenMap read_written_map(const std::string &sphere_ply, int euler);
+// `component_spacing`: the report's; part k's sphere is centred at x = k * spacing.
+WrittenMap read_written_map(const std::string &sphere_ply, int euler, double component_spacing = 0);
 
 // The mean corner-angle error in degrees between the surface as written by `param -o` (binary
 // PLY with double x, y, z) and the chordal triangles of the written sphere.

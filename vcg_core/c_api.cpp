@@ -1,6 +1,7 @@
 // The C ABI (meromorph.h) over the core: arrays in, the parameterization out, errors as codes.
 #include "meromorph.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <new>
@@ -10,6 +11,7 @@
 #include "mesh_from_arrays.h"
 #include "parameterization.h"
 #include "report_json.h"
+#include "surface_map.h"
 
 struct meromorph_result {
   meromorph::Parameterization map;
@@ -35,6 +37,8 @@ std::string check_options(const meromorph_options &options, size_t vertex_count,
            "; use 0 (spherical) or 1 (stereographic)";
   if (options.mobius != 0 && options.mobius != 1)
     return "options.mobius is " + std::to_string(options.mobius) + "; use 0 or 1";
+  if (options.close_holes != 0 && options.close_holes != 1)
+    return "options.close_holes is " + std::to_string(options.close_holes) + "; use 0 or 1";
   if (options.origin_vertex < -1 || (long long)options.origin_vertex >= (long long)vertex_count)
     return "options.origin_vertex is " + std::to_string(options.origin_vertex) +
            "; use -1 (automatic) or a vertex from 0 to " + std::to_string(vertex_count - 1);
@@ -71,13 +75,16 @@ meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
   meromorph_options settings;
   meromorph_default_options(&settings);
   if (options) {
-    if (options->struct_size != sizeof(meromorph_options))
+    // Version 1 ended before close_holes.
+    const size_t version_1_size = offsetof(meromorph_options, close_holes);
+    if (options->struct_size != sizeof(meromorph_options) && options->struct_size != version_1_size)
       return fail(MEROMORPH_ERROR_ARGUMENT,
                   "options.struct_size is " + std::to_string(options->struct_size) +
                       ", which matches no version of meromorph_options (this library's is " +
                       std::to_string(sizeof(meromorph_options)) +
                       "): initialize the options with meromorph_default_options");
-    std::memcpy(&settings, options, sizeof(settings));
+    std::memcpy(&settings, options, options->struct_size);
+    settings.struct_size = sizeof(meromorph_options);
   }
   if (const std::string problem = check_options(settings, vertex_count, triangle_count);
       !problem.empty())
@@ -101,6 +108,7 @@ meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
     parameters.form_pair = {settings.form_pair[0], settings.form_pair[1]};
     parameters.layer_gap = settings.layer_gap;
     parameters.puncture_face = settings.pole_face;
+    parameters.close_holes = settings.close_holes != 0;
     Progress progress;
     if (settings.progress) {
       const meromorph_progress_fn callback = settings.progress;
@@ -111,7 +119,7 @@ meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
     }
     auto *out = new meromorph_result;
     try {
-      out->map = meromorph::parameterize(mesh, parameters, progress);
+      out->map = meromorph::parameterize_surface(mesh, parameters, progress);
       nlohmann::json report = parameterization_json(out->map);
       report["version"] = MEROMORPH_VERSION;
       out->report = report.dump(2);

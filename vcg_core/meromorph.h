@@ -28,7 +28,7 @@
 extern "C" {
 #endif
 
-#define MEROMORPH_ABI_VERSION 1
+#define MEROMORPH_ABI_VERSION 2
 
 #if defined(__GNUC__)
 #define MEROMORPH_API __attribute__((visibility("default")))
@@ -58,6 +58,9 @@ typedef struct meromorph_options {
   int pole_face;                  /* genus 0: the face around the north pole; -1: automatic */
   meromorph_progress_fn progress; /* may be NULL */
   void *progress_user;
+  int close_holes; /* 1: close holes for the computation only (outputs keep the input's faces);
+                      0: refuse a mesh with holes (default). Since ABI version 2; a version-1
+                      struct_size is still accepted, with 0 here. */
 } meromorph_options;
 
 typedef struct meromorph_result meromorph_result;

@@ -40,6 +40,14 @@ struct ParameterizeOptions {
   double layer_gap = 0.0;               // layer k on the sphere of radius 1 + gap * k
   int puncture_face = -1;               // genus 0: the face at the pole (-1: automatic)
   SolverKind solver = SolverKind::cholmod;
+  bool close_holes = false; // parameterize_surface: close holes for the computation only
+};
+
+// A hole closed for the computation (surface_map.h): its part, loop length in edges, a vertex of
+// it, and the share of the sphere its closing faces cover (the gap it leaves in the outputs).
+struct ClosedHoleReport {
+  int part = 0, edges = 0, vertex = -1;
+  double image_area_over_4pi = 0;
 };
 
 struct BranchPoint {
@@ -88,6 +96,14 @@ struct Parameterization {
   // of a MeshLab or Blender user; empty otherwise.
   std::string advice;
   std::vector<std::string> notes; // harmless oddities of the mesh (coincident vertices, ...)
+  // parameterize_surface, when the mesh had several parts or holes were closed: each part's own
+  // map (figures only: its per-vertex arrays are in the ones above, in the input's numbering; its
+  // branch points' vertices are the input's, -1 at a hole's centre), and the holes closed.
+  std::vector<Parameterization> components;
+  std::vector<ClosedHoleReport> holes_closed;
+  std::vector<int> vertex_component; // per vertex: its part (empty: one part); part k's layered
+                                     // sphere is centred at x = k * component_spacing
+  double component_spacing = 0;
 };
 
 Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &options = {},

@@ -105,16 +105,37 @@ nlohmann::json parameterization_json(const Parameterization &map) {
         {"away_from_branch_points", statistics_json(map.quality.away_from_branch_points)}}},
       {"non_holomorphicity_mean", map.non_holomorphicity_mean},
       {"timings_ms", timings}};
+  // With several parts the genus-specific figures are the parts' (in `components`).
+  const bool one_part = map.components.size() <= 1;
   if (map.modulus) report["modulus"] = {map.modulus->real(), map.modulus->imag()};
-  if (map.genus >= 2) report["riemann_matrix"] = complex_matrix_json(map.riemann_matrix);
-  if (map.genus == 0)
+  if (one_part && map.genus >= 2)
+    report["riemann_matrix"] = complex_matrix_json(map.riemann_matrix);
+  if (one_part && map.genus == 0)
     report["genus0"] = {{"pole_face", map.puncture_face}, {"raised_weights", map.raised_weights}};
-  if (map.genus == 1) report["origin_vertex"] = map.origin_vertex;
+  if (one_part && map.genus == 1) report["origin_vertex"] = map.origin_vertex;
   report["valid"] = map.valid;
   report["invalid"] = map.invalid;
   if (!map.advice.empty()) report["advice"] = map.advice;
   report["notes"] = map.notes;
-  if (map.genus >= 2) {
+  if (!map.components.empty()) {
+    nlohmann::json components = nlohmann::json::array();
+    for (const Parameterization &part : map.components) {
+      nlohmann::json entry = parameterization_json(part);
+      entry["faces"] = part.quality.overall.faces;
+      entry.erase("timings_ms");
+      components.push_back(entry);
+    }
+    report["components"] = components;
+    report["component_spacing"] = map.component_spacing;
+    nlohmann::json holes = nlohmann::json::array();
+    for (const ClosedHoleReport &hole : map.holes_closed)
+      holes.push_back({{"part", hole.part},
+                       {"edges", hole.edges},
+                       {"vertex", hole.vertex},
+                       {"sphere_area_over_4pi", hole.image_area_over_4pi}});
+    report["holes_closed"] = holes;
+  }
+  if (one_part && map.genus >= 2) {
     report["form_pair"] = map.form_pair;
     auto coefficients = [](const Eigen::VectorXcd &c) {
       nlohmann::json list = nlohmann::json::array();

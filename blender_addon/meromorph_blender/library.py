@@ -10,7 +10,7 @@ import os
 
 import numpy as np
 
-ABI_VERSION = 1
+ABI_VERSION = 2
 STATUS_NAMES = {1: "internal failure", 2: "bad argument", 3: "cannot be mapped", 4: "cancelled"}
 
 PROGRESS = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_double, ctypes.c_char_p, ctypes.c_void_p)
@@ -27,6 +27,7 @@ class Options(ctypes.Structure):
         ("pole_face", ctypes.c_int),
         ("progress", PROGRESS),
         ("progress_user", ctypes.c_void_p),
+        ("close_holes", ctypes.c_int),
     ]
 
 
@@ -83,7 +84,7 @@ def load():
 
 
 def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
-                 form_pair=(-1, -1), layer_gap=0.0, progress=None):
+                 form_pair=(-1, -1), layer_gap=0.0, close_holes=False, progress=None):
     lib = load()
     positions = np.ascontiguousarray(positions, dtype=np.float32).reshape(-1)
     triangles = np.ascontiguousarray(triangles, dtype=np.int32).reshape(-1)
@@ -94,6 +95,7 @@ def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
     options.origin_vertex = origin_vertex
     options.form_pair[0], options.form_pair[1] = form_pair
     options.layer_gap = layer_gap
+    options.close_holes = 1 if close_holes else 0
     callback = PROGRESS(lambda fraction, stage, user: 1 if progress is None else progress(fraction))
     options.progress = callback
     result = ctypes.c_void_p()

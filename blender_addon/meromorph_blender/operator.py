@@ -62,6 +62,9 @@ class MESH_OT_conformal_sphere_map(bpy.types.Operator):
     layer_gap: FloatProperty(name="Layer Gap", default=0.2, min=0.0, max=10.0,
                              description="Layer k lies on the sphere of radius 1 + gap * k")
     select_branch: BoolProperty(name="Select Branch Vertices", default=True)
+    close_holes: BoolProperty(name="Close Holes", default=True,
+                              description="Close every hole for the computation only: the mesh "
+                                          "keeps its faces, the holes show as gaps on the sphere")
 
     @classmethod
     def poll(cls, context):
@@ -101,7 +104,7 @@ class MESH_OT_conformal_sphere_map(bpy.types.Operator):
                 positions, triangles, uv_kind=0 if self.uv_kind == "SPHERICAL" else 1,
                 mobius=self.mobius, origin_vertex=self.origin,
                 form_pair=(self.form_i, self.form_j), layer_gap=self.layer_gap,
-                progress=progress)
+                close_holes=self.close_holes, progress=progress)
         except library.MeromorphError as error:
             self.report({"ERROR"}, "'%s' cannot be mapped: %s (vertex numbers are Blender's)"
                         % (obj.name, error))

@@ -174,17 +174,43 @@ clear_scene()
 expect_error("No active mesh")
 bpy.ops.mesh.primitive_grid_add()
 grid = bpy.context.active_object
-expect_error("boundary loop")
+expect_error("boundary loop", close_holes=False)
 check(len(grid.data.uv_layers) == 1 and "Conformal Sphere" not in grid.data.uv_layers, "grid unchanged")
 check(bpy.data.objects.get(grid.name + " Layered Sphere") is None, "no sphere object for the grid")
+# With Close Holes (the default) the open grid is mapped: every face keeps its UVs.
+check(run_operator(layer_gap=0.0) == {"FINISHED"}, "grid mapped with its hole closed")
+check("Conformal Sphere" in grid.data.uv_layers, "the grid has the UV layer")
+grid_sphere = bpy.data.objects[grid.name + " Layered Sphere"].data
+check(len(grid_sphere.vertices) == len(grid.data.vertices), "grid sphere keeps every vertex")
+co = np.empty(3 * len(grid_sphere.vertices))
+grid_sphere.vertices.foreach_get("co", co)
+check(np.allclose(np.linalg.norm(co.reshape(-1, 3), axis=1), 1.0, atol=1e-5), "grid on the sphere")
 clear_scene()
+# Two parts: each mapped on its own, side by side in one layered-sphere object.
 bpy.ops.mesh.primitive_cube_add(location=(0, 0, 0))
 first = bpy.context.active_object
+bpy.ops.object.mode_set(mode="EDIT")
+bpy.ops.mesh.subdivide(number_cuts=3)
+bpy.ops.object.mode_set(mode="OBJECT")
 bpy.ops.mesh.primitive_cube_add(location=(5, 0, 0))
 second = bpy.context.active_object
+bpy.ops.object.mode_set(mode="EDIT")
+bpy.ops.mesh.subdivide(number_cuts=3)
+bpy.ops.object.mode_set(mode="OBJECT")
 first.select_set(True)
 bpy.ops.object.join()
-expect_error("separate parts")
+joined = bpy.context.active_object
+check(run_operator(layer_gap=0.0) == {"FINISHED"}, "two parts mapped")
+joined_sphere = bpy.data.objects[joined.name + " Layered Sphere"].data
+co = np.empty(3 * len(joined_sphere.vertices))
+joined_sphere.vertices.foreach_get("co", co)
+co = co.reshape(-1, 3)
+half = len(co) // 2
+centres = sorted(round(float(c), 3) for c in (co[:half].mean(axis=0)[0], co[half:].mean(axis=0)[0]))
+check(abs(centres[1] - centres[0] - 2.5) < 0.1, "the parts' spheres side by side: %s" % centres)
+for part in (co[:half], co[half:]):
+    centre = np.array([round(part[:, 0].mean() / 2.5) * 2.5, 0, 0])
+    check(np.allclose(np.linalg.norm(part - centre, axis=1), 1.0, atol=1e-5), "each part on its sphere")
 clear_scene()
 mesh = bpy.data.meshes.new("Triangle")
 mesh.from_pydata([(0, 0, 0), (1, 0, 0), (0, 1, 0)], [], [(0, 1, 2)])

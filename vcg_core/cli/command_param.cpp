@@ -16,6 +16,7 @@
 #include "repair.h"
 #include "report_json.h"
 #include "staged_outputs.h"
+#include "surface_map.h"
 #include "terminal_progress.h"
 
 namespace meromorph::cli {
@@ -25,7 +26,7 @@ struct ParamOptions {
   std::string input, output, sphere, report;
   std::string uv = "spherical";
   std::string solver = "cholmod";
-  bool no_mobius = false, repair = false, keep_invalid = false, quiet = false;
+  bool no_mobius = false, repair = false, keep_invalid = false, close_holes = false, quiet = false;
   int origin = -1;
   std::vector<int> forms{-1, -1};
   double layer_gap = 0.0;
@@ -51,6 +52,7 @@ int run_param(const ParamOptions &options) {
   settings.layer_gap = options.layer_gap;
   settings.puncture_face = options.puncture_face;
   settings.solver = solver_from_name(options.solver);
+  settings.close_holes = options.close_holes;
 
   const auto start = std::chrono::steady_clock::now();
   Mesh mesh;
@@ -59,7 +61,7 @@ int run_param(const ParamOptions &options) {
   TerminalProgress bar(options.quiet);
   const Parameterization map = [&] {
     try {
-      return parameterize(mesh, settings, bar.progress());
+      return parameterize_surface(mesh, settings, bar.progress());
     } catch (const InputError &error) { // what is wrong with the mesh: say which file
       throw InputError(options.input + ": " + error.what());
     }
@@ -97,8 +99,15 @@ int run_param(const ParamOptions &options) {
     for (size_t v = 0; v < layered.vert.size(); ++v)
       layered.vert[v].P() = Point3(map.layered[v][0], map.layered[v][1], map.layered[v][2]);
     WriteOptions sphere;
+    std::vector<int> component = map.vertex_component;
+    component.resize(layered.vert.size(), 0);
+    std::vector<int> source_vertex(layered.vert.size());
+    for (size_t v = 0; v < source_vertex.size(); ++v)
+      source_vertex[v] = int(v);
     sphere.vertex_properties = {{"layer", map.sheets.vertex_layer, false},
-                                {"branch", map.branch_flag, true}};
+                                {"branch", map.branch_flag, true},
+                                {"source_vertex", source_vertex, false},
+                                {"component", component, false}};
     save_mesh(layered, MeshFormat::ply, sphere_file, sphere);
   }
 
@@ -174,6 +183,9 @@ Command add_param_command(CLI::App &app) {
   param->add_option("--solver", options->solver, "cholmod (default) or ldlt")
       ->check(CLI::IsMember({"cholmod", "ldlt"}));
   param->add_flag("--repair", options->repair, "apply the safe repairs first (see info --help)");
+  param->add_flag("--close-holes", options->close_holes,
+                  "close every hole for the computation only (the outputs keep the input's faces; "
+                  "the holes show as gaps on the sphere)");
   param->add_flag("--keep-invalid", options->keep_invalid,
                   "write the map even when it is not a valid branched cover (the exit code is "
                   "still 3)");

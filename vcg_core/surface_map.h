@@ -1,0 +1,26 @@
+// The main job on a mesh as users bring it: several parts, and holes when asked to close them.
+//
+// In:  a mesh that validation accepts, or that has several parts (each mapped on its own), or
+//      holes (closed for the computation when `options.close_holes`, refused naming the option
+//      otherwise); options (an origin vertex or pole face is the input's and applies to its part;
+//      a form pair to every part of genus >= 2); progress.
+// Out: one `Parameterization` in the input's numbering: a closed, connected mesh gets exactly
+//      `parameterize`'s result; otherwise every input vertex and face gets its part's sphere
+//      position, texture coordinates and layer (each part's texture fills the unit square on its
+//      own; with several parts the layered spheres stand side by side along x), the branch points
+//      of all parts, distortion measured on the input's faces only, the degree, genus, Euler
+//      characteristic and ramification summed over the parts, valid only when every part is, and
+//      `components` (each part's figures) and `holes_closed`. Outputs hold the input's vertices and
+//      faces only: a closed hole shows as a gap on the sphere.
+#pragma once
+
+#include "mesh.h"
+#include "parameterization.h"
+#include "progress.h"
+
+namespace meromorph {
+
+Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptions &options = {},
+                                      const Progress &progress = {});
+
+} // namespace meromorph
