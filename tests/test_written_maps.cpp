@@ -38,6 +38,19 @@ std::string quad_split_torus(const test::TempDir &dir, int major, int minor, dou
   return dir.write("quad_torus_" + std::to_string(major) + ".off", text.str());
 }
 
+// What the report says about branching is what the written map does: the same branch vertices,
+// each with the local degree its one-ring's image winds.
+void expect_reported_branching(const nlohmann::json &report, const test::WrittenMap &map,
+                               const std::string &name) {
+  std::set<int> reported;
+  for (const auto &b : report["branch_points"]) {
+    reported.insert(b["vertex"].get<int>());
+    EXPECT_EQ(b["ramification"], map.local_degree[b["vertex"].get<size_t>()]) << name;
+  }
+  EXPECT_EQ(reported, std::set<int>(map.branch_vertices.begin(), map.branch_vertices.end()))
+      << name;
+}
+
 void expect_valid_written_map(const test::TempDir &dir, const std::string &input, int genus,
                               double max_angle_error_degrees = INFINITY) {
   const std::string name = input.substr(input.rfind('/') + 1);
@@ -57,14 +70,7 @@ void expect_valid_written_map(const test::TempDir &dir, const std::string &input
   EXPECT_TRUE(map.riemann_hurwitz) << name << ": ramification " << map.ramification;
   EXPECT_EQ(report["degree"], map.degree) << name;
   EXPECT_EQ(report["genus"], genus) << name;
-  // What the file and the report say about branching is what the written map does.
-  std::set<int> reported;
-  for (const auto &b : report["branch_points"]) {
-    reported.insert(b["vertex"].get<int>());
-    EXPECT_EQ(b["ramification"], map.local_degree[b["vertex"].get<size_t>()]) << name;
-  }
-  EXPECT_EQ(reported, std::set<int>(map.branch_vertices.begin(), map.branch_vertices.end()))
-      << name;
+  expect_reported_branching(report, map, name);
   for (int v = 0; v < map.vertices; ++v)
     ASSERT_EQ(map.branch_property[size_t(v)],
               map.local_degree[size_t(v)] >= 2 ? map.local_degree[size_t(v)] : 0)
@@ -188,13 +194,7 @@ void expect_valid_parts_map(const test::TempDir &dir, const std::string &input,
           << name << ": face " << f;
   EXPECT_EQ(map.folded_faces.size(), 0u)
       << name << ": folded faces, first " << (map.folded_faces.empty() ? -1 : map.folded_faces[0]);
-  std::set<int> reported;
-  for (const auto &b : report["branch_points"]) {
-    reported.insert(b["vertex"].get<int>());
-    EXPECT_EQ(b["ramification"], map.local_degree[b["vertex"].get<size_t>()]) << name;
-  }
-  EXPECT_EQ(reported, std::set<int>(map.branch_vertices.begin(), map.branch_vertices.end()))
-      << name;
+  expect_reported_branching(report, map, name);
   ASSERT_EQ(map.component_area_over_4pi.size(), parts.size()) << name;
   ASSERT_EQ(report["components"].size(), parts.size()) << name;
   for (size_t k = 0; k < parts.size(); ++k) {
