@@ -45,8 +45,8 @@ double closedness(const MeshEdges &edges, const Eigen::VectorXd &form) {
 } // namespace
 
 HolomorphicForms compute_holomorphic_forms(const Mesh &input, SolverKind solver,
-                                           const Progress &progress) {
-  const Validation validation = validate_mesh(input);
+                                           const Progress &progress, const Validation *validated) {
+  const Validation validation = validated ? *validated : validate_mesh(input);
   if (!validation.ok()) throw InputError(validation.main_finding().message);
   // Computed at unit scale (unit_scale.h): the forms' values on edges do not depend on it.
   Mesh unit;

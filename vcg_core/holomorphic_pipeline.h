@@ -53,8 +53,13 @@ struct HolomorphicForms {
   std::vector<std::string> notes; // validation's notes (harmless oddities of the mesh)
 };
 
+struct Validation;
+
+// `validated`: the mesh's validation when the caller has made it (and it found nothing); else
+// the mesh is validated here.
 HolomorphicForms compute_holomorphic_forms(const Mesh &mesh,
                                            SolverKind solver = SolverKind::cholmod,
-                                           const Progress &progress = {});
+                                           const Progress &progress = {},
+                                           const Validation *validated = nullptr);
 
 } // namespace meromorph

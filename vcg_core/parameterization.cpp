@@ -92,8 +92,8 @@ std::string invalid_map_advice(const Mesh &input, const Mesh &mesh,
 } // namespace
 
 Parameterization parameterize(const Mesh &input, const ParameterizeOptions &options,
-                              const Progress &progress) {
-  // The mesh is validated once, by compute_holomorphic_forms below.
+                              const Progress &progress, const Validation *validated) {
+  // The mesh is validated once: by the caller, or by compute_holomorphic_forms below.
   if (!(options.layer_gap >= 0 && options.layer_gap <= 1e6))
     throw ArgumentError("the layer gap must be a number from 0 to 1e6");
   // Everything is computed at unit scale (unit_scale.h); positions reported are the input's.
@@ -111,7 +111,7 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
   };
 
   const HolomorphicForms forms =
-      compute_holomorphic_forms(mesh, options.solver, progress.range(0.0, 0.6));
+      compute_holomorphic_forms(mesh, options.solver, progress.range(0.0, 0.6), validated);
   for (const auto &timing : forms.timings_ms)
     out.timings_ms.push_back(timing);
   clock = std::chrono::steady_clock::now();

@@ -106,7 +106,10 @@ struct Parameterization {
   double component_spacing = 0;
 };
 
+struct Validation;
+
+// `validated`: the mesh's validation when the caller has made it (and it found nothing).
 Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &options = {},
-                              const Progress &progress = {});
+                              const Progress &progress = {}, const Validation *validated = nullptr);
 
 } // namespace meromorph

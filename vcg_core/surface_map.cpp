@@ -53,7 +53,7 @@ Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptio
                                "; or let meromorph close them for the computation only (--close-"
                                "holes; MeshLab and Blender: Close Holes)"
                          : left->message);
-  if (validation.ok()) return parameterize(input, options, progress);
+  if (validation.ok()) return parameterize(input, options, progress, &validation);
 
   const SurfaceParts split = split_into_closed_parts(input, options.close_holes);
   const size_t part_count = split.parts.size();
