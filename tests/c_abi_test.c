@@ -187,6 +187,12 @@ int main(void) {
   CHECK(meromorph_genus(result) == 1 && meromorph_degree(result) == 2);
   CHECK(meromorph_map_valid(result) == 1);
   CHECK(strstr(meromorph_report_json(result), "holes_closed") != NULL);
+  {
+    static int32_t components[V];
+    CHECK(meromorph_vertex_components(result, components) == MEROMORPH_OK);
+    CHECK(components[0] == 0 && components[V - 1] == 0);
+    CHECK(meromorph_vertex_components(result, NULL) == MEROMORPH_ERROR_ARGUMENT);
+  }
   meromorph_result_free(result);
   result = NULL;
   options.close_holes = 2;

@@ -260,6 +260,17 @@ meromorph_status meromorph_layers(const meromorph_result *r, int32_t *layer) {
   return MEROMORPH_OK;
 }
 
+meromorph_status meromorph_vertex_components(const meromorph_result *r, int32_t *component) {
+  MEROMORPH_CHECK(r, component);
+  const std::vector<int> &part = r->map.vertex_component;
+  for (size_t v = 0; v < r->map.sphere.size(); ++v)
+    component[v] = part.empty() ? 0 : part[v];
+  return MEROMORPH_OK;
+}
+double meromorph_component_spacing(const meromorph_result *r) {
+  return r ? r->map.component_spacing : 0.0;
+}
+
 size_t meromorph_branch_point_count(const meromorph_result *r) {
   return r ? r->map.branch_points.size() : 0;
 }

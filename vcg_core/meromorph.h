@@ -107,7 +107,8 @@ MEROMORPH_API const char *meromorph_advice(const meromorph_result *result);
 
 /* Copies into the caller's buffer, which must hold: sphere and layered positions 3 doubles per
    vertex, vertex uvs 2 doubles per vertex, corner uvs 6 doubles per triangle (u, v for each of
-   its three corners), layers 1 int32 per vertex. MEROMORPH_ERROR_ARGUMENT if a pointer is NULL. */
+   its three corners), layers and components 1 int32 per vertex. MEROMORPH_ERROR_ARGUMENT if a
+   pointer is NULL. */
 MEROMORPH_API meromorph_status meromorph_sphere_positions(const meromorph_result *result,
                                                           double *xyz);
 MEROMORPH_API meromorph_status meromorph_layered_positions(const meromorph_result *result,
@@ -115,6 +116,11 @@ MEROMORPH_API meromorph_status meromorph_layered_positions(const meromorph_resul
 MEROMORPH_API meromorph_status meromorph_vertex_uvs(const meromorph_result *result, double *uv);
 MEROMORPH_API meromorph_status meromorph_corner_uvs(const meromorph_result *result, double *uv);
 MEROMORPH_API meromorph_status meromorph_layers(const meromorph_result *result, int32_t *layer);
+/* The part (connected component, 0-based) of each vertex; part k's layered sphere is centred at
+   x = k * meromorph_component_spacing. Since ABI version 2. */
+MEROMORPH_API meromorph_status meromorph_vertex_components(const meromorph_result *result,
+                                                           int32_t *component);
+MEROMORPH_API double meromorph_component_spacing(const meromorph_result *result);
 
 MEROMORPH_API size_t meromorph_branch_point_count(const meromorph_result *result);
 /* vertices and local_degrees: meromorph_branch_point_count entries each; local_degrees may be

@@ -72,6 +72,7 @@ def load():
         for name in ("genus", "degree", "riemann_hurwitz_ok", "map_valid"):
             getattr(lib, "meromorph_" + name).argtypes = [ctypes.c_void_p]
         for name in ("sphere_positions", "layered_positions", "vertex_uvs", "corner_uvs", "layers",
+                     "vertex_components",
                      "report_json", "result_free", "get_distortion"):
             getattr(lib, "meromorph_" + name).argtypes = [ctypes.c_void_p] + (
                 [] if name in ("report_json", "result_free") else [ctypes.c_void_p])
@@ -110,12 +111,14 @@ def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
         out = {
             "sphere": np.empty(3 * n), "layered": np.empty(3 * n), "vertex_uv": np.empty(2 * n),
             "corner_uv": np.empty(6 * t), "layer": np.empty(n, dtype=np.int32),
+            "component": np.empty(n, dtype=np.int32),
         }
         lib.meromorph_sphere_positions(result, out["sphere"].ctypes.data)
         lib.meromorph_layered_positions(result, out["layered"].ctypes.data)
         lib.meromorph_vertex_uvs(result, out["vertex_uv"].ctypes.data)
         lib.meromorph_corner_uvs(result, out["corner_uv"].ctypes.data)
         lib.meromorph_layers(result, out["layer"].ctypes.data)
+        lib.meromorph_vertex_components(result, out["component"].ctypes.data)
         count = lib.meromorph_branch_point_count(result)
         out["branch_vertices"] = np.empty(count, dtype=np.int32)
         out["branch_degrees"] = np.empty(count, dtype=np.int32)

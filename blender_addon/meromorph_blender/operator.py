@@ -146,6 +146,8 @@ class MESH_OT_conformal_sphere_map(bpy.types.Operator):
                                 [tuple(p.vertices) for p in mesh.polygons])
         attribute = sphere_mesh.attributes.new("layer", "INT", "POINT")
         attribute.data.foreach_set("value", result["layer"])
+        component = sphere_mesh.attributes.new("component", "INT", "POINT")
+        component.data.foreach_set("value", result["component"])
         sphere_mesh.update()
         sphere = bpy.data.objects.new(name, sphere_mesh)
         context.collection.objects.link(sphere)

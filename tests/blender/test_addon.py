@@ -208,6 +208,11 @@ co = co.reshape(-1, 3)
 half = len(co) // 2
 centres = sorted(round(float(c), 3) for c in (co[:half].mean(axis=0)[0], co[half:].mean(axis=0)[0]))
 check(abs(centres[1] - centres[0] - 2.5) < 0.1, "the parts' spheres side by side: %s" % centres)
+components = np.empty(len(joined_sphere.vertices), dtype=np.int32)
+joined_sphere.attributes["component"].data.foreach_get("value", components)
+check(sorted(set(components.tolist())) == [0, 1], "component attribute 0 and 1")
+check(len(set(components[:half].tolist())) == 1 and len(set(components[half:].tolist())) == 1,
+      "one component per cube")
 for part in (co[:half], co[half:]):
     centre = np.array([round(part[:, 0].mean() / 2.5) * 2.5, 0, 0])
     check(np.allclose(np.linalg.norm(part - centre, axis=1), 1.0, atol=1e-5), "each part on its sphere")
