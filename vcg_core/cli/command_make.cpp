@@ -130,7 +130,7 @@ Command add_make_command(CLI::App &app) {
   blob->add_flag("--hole", options->hole,
                  "a hole through the ball: genus 1, a figure with long limbs");
 
-  return [options, sphere, torus, genus, blob]() {
+  return [options, sphere, torus, blob]() {
     Mesh mesh;
     if (sphere->parsed()) {
       make_icosphere(mesh, options->subdivisions, options->radius);
