@@ -99,8 +99,9 @@ TEST(Outputs, AllOrNothing) {
 
 TEST(Outputs, AnInvalidMapWritesNothing) {
   TempDir dir;
-  const test::RunResult made = run_cli({"make", "genus", "-g", "3", "--resolution", "30",
-                                        "--raw-marching-cubes", "-o", dir.path("g3.ply")});
+  // Limbs 16 times longer than thick: their images shrink below what doubles resolve.
+  const test::RunResult made = run_cli(
+      {"make", "blob", "--hole", "--tentacles", "4", "--length", "4", "-o", dir.path("g3.ply")});
   ASSERT_EQ(made.exit_code, 0) << made.err;
   const test::RunResult refused =
       run_cli({"param", dir.path("g3.ply"), "-o", dir.path("out.ply"), "--report",

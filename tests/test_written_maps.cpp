@@ -51,13 +51,15 @@ void expect_reported_branching(const nlohmann::json &report, const test::Written
       << name;
 }
 
-void expect_valid_written_map(const test::TempDir &dir, const std::string &input, int genus,
-                              double max_angle_error_degrees = INFINITY) {
+// Returns the written map's mean angle error in degrees (infinity if there is no map).
+double expect_valid_written_map(const test::TempDir &dir, const std::string &input, int genus,
+                                double max_angle_error_degrees = INFINITY) {
   const std::string name = input.substr(input.rfind('/') + 1);
   const test::RunResult r =
       run_cli({"param", input, "-o", dir.path(name + ".uv.ply"), "--sphere",
                dir.path(name + ".sphere.ply"), "--report", dir.path(name + ".json"), "--quiet"});
-  ASSERT_EQ(r.exit_code, 0) << name << ": " << r.err;
+  EXPECT_EQ(r.exit_code, 0) << name << ": " << r.err;
+  if (r.exit_code != 0) return INFINITY;
   std::ifstream report_stream(dir.path(name + ".json"));
   const nlohmann::json report = nlohmann::json::parse(report_stream);
   const int euler = 2 - 2 * genus;
@@ -71,18 +73,26 @@ void expect_valid_written_map(const test::TempDir &dir, const std::string &input
   EXPECT_EQ(report["degree"], map.degree) << name;
   EXPECT_EQ(report["genus"], genus) << name;
   expect_reported_branching(report, map, name);
+  int wrong_branch_property = 0, first_wrong = -1;
   for (int v = 0; v < map.vertices; ++v)
-    ASSERT_EQ(map.branch_property[size_t(v)],
-              map.local_degree[size_t(v)] >= 2 ? map.local_degree[size_t(v)] : 0)
-        << name << ": vertex " << v;
-  ASSERT_EQ(int(map.layer_coverage.size()), degree) << name;
-  for (double coverage : map.layer_coverage)
-    EXPECT_NEAR(coverage, 1.0, 0.025) << name;
+    if (map.branch_property[size_t(v)] !=
+        (map.local_degree[size_t(v)] >= 2 ? map.local_degree[size_t(v)] : 0)) {
+      ++wrong_branch_property;
+      if (first_wrong < 0) first_wrong = v;
+    }
+  EXPECT_EQ(wrong_branch_property, 0) << name << ": first at vertex " << first_wrong;
+  EXPECT_EQ(int(map.layer_coverage.size()), degree) << name;
+  // Each layer covers the sphere once, up to the faces along the cuts (where the images are
+  // large, one face is a few percent of the sphere).
+  for (size_t k = 0; k < map.layer_coverage.size(); ++k)
+    EXPECT_NEAR(map.layer_coverage[k], 1.0, 0.02 + map.layer_cut_area[k])
+        << name << ": layer " << k << ", along its cuts " << map.layer_cut_area[k];
   const double angle_error = test::written_angle_error_degrees(map, dir.path(name + ".uv.ply"));
   EXPECT_LT(angle_error, max_angle_error_degrees) << name;
   EXPECT_NEAR(angle_error,
               report["distortion"]["overall"]["angle_error_mean_degrees"].get<double>(), 1e-3)
       << name;
+  return angle_error;
 }
 
 TEST(WrittenMaps, SharedMeshes) {
@@ -153,6 +163,34 @@ TEST(WrittenMaps, GeneratedSurfaces) {
     const test::RunResult r = run_cli(arguments);
     ASSERT_EQ(r.exit_code, 0) << r.err;
     expect_valid_written_map(dir, dir.path(name + ".ply"), made.genus);
+  }
+}
+
+TEST(WrittenMaps, PoorTriangulationsMapAsConformallyAsRemeshedOnes) {
+  // The same surface three ways: isotropically remeshed, raw marching cubes (needles down to
+  // 0.1 degrees, caps near 180) and remeshed with needles injected. Each written map is a valid
+  // branched cover, and the poor ones distort angles about as little as the clean one.
+  test::TempDir dir;
+  for (int genus : {3, 4, 5}) {
+    const std::string stem = dir.path("genus" + std::to_string(genus));
+    const std::vector<std::string> make = {"make",         "genus", "-g", std::to_string(genus),
+                                           "--resolution", "30"};
+    auto made = [&](const std::string &suffix, std::vector<std::string> extra) {
+      std::vector<std::string> arguments = make;
+      arguments.insert(arguments.end(), extra.begin(), extra.end());
+      arguments.insert(arguments.end(), {"-o", stem + suffix + ".ply"});
+      const test::RunResult r = run_cli(arguments);
+      EXPECT_EQ(r.exit_code, 0) << r.err;
+      return stem + suffix + ".ply";
+    };
+    const double clean = expect_valid_written_map(dir, made("", {}), genus);
+    const double raw = expect_valid_written_map(dir, made("raw", {"--raw-marching-cubes"}), genus);
+    const double needles =
+        expect_valid_written_map(dir, made("needles", {"--needles", "0.3"}), genus);
+    EXPECT_LT(raw, 1.15 * clean) << "genus " << genus << ": raw marching cubes " << raw
+                                 << " degrees, remeshed " << clean;
+    EXPECT_LT(needles, 1.15 * clean)
+        << "genus " << genus << ": needles " << needles << " degrees, remeshed " << clean;
   }
 }
 

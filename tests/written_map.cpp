@@ -126,7 +126,7 @@ WrittenMap read_written_map(const std::string &path, int euler, double component
   // Folds, degree and layer coverage from the faces' images.
   std::vector<double> winding(size_t(out.vertices), 0.0);
   double total = 0;
-  std::map<int, double> by_layer;
+  std::map<int, double> by_layer, mixed_by_layer;
   for (int f = 0; f < out.faces; ++f) {
     const auto &t = out.triangles[size_t(f)];
     const Vec &a = out.sphere[size_t(t[0])], &b = out.sphere[size_t(t[1])],
@@ -137,6 +137,11 @@ WrittenMap read_written_map(const std::string &path, int euler, double component
     out.component_area_over_4pi[out.component[size_t(t[0])]] += angle / (4 * M_PI);
     for (int k = 0; k < 3; ++k)
       by_layer[out.layer[size_t(t[size_t(k)])]] += angle / 3;
+    const int l0 = out.layer[size_t(t[0])], l1 = out.layer[size_t(t[1])],
+              l2 = out.layer[size_t(t[2])];
+    if (l0 != l1 || l1 != l2)
+      for (int l : {l0, l1, l2})
+        mixed_by_layer[l] += std::abs(angle) / 3; // thirds: a face counts once per corner
     // Winding: each face (v, a, b) adds the angle from a's image to b's around v's image.
     for (int k = 0; k < 3; ++k) {
       const Vec &p = out.sphere[size_t(t[size_t(k)])];
@@ -164,8 +169,10 @@ WrittenMap read_written_map(const std::string &path, int euler, double component
   out.degree = int(std::lround(out.area_over_4pi));
   out.riemann_hurwitz =
       euler == 2 * out.degree - out.ramification && std::abs(out.area_over_4pi - out.degree) < 0.01;
-  for (const auto &[layer, area] : by_layer)
+  for (const auto &[layer, area] : by_layer) {
     out.layer_coverage.push_back(area / (4 * M_PI));
+    out.layer_cut_area.push_back(3 * mixed_by_layer[layer] / (4 * M_PI));
+  }
   return out;
 }
 

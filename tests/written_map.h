@@ -9,7 +9,8 @@
 //      the local degree of every vertex (winding of its one-ring's image in the tangent-plane
 //      stereographic chart at its image), the degree (total signed solid angle / 4 pi), whether
 //      Riemann-Hurwitz holds, the `branch` property as written, and each layer's signed area over
-//      4 pi (each face counted a third for the layer of each of its corners).
+//      4 pi (each face counted a third for the layer of each of its corners) with the area of the
+//      faces along the cuts beside it.
 #pragma once
 
 #include <array>
@@ -32,6 +33,9 @@ struct WrittenMap {
   int degree = 0;
   bool riemann_hurwitz = false;
   std::vector<double> layer_coverage; // per layer: signed area / 4 pi
+  // Per layer: the image area / 4 pi of the faces whose corners lie on several layers (along the
+  // cuts), which the layer may cover in part: how far its coverage may be from 1 for that reason.
+  std::vector<double> layer_cut_area;
   // Several parts and closed holes: the `source_vertex` and `component` properties, vertices on
   // a hole of the written surface (their winding is not measured: local degree 1), and per
   // component the signed area / 4 pi and the ramification.

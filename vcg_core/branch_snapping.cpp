@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "branch_points.h"
+#include "face_vectors.h"
 #include "map_quality.h"
 #include "mesh_edges.h"
 #include "sphere_geometry.h"
@@ -85,6 +86,76 @@ std::vector<std::vector<int>> trouble_spots(const FaceIncidence &in,
     spots.push_back(spot);
   }
   return spots;
+}
+
+// The one-ring of `vertex` in cyclic order (counter-clockwise seen from outside) with the corner
+// angle of each face at `vertex` between neighbour k and neighbour k + 1. Empty if the star is
+// not a simple cycle.
+struct Star {
+  std::vector<int> ring;
+  std::vector<double> corners;
+};
+
+Star star_of(const Mesh &mesh, const FaceIncidence &in, int vertex) {
+  std::map<int, std::pair<int, int>> next; // neighbour -> (next neighbour, face)
+  for (int f : in.faces_of_vertex[vertex]) {
+    const auto &c = in.corners[f];
+    const int k = c[0] == vertex ? 0 : c[1] == vertex ? 1 : 2;
+    next[c[(k + 1) % 3]] = {c[(k + 2) % 3], f};
+  }
+  Star star;
+  if (next.empty()) return star;
+  int w = next.begin()->first;
+  for (size_t step = 0; step < next.size(); ++step) {
+    const auto it = next.find(w);
+    if (it == next.end()) return {};
+    const int f = it->second.second;
+    const auto &c = in.corners[f];
+    const int k = c[0] == vertex ? 0 : c[1] == vertex ? 1 : 2;
+    star.ring.push_back(w);
+    star.corners.push_back(corner_angle(mesh.face[f], k));
+    w = it->second.first;
+  }
+  if (w != star.ring.front()) return {};
+  return star;
+}
+
+// Chart values of a branch vertex's one-ring (the vertex at `centre_value`) placed so that the
+// star winds twice with every image corner below 170 degrees: each neighbour keeps its distance
+// from the centre, its direction follows the doubled corner angles (capped, the excess shared
+// among the other corners), starting from the first neighbour's direction. False if the star has
+// fewer than five corners (two turns need them).
+bool double_star(const Star &star, Complex centre_value, std::vector<Complex> &ring_values) {
+  const size_t n = star.ring.size();
+  if (n < 5) return false;
+  constexpr double cap = 170.0 * M_PI / 180.0;
+  double total = 0;
+  for (double a : star.corners)
+    total += a;
+  std::vector<double> turn(n);
+  for (size_t k = 0; k < n; ++k)
+    turn[k] = star.corners[k] * 4.0 * M_PI / total;
+  for (int round = 0; round < 8; ++round) {
+    double excess = 0, free = 0;
+    for (size_t k = 0; k < n; ++k) {
+      if (turn[k] > cap) {
+        excess += turn[k] - cap;
+        turn[k] = cap;
+      } else if (turn[k] < cap) {
+        free += turn[k];
+      }
+    }
+    if (excess <= 0 || free <= 0) break;
+    for (size_t k = 0; k < n; ++k)
+      if (turn[k] < cap) turn[k] += excess * turn[k] / free;
+  }
+  double direction = std::arg(ring_values[0] - centre_value);
+  for (size_t k = 0; k < n; ++k) {
+    const double radius = std::abs(ring_values[k] - centre_value);
+    ring_values[k] = centre_value + std::polar(radius, direction);
+    direction += turn[k];
+  }
+  return true;
 }
 
 } // namespace
@@ -184,7 +255,9 @@ int snap_branch_points(const Mesh &mesh, const MeshEdges &edges,
 
     // Near a critical point p the map is Q(z) = c + k (z - p)^2 = A + B z + C z^2: fit A, B, C by
     // least squares in a chart of the sphere centred at the spot's image, and read off
-    // p = -B / 2C and the critical value c = A - B^2 / 4C.
+    // p = -B / 2C and the critical value c = Q(p). A spot that holds two critical points close
+    // together gets a cubic instead, whose derivative's two roots are both tried (the next pass
+    // takes the other one).
     std::vector<int> fitted;
     for (const auto &[v, ring] : region)
       if (ring <= fit_rings) fitted.push_back(v);
@@ -192,55 +265,92 @@ int snap_branch_points(const Mesh &mesh, const MeshEdges &edges,
     for (int v : fitted)
       centre += sphere[v];
     centre.normalize();
-    Eigen::MatrixXcd design(long(fitted.size()), 3);
+    const int terms = critical_points >= 2 ? 4 : 3;
+    Eigen::MatrixXcd design(long(fitted.size()), terms);
     Eigen::VectorXcd image(long(fitted.size()));
     for (size_t i = 0; i < fitted.size(); ++i) {
-      const Complex zi = z[fitted[i]];
-      design.row(long(i)) << 1.0, zi, zi * zi;
+      Complex power = 1.0;
+      for (int k = 0; k < terms; ++k, power *= z[fitted[i]])
+        design(long(i), k) = power;
       image[long(i)] = chart_at(centre, sphere[fitted[i]]);
     }
     const Eigen::VectorXcd abc = design.colPivHouseholderQr().solve(image);
-    if (std::abs(abc[2]) == 0 || !abc.allFinite()) continue;
-    const Complex p = -abc[1] / (2.0 * abc[2]);
-    const Complex c = abc[0] - abc[1] * abc[1] / (4.0 * abc[2]);
-    auto model = [&](Complex x) { return abc[0] + x * (abc[1] + x * abc[2]); };
+    if (!abc.allFinite()) continue;
+    auto model = [&](Complex x) {
+      Complex value = 0;
+      for (int k = terms - 1; k >= 0; --k)
+        value = value * x + abc[k];
+      return value;
+    };
+    std::vector<Complex> targets;
+    if (terms == 4 && std::abs(abc[3]) > 0) {
+      const Complex root = std::sqrt(abc[2] * abc[2] - 3.0 * abc[1] * abc[3]);
+      targets = {(-abc[2] + root) / (3.0 * abc[3]), (-abc[2] - root) / (3.0 * abc[3])};
+    } else if (std::abs(abc[2]) > 0) {
+      targets = {-abc[1] / (2.0 * abc[2])};
+    }
 
     // Candidates: the 6 vertices nearest p, then, if none of them winds twice without folding a
     // face (a corner of 90 degrees or more at a branch vertex turns its face over), the next 6.
     // Each is tried with the map composed with the shift z -> z + t (p - z_v), t = 1 - ring / R at
     // the vertices R - 1 rings or less from v (R = 1: v alone takes c); the fold-free one that
     // distorts angles least wins (farther candidates distort more, so they come second).
-    std::vector<std::pair<double, int>> by_distance;
-    for (int v : fitted)
-      by_distance.push_back({std::abs(z[v] - p), v});
-    std::sort(by_distance.begin(), by_distance.end());
     Score best = score_region(-1);
     std::vector<std::pair<int, Eigen::Vector3d>> best_change;
-    for (const size_t first : {size_t(0), size_t(6)}) {
-      if (first > 0 && std::get<0>(best) == 0 && std::get<2>(best) == 0) break;
-      for (int shift_rings = 1; shift_rings <= max_shift_rings; ++shift_rings)
-        for (size_t i = first; i < std::min<size_t>(first + 6, by_distance.size()); ++i) {
-          const int v = by_distance[i].second;
-          const Complex shift = p - z[v];
-          std::vector<std::pair<int, Eigen::Vector3d>> change, original;
-          for (const auto &[w, ring] : ring_distances(in, {v}, shift_rings - 1)) {
-            const double t = 1.0 - double(ring) / shift_rings;
-            const Complex value =
-                w == v ? c : chart_at(centre, sphere[w]) + model(z[w] + t * shift) - model(z[w]);
-            change.push_back({w, from_chart(centre, value)});
+    for (const Complex p : targets) {
+      const Complex c = model(p);
+      std::vector<std::pair<double, int>> by_distance;
+      for (int v : fitted)
+        by_distance.push_back({std::abs(z[v] - p), v});
+      std::sort(by_distance.begin(), by_distance.end());
+      for (const size_t first : {size_t(0), size_t(6)}) {
+        if (first > 0 && std::get<0>(best) == 0 && std::get<2>(best) == 0) break;
+        for (int shift_rings = 1; shift_rings <= max_shift_rings; ++shift_rings)
+          for (size_t i = first; i < std::min<size_t>(first + 6, by_distance.size()); ++i) {
+            const int v = by_distance[i].second;
+            const Complex shift = p - z[v];
+            std::vector<std::pair<int, Eigen::Vector3d>> change, original;
+            for (const auto &[w, ring] : ring_distances(in, {v}, shift_rings - 1)) {
+              const double t = 1.0 - double(ring) / shift_rings;
+              const Complex value =
+                  w == v ? c : chart_at(centre, sphere[w]) + model(z[w] + t * shift) - model(z[w]);
+              change.push_back({w, from_chart(centre, value)});
+            }
+            for (const auto &[w, point] : change) {
+              original.push_back({w, sphere[w]});
+              sphere[w] = point;
+            }
+            const Score score = score_region(v);
+            if (score < best) {
+              best = score;
+              best_change = change;
+            }
+            // The same with the one-ring re-placed around the critical value, for stars whose
+            // corners would reach 180 degrees or more when doubled.
+            const Star star = star_of(mesh, in, v);
+            std::vector<Complex> ring_values;
+            for (int w : star.ring)
+              ring_values.push_back(chart_at(centre, sphere[w]));
+            if (!star.ring.empty() && double_star(star, c, ring_values)) {
+              std::vector<std::pair<int, Eigen::Vector3d>> replaced = change;
+              for (size_t k = 0; k < star.ring.size(); ++k) {
+                const int w = star.ring[k];
+                if (!std::any_of(original.begin(), original.end(),
+                                 [&](const auto &o) { return o.first == w; }))
+                  original.push_back({w, sphere[w]});
+                sphere[w] = from_chart(centre, ring_values[k]);
+                replaced.push_back({w, sphere[w]});
+              }
+              const Score doubled = score_region(v);
+              if (doubled < best) {
+                best = doubled;
+                best_change = replaced;
+              }
+            }
+            for (const auto &[w, point] : original)
+              sphere[w] = point;
           }
-          for (const auto &[w, point] : change) {
-            original.push_back({w, sphere[w]});
-            sphere[w] = point;
-          }
-          const Score score = score_region(v);
-          for (const auto &[w, point] : original)
-            sphere[w] = point;
-          if (score < best) {
-            best = score;
-            best_change = change;
-          }
-        }
+      }
     }
     if (best_change.empty()) continue;
     for (const auto &[w, point] : best_change) {

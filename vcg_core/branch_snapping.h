@@ -9,8 +9,12 @@
 //      larger form, the map is fitted by Q(z) = c + k (z - p)^2, and the map is composed with a
 //      small local shift of the surface that takes a vertex v near p onto p: within one ring of v
 //      the values become Q(z + p - z_v) (v gets the critical value c), fading to the measured
-//      values over the next rings. Of the vertices nearest p, the one that leaves the fewest
-//      folded or flat faces wins, if that improves on leaving the spot alone. A spot whose windings
+//      values over the next rings. Where doubling v's corners would reach 180 degrees (obtuse
+//      stars), a variant also re-places v's one-ring around c: each neighbour keeps its distance,
+//      its direction follows the doubled corners capped at 170 degrees. Of the vertices nearest p
+//      and these variants, the one that leaves the fewest folded or flat faces wins, if that
+//      improves on leaving the spot alone. A spot holding two critical points is fitted by a cubic
+//      and one of its critical points is placed per pass. A spot whose windings
 //      and folded faces add up to no critical point (sum of e - 1 plus folded faces <= 0) has a
 //      stray vertex value instead (next to needle-shaped faces): its values are smoothed towards
 //      their neighbours', if that leaves fewer folded faces. Returns how many spots were

@@ -1,6 +1,10 @@
 #include "form_ratio_map.h"
 
-#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
 
 #include "face_vectors.h"
 #include "holomorphic_forms.h"
@@ -10,6 +14,8 @@
 namespace meromorph {
 namespace {
 
+using ComplexMatrix = Eigen::SparseMatrix<Complex>;
+
 std::vector<Complex> holomorphic_coefficient(const Mesh &mesh, const MeshEdges &edges,
                                              const FaceGeometry &geometry,
                                              const Eigen::VectorXcd &form) {
@@ -18,55 +24,132 @@ std::vector<Complex> holomorphic_coefficient(const Mesh &mesh, const MeshEdges &
   return local_coefficients(mesh, geometry, real_part, imaginary_part).f;
 }
 
+// In one chart of the sphere: values F at the vertices of `region` that fit the face samples
+// `ratio` (F at the centroid = mean of the corners, weighted by the face's share of the area and
+// 1 / (1 + |ratio|^2)^2, the sphere's metric) while keeping the piecewise-linear map conformal:
+// plus `stiffness` times the conformal energy (Dirichlet energy minus signed image area, zero for
+// a similarity on each face). A faint pull towards `guess` keeps every vertex determined.
+std::vector<Complex> solve_chart(const Mesh &mesh, const FaceIncidence &in,
+                                 const FaceGeometry &geometry, const std::vector<char> &region,
+                                 const std::vector<Complex> &ratio,
+                                 const std::vector<char> &ratio_known,
+                                 const std::vector<Complex> &guess) {
+  const int n = int(region.size());
+  double mean_area = 0;
+  for (double a : geometry.areas)
+    mean_area += a;
+  mean_area /= double(std::max<size_t>(1, geometry.areas.size()));
+  const double stiffness = 1.0; // conformal energy against the data's area-weighted misfit
+  std::vector<Eigen::Triplet<Complex>> entries;
+  Eigen::VectorXcd right = Eigen::VectorXcd::Zero(n);
+  double largest = 0;
+  for (size_t f = 0; f < in.corners.size(); ++f) {
+    const auto &c = in.corners[f];
+    if (!region[c[0]] || !region[c[1]] || !region[c[2]]) continue;
+    // The sphere's metric over the face (1 at F = 0): both terms measure the map on the sphere.
+    const double metric = ratio_known[f] ? 1.0 / std::pow(1.0 + std::norm(ratio[f]), 2) : 0.0;
+    if (ratio_known[f]) {
+      const double w = geometry.areas[f] / mean_area * metric / 9.0;
+      largest = std::max(largest, w);
+      for (int a : c) {
+        for (int b : c)
+          entries.emplace_back(a, b, w);
+        right[a] += 3.0 * w * ratio[f];
+      }
+    }
+    const MeshFace &face = mesh.face[f];
+    for (int k = 0; k < 3; ++k) {
+      const int i = c[(k + 1) % 3], j = c[(k + 2) % 3];
+      const Point3 u = face.cP((k + 1) % 3) - face.cP(k), v = face.cP((k + 2) % 3) - face.cP(k);
+      const double cross = (u ^ v).Norm();
+      if (!(cross > 0)) continue;
+      const double weight = stiffness * metric * 0.25 * (u * v) / cross;
+      entries.emplace_back(i, i, weight);
+      entries.emplace_back(j, j, weight);
+      entries.emplace_back(i, j, -weight);
+      entries.emplace_back(j, i, -weight);
+      // minus the signed image area, 1/2 Im(conj(F_a) F_b) along the side a -> b
+      const Complex area = stiffness * metric * Complex(0, -0.25);
+      entries.emplace_back(c[k], c[(k + 1) % 3], -area);
+      entries.emplace_back(c[(k + 1) % 3], c[k], -std::conj(area));
+    }
+  }
+  const double pull = 1e-9 * (largest > 0 ? largest : 1.0);
+  for (int v = 0; v < n; ++v) {
+    entries.emplace_back(v, v, pull);
+    right[v] += pull * guess[v];
+  }
+  ComplexMatrix normal(n, n);
+  normal.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SimplicialLDLT<ComplexMatrix> solver(normal);
+  std::vector<Complex> values(guess);
+  if (solver.info() != Eigen::Success) return values;
+  const Eigen::VectorXcd solution = solver.solve(right);
+  for (int v = 0; v < n; ++v)
+    if (region[v] && std::isfinite(solution[v].real()) && std::isfinite(solution[v].imag()))
+      values[v] = solution[v];
+  return values;
+}
+
 } // namespace
 
 std::vector<PlaneValue> form_ratio_map(const Mesh &mesh, const MeshEdges &edges,
                                        const Eigen::VectorXcd &numerator,
                                        const Eigen::VectorXcd &denominator) {
+  const int n = int(mesh.vert.size());
+  const size_t face_count = mesh.face.size();
   const FaceGeometry geometry = face_geometry(mesh);
+  const FaceIncidence in = face_incidence(mesh);
   const std::vector<Complex> top = holomorphic_coefficient(mesh, edges, geometry, numerator);
   const std::vector<Complex> bottom = holomorphic_coefficient(mesh, edges, geometry, denominator);
-  std::vector<Eigen::Vector3d> face_points(mesh.face.size());
-  for (size_t f = 0; f < mesh.face.size(); ++f) {
+  // First guess per vertex: the area-weighted mean of its faces' samples on the sphere.
+  std::vector<Eigen::Vector3d> mean(static_cast<size_t>(n), Eigen::Vector3d::Zero());
+  for (size_t f = 0; f < face_count; ++f) {
     const bool pole = std::abs(bottom[f]) == 0.0;
-    face_points[f] = to_sphere(PlaneValue{pole ? Complex() : top[f] / bottom[f], pole});
+    const Eigen::Vector3d sample =
+        to_sphere(PlaneValue{pole ? Complex() : top[f] / bottom[f], pole});
+    for (int v : in.corners[f])
+      mean[v] += geometry.areas[f] * sample;
   }
-  // The face values are samples at the face centroids; where a vertex's faces differ in size,
-  // their mean is the value at a point off the vertex. Fit F = a + b z over the centroids, z in
-  // the vertex's tangent plane, F in a chart of the sphere at the faces' mean, and take
-  // a = F(vertex). On needle-shaped or one-sided stars the fit extrapolates: a must stay within
-  // half the spread of the face values, or the mean is kept.
-  const FaceIncidence in = face_incidence(mesh);
-  std::vector<PlaneValue> values;
-  values.reserve(mesh.vert.size());
-  for (size_t v = 0; v < mesh.vert.size(); ++v) {
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero(), normal = Eigen::Vector3d::Zero();
-    for (int f : in.faces_of_vertex[v]) {
-      mean += geometry.areas[f] * face_points[f];
-      normal += geometry.areas[f] * geometry.normals[f];
+  std::vector<char> near_zero(static_cast<size_t>(n)), near_pole(static_cast<size_t>(n));
+  std::vector<double> size(static_cast<size_t>(n));
+  std::vector<Complex> guess_f(static_cast<size_t>(n)), guess_g(static_cast<size_t>(n));
+  for (int v = 0; v < n; ++v) {
+    const PlaneValue guess = to_plane_value(mean[v].normalized());
+    size[v] = guess.infinite ? HUGE_VAL : std::abs(guess.w);
+    near_zero[v] = size[v] < 8.0;
+    near_pole[v] = size[v] > 0.125;
+    if (near_zero[v]) guess_f[v] = guess.w;
+    if (near_pole[v] && size[v] > 0 && !guess.infinite) guess_g[v] = 1.0 / guess.w;
+  }
+  std::vector<Complex> ratio_f(face_count), ratio_g(face_count);
+  std::vector<char> known_f(face_count), known_g(face_count);
+  for (size_t f = 0; f < face_count; ++f) {
+    ratio_f[f] = top[f] / bottom[f];
+    ratio_g[f] = bottom[f] / top[f];
+    known_f[f] = std::isfinite(ratio_f[f].real()) && std::isfinite(ratio_f[f].imag());
+    known_g[f] = std::isfinite(ratio_g[f].real()) && std::isfinite(ratio_g[f].imag());
+  }
+  // F where |F| < 2, G = 1 / F where |F| > 1/2; blended on the sphere in between.
+  const std::vector<Complex> f =
+      solve_chart(mesh, in, geometry, near_zero, ratio_f, known_f, guess_f);
+  const std::vector<Complex> g =
+      solve_chart(mesh, in, geometry, near_pole, ratio_g, known_g, guess_g);
+  std::vector<PlaneValue> values(static_cast<size_t>(n));
+  for (int v = 0; v < n; ++v) {
+    if (!near_pole[v]) {
+      values[v] = PlaneValue{f[v], false};
+      continue;
     }
-    const Eigen::Vector3d centre = mean.normalized();
-    normal.normalize();
-    const Eigen::Vector3d seed =
-        std::abs(normal.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
-    const Eigen::Vector3d e1 = normal.cross(seed).normalized(), e2 = normal.cross(e1);
-    const Point3 &origin = mesh.vert[v].cP();
-    Eigen::Matrix2cd normal_matrix = Eigen::Matrix2cd::Zero();
-    Eigen::Vector2cd right = Eigen::Vector2cd::Zero();
-    double spread = 0;
-    for (int f : in.faces_of_vertex[v]) {
-      const MeshFace &face = mesh.face[f];
-      const Point3 c = (face.cP(0) + face.cP(1) + face.cP(2)) / 3.0 - origin;
-      const Eigen::Vector3d offset(c[0], c[1], c[2]);
-      const Eigen::Vector2cd row(1.0, Complex(offset.dot(e1), offset.dot(e2)));
-      const Complex w = chart_at(centre, face_points[f]);
-      normal_matrix += geometry.areas[f] * row.conjugate() * row.transpose();
-      right += geometry.areas[f] * row.conjugate() * w;
-      spread = std::max(spread, std::abs(w));
+    const Eigen::Vector3d pole_side =
+        std::abs(g[v]) == 0.0 ? Eigen::Vector3d(0, 0, 1) : to_sphere(1.0 / g[v]);
+    if (!near_zero[v]) {
+      values[v] = to_plane_value(pole_side);
+      continue;
     }
-    const Eigen::Vector2cd fit = normal_matrix.fullPivLu().solve(right);
-    const bool trusted = fit.allFinite() && std::abs(fit[0]) <= 0.5 * spread;
-    values.push_back(to_plane_value(trusted ? from_chart(centre, fit[0]) : centre));
+    const double s = std::clamp(0.5 + std::log2(size[v]) / 2.0, 0.0, 1.0);
+    const double t = s * s * (3 - 2 * s);
+    values[v] = to_plane_value(((1 - t) * to_sphere(f[v]) + t * pole_side).normalized());
   }
   return values;
 }

@@ -1,12 +1,17 @@
 // Genus >= 2: the ratio of two holomorphic 1-forms, a meromorphic function of degree 2g - 2.
 //
 // In:  a mesh, its edges, and the numerator and denominator forms (complex values per edge).
-// Out: per face, F = f_numerator / f_denominator from the local coefficients f of f dz + g dzbar
-//      (the ratio does not depend on the frame), a sample at the face's centroid; per vertex, the
-//      value at the vertex itself: F = a + b z fitted to its faces' samples (z: centroid offsets
-//      in the tangent plane, F in a chart of the sphere at their area-weighted mean), a value of
-//      the extended plane. Where the fit would extrapolate (more than half the samples' spread
-//      from their mean) the mean itself is taken.
+// Out: the value of F = numerator / denominator at every vertex, a value of the extended plane.
+//      Per face, the ratio of the forms' holomorphic coefficients (f of f dz + g dzbar, which
+//      drops the discrete forms' anti-holomorphic error) is a sample of F at the centroid. The
+//      vertex values are solved for globally, in two charts (F where |F| < 2, 1 / F where
+//      |F| > 1/2, blended on the sphere in between): the samples are fitted by least squares,
+//      weighted by face area in the sphere's metric, together with the conformal energy of the
+//      piecewise-linear map (Dirichlet energy minus signed image area: zero where a face's image
+//      is similar to the face). A per-vertex fit would differentiate the forms' face-to-face
+//      noise, which on needle-ridden triangulations (raw marching cubes, scans) exceeds what a
+//      piecewise-linear map tolerates; the energy keeps the values of neighbouring vertices
+//      consistent, so such meshes map as conformally as remeshed ones.
 #pragma once
 
 #include <vector>

@@ -236,6 +236,7 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
       std::vector<PlaneValue> values;
       MobiusCentering centring;
       int snapped;
+      int crowded = 0; // faces whose image spans more than a chord of 1 (a quarter of the sphere)
     };
     std::optional<Attempt> best;
     for (size_t attempt = 0; attempt < pairs.size(); ++attempt) {
@@ -261,13 +262,26 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
       const Branching measured = analyse_branching(mesh, sphere, out.euler);
       result.generic = measured.riemann_hurwitz_ok && measured.degree == 2 * out.genus - 2;
       result.deficit = std::abs(out.euler - (2 * measured.degree - measured.ramification));
-      if (!best || std::make_pair(!result.generic, result.deficit) <
-                       std::make_pair(!best->generic, best->deficit)) {
+      for (const MeshFace &face : mesh.face) {
+        const Eigen::Vector3d &a = sphere[index_of(mesh, face.cV(0))],
+                              &b = sphere[index_of(mesh, face.cV(1))],
+                              &c = sphere[index_of(mesh, face.cV(2))];
+        result.crowded += std::max({(a - b).norm(), (b - c).norm(), (c - a).norm()}) > 1.0;
+      }
+      auto rank = [](const Attempt &a) {
+        return std::make_tuple(!a.generic, a.deficit, a.crowded);
+      };
+      if (!best || rank(result) < rank(*best)) {
         best = std::move(result);
         out.form_coefficients = pairs[attempt];
       }
       out.pair_attempts = int(attempt) + 1;
-      if (best->generic) break;
+      // Where a zero and a pole of the ratio fall within a face or two, a face's image spans a
+      // good part of the sphere (and its texture with it); another generic pair puts them
+      // elsewhere. For genus 2 every generic pair gives the same map up to a Moebius
+      // transformation: no other pair helps there. Three pairs at most for that: on surfaces
+      // whose handles crowd everywhere, every pair does.
+      if (best->generic && (best->crowded == 0 || out.genus == 2 || attempt >= 2)) break;
     }
     values = std::move(best->values);
     out.mobius = best->centring;

@@ -69,10 +69,10 @@ CutTree minimum_spanning_tree(const std::vector<Vector> &values) {
   return tree;
 }
 
-// A star: every branch value joined to the direction farthest from all of them.
-CutTree star_tree(const std::vector<Vector> &values) {
-  Vector star(0, 0, 1);
-  double best = -2;
+// A star: every branch value joined to one of the `rank`-th direction farthest from all of them
+// (rank 0: the farthest).
+CutTree star_tree(const std::vector<Vector> &values, int rank) {
+  std::vector<std::pair<double, Vector>> directions;
   for (int i = -2; i <= 2; ++i)
     for (int j = -2; j <= 2; ++j)
       for (int k = -2; k <= 2; ++k) {
@@ -81,11 +81,11 @@ CutTree star_tree(const std::vector<Vector> &values) {
         double nearest = 2;
         for (const Vector &b : values)
           nearest = std::min(nearest, 1 - candidate.dot(b));
-        if (nearest > best) {
-          best = nearest;
-          star = candidate;
-        }
+        directions.push_back({-nearest, candidate});
       }
+  std::sort(directions.begin(), directions.end(),
+            [](const auto &a, const auto &b) { return a.first < b.first; });
+  const Vector star = directions[size_t(std::min<int>(rank, int(directions.size()) - 1))].second;
   CutTree tree{values, {}};
   tree.nodes.push_back(star);
   for (size_t i = 0; i < values.size(); ++i)
@@ -237,8 +237,8 @@ Sheets label_sheets(const Mesh &mesh, const MeshEdges &edges, const std::vector<
     return out;
   }
   // Cut along the shortest tree; where its layers do not each cover the sphere once (a sheet that
-  // comes out in two pieces, seen with nearly equal branch values), along a star as well, and keep
-  // the better.
+  // comes out in two pieces, seen with nearly equal branch values), along stars from the six
+  // directions farthest from every branch value as well, and keep the best.
   std::vector<Vector> values;
   for (int v : branch_vertices)
     values.push_back(sphere[v]);
@@ -250,9 +250,9 @@ Sheets label_sheets(const Mesh &mesh, const MeshEdges &edges, const std::vector<
   };
   Sheets sheets = label_with_cuts(mesh, edges, sphere, branch_vertices, degree, areas,
                                   minimum_spanning_tree(values));
-  if (worst(sheets) > 0.02) {
-    Sheets star =
-        label_with_cuts(mesh, edges, sphere, branch_vertices, degree, areas, star_tree(values));
+  for (int rank = 0; rank < 6 && worst(sheets) > 0.02; ++rank) {
+    Sheets star = label_with_cuts(mesh, edges, sphere, branch_vertices, degree, areas,
+                                  star_tree(values, rank));
     if (worst(star) < worst(sheets)) sheets = std::move(star);
   }
   return sheets;

@@ -10,8 +10,9 @@
 //      continue across an uncut edge, or else any neighbour's. Per face and per vertex a layer
 //      0..d-1, and the signed area of each layer over 4 pi (about 1 when each layer covers the
 //      sphere once). Where the tree's layers do not each cover the sphere within 2% (a sheet in
-//      two pieces, seen with nearly equal branch values), a star from the direction farthest from
-//      all branch values is tried too, and the labelling closer to one cover per layer kept.
+//      two pieces, seen with nearly equal branch values), stars from the six directions
+//      farthest from all branch values are tried too, and the labelling closest to one cover per
+//      layer kept.
 #pragma once
 
 #include <vector>
