@@ -115,7 +115,9 @@ TEST(Outputs, InfoJsonAlwaysPrintsJson) {
   TempDir dir;
   for (const auto &[name, content, code] :
        {std::tuple<const char *, const char *, int>{"cut.off", "OFF\n3 1 0\n0 0 0\n", 3},
-        {"bad.ply", "ply\nformat ascii 1.0\nelement vertex\nend_header\n", 3}}) {
+        {"bad.ply", "ply\nformat ascii 1.0\nelement vertex\nend_header\n", 3},
+        // A token that is not UTF-8, quoted in the message: replaced, still JSON.
+        {"latin.off", "OFF\n3 1 0\n0 0 \xe9\xfa\n1 0 0\n0 1 0\n3 0 1 2\n", 3}}) {
     const test::RunResult r = run_cli({"info", dir.write(name, content), "--json"});
     EXPECT_EQ(r.exit_code, code);
     const nlohmann::json report = nlohmann::json::parse(r.out);

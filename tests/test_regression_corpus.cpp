@@ -1,10 +1,12 @@
 // Every input that ever crashed meromorph (tests/fuzz_corpus/regressions/) through the real CLI:
 // `info` and `param` exit with the code listed here (0 mapped, 3 refused with a message that
-// names the file), never 1 (internal failure) or a signal. A new regression file needs its line.
+// names the file), never 1 (internal failure) or a signal, and `info --json` prints JSON. A new
+// regression file needs its line.
 #include <filesystem>
 #include <map>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "test_support.h"
 
@@ -16,10 +18,12 @@ const std::map<std::string, int> expected_exit_code = {
     {"binary_face_of_1000_corners.ply", 3}, // one flat polygon: an open surface
     {"count_wraps_32_bits.ply", 3},
     {"crlf_bom.obj", 0},
+    {"eight_with_a_spike_1e8_long.off", 0}, // CHOLMOD was handed an empty system (segfault)
     {"face_of_1000_corners.ply", 3},
     {"hex_float.ply", 3},
     {"missing_count.ply", 3},
     {"negative_list_count.ply", 3},
+    {"not_utf8_token.off", 3}, // info --json: exit 1, the message was not UTF-8
     {"no_final_newline.off", 0},
     {"octahedron_1e-200.off", 0},
     {"octahedron_1e200.off", 0},
@@ -36,8 +40,9 @@ const std::map<std::string, int> expected_exit_code = {
 };
 
 // Files that `info` accepts but that have no valid map: a 12 x 6 grid torus is too coarse for one
-// at any scale.
-const std::map<std::string, int> param_exit_code = {{"torus_1e160.off", 3}};
+// at any scale; a vertex pulled 1e8 away makes a spike that shrinks below double precision.
+const std::map<std::string, int> param_exit_code = {{"torus_1e160.off", 3},
+                                                    {"eight_with_a_spike_1e8_long.off", 3}};
 
 TEST(RegressionCorpus, EveryInputThatEverCrashedGetsItsExitCode) {
   const std::filesystem::path folder =
@@ -56,9 +61,14 @@ TEST(RegressionCorpus, EveryInputThatEverCrashedGetsItsExitCode) {
         param_exit_code.count(name) ? param_exit_code.at(name) : expected->second;
     EXPECT_EQ(param.exit_code, param_expected) << name << ": " << param.err;
     EXPECT_EQ(info.exit_code, expected->second) << name << ": " << info.err;
-    if (param_expected == 3)
+    if (param_expected == 3) {
       EXPECT_NE(param.err.find(name), std::string::npos)
           << name << ": the message names the file: " << param.err;
+    }
+    // `info --json` prints JSON whatever the file holds.
+    const test::RunResult json = test::run_cli({"info", "--json", entry.path().string()});
+    EXPECT_EQ(json.exit_code, expected->second) << name << ": " << json.err;
+    EXPECT_TRUE(nlohmann::json::accept(json.out)) << name << ": " << json.out;
     ++checked;
   }
   EXPECT_EQ(checked, expected_exit_code.size()) << "every listed file is in the corpus";

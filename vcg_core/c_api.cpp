@@ -122,7 +122,7 @@ meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
       out->map = meromorph::parameterize_surface(mesh, parameters, progress);
       nlohmann::json report = parameterization_json(out->map);
       report["version"] = MEROMORPH_VERSION;
-      out->report = report.dump(2);
+      out->report = json_text(report);
       out->invalid_reasons = join_phrases(out->map.invalid);
       out->triangles = triangle_count;
     } catch (...) {

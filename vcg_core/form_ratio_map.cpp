@@ -1,9 +1,10 @@
 #include "form_ratio_map.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
-#include <Eigen/SparseCholesky>
+#include <Eigen/CholmodSupport>
 #include <Eigen/SparseCore>
 
 #include "face_vectors.h"
@@ -13,8 +14,6 @@
 
 namespace meromorph {
 namespace {
-
-using ComplexMatrix = Eigen::SparseMatrix<Complex>;
 
 std::vector<Complex> holomorphic_coefficient(const Mesh &mesh, const MeshEdges &edges,
                                              const FaceGeometry &geometry,
@@ -34,7 +33,11 @@ std::vector<Complex> solve_chart(const Mesh &mesh, const FaceIncidence &in,
                                  const std::vector<Complex> &ratio,
                                  const std::vector<char> &ratio_known,
                                  const std::vector<Complex> &guess) {
-  const int n = int(region.size());
+  // Unknowns: the region's vertices only, numbered densely.
+  std::vector<int> id(region.size(), -1);
+  int n = 0;
+  for (size_t v = 0; v < region.size(); ++v)
+    if (region[v]) id[v] = n++;
   double mean_area = 0;
   for (double a : geometry.areas)
     mean_area += a;
@@ -44,8 +47,9 @@ std::vector<Complex> solve_chart(const Mesh &mesh, const FaceIncidence &in,
   Eigen::VectorXcd right = Eigen::VectorXcd::Zero(n);
   double largest = 0;
   for (size_t f = 0; f < in.corners.size(); ++f) {
-    const auto &c = in.corners[f];
-    if (!region[c[0]] || !region[c[1]] || !region[c[2]]) continue;
+    const auto &corners = in.corners[f];
+    if (!region[corners[0]] || !region[corners[1]] || !region[corners[2]]) continue;
+    const std::array<int, 3> c = {id[corners[0]], id[corners[1]], id[corners[2]]};
     // The sphere's metric over the face (1 at F = 0): both terms measure the map on the sphere.
     const double metric = ratio_known[f] ? 1.0 / std::pow(1.0 + std::norm(ratio[f]), 2) : 0.0;
     if (ratio_known[f]) {
@@ -75,19 +79,45 @@ std::vector<Complex> solve_chart(const Mesh &mesh, const FaceIncidence &in,
     }
   }
   const double pull = 1e-9 * (largest > 0 ? largest : 1.0);
-  for (int v = 0; v < n; ++v) {
-    entries.emplace_back(v, v, pull);
-    right[v] += pull * guess[v];
-  }
-  ComplexMatrix normal(n, n);
-  normal.setFromTriplets(entries.begin(), entries.end());
-  Eigen::SimplicialLDLT<ComplexMatrix> solver(normal);
+  for (size_t v = 0; v < region.size(); ++v)
+    if (id[v] >= 0) {
+      entries.emplace_back(id[v], id[v], pull);
+      right[id[v]] += pull * guess[v];
+    }
+  // The Hermitian system H x = r as the real symmetric one [[Re H, -Im H], [Im H, Re H]]
+  // [Re x; Im x] = [Re r; Im r], factored by CHOLMOD (supernodal).
+  // (CHOLMOD cannot analyse an empty matrix, and Eigen does not check that it could.)
   std::vector<Complex> values(guess);
-  if (solver.info() != Eigen::Success) return values;
-  const Eigen::VectorXcd solution = solver.solve(right);
-  for (int v = 0; v < n; ++v)
-    if (region[v] && std::isfinite(solution[v].real()) && std::isfinite(solution[v].imag()))
-      values[v] = solution[v];
+  if (n == 0) return values;
+  std::vector<Eigen::Triplet<double>> real_entries;
+  real_entries.reserve(entries.size() * 4);
+  for (const Eigen::Triplet<Complex> &t : entries) {
+    const int i = t.row(), j = t.col();
+    const double re = t.value().real(), im = t.value().imag();
+    if (!std::isfinite(re) || !std::isfinite(im)) return values; // forms not resolved here
+    real_entries.emplace_back(i, j, re);
+    real_entries.emplace_back(i + n, j + n, re);
+    if (im != 0) {
+      real_entries.emplace_back(i, j + n, -im);
+      real_entries.emplace_back(i + n, j, im);
+    }
+  }
+  Eigen::SparseMatrix<double> normal(2 * n, 2 * n);
+  normal.setFromTriplets(real_entries.begin(), real_entries.end());
+  Eigen::VectorXd real_right(2 * n);
+  real_right << right.real(), right.imag();
+  if (!real_right.allFinite()) return values;
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> factored(normal);
+  if (factored.info() != Eigen::Success) return values;
+  const Eigen::VectorXd real_solution = factored.solve(real_right);
+  if (factored.info() != Eigen::Success) return values;
+  Eigen::VectorXcd solution(n);
+  for (int i = 0; i < n; ++i)
+    solution[i] = Complex(real_solution[i], real_solution[i + n]);
+  for (size_t v = 0; v < region.size(); ++v)
+    if (id[v] >= 0 && std::isfinite(solution[id[v]].real()) &&
+        std::isfinite(solution[id[v]].imag()))
+      values[v] = solution[id[v]];
   return values;
 }
 

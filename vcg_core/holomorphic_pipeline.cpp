@@ -120,7 +120,7 @@ HolomorphicForms compute_holomorphic_forms(const Mesh &input, SolverKind solver,
   for (int k = 0; k < n; ++k)
     loop_sign[k] = integrate(out.homology.dual_forms[k], out.homology.primal_loops[k]);
 
-  out.wedge = wedge_matrix(vectors, geometry, &out.wedge_rounding);
+  out.wedge = wedge_matrix(out.harmonic, edges, &out.wedge_rounding);
   out.symplectic = symplectic_basis(out.wedge);
   const Eigen::MatrixXd basis = out.symplectic.cast<double>();
   const Eigen::MatrixXd basis_inverse = basis.inverse();

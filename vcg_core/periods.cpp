@@ -6,18 +6,24 @@
 
 namespace meromorph {
 
-Eigen::MatrixXi wedge_matrix(const std::vector<Eigen::MatrixX3d> &closed_vectors,
-                             const FaceGeometry &geometry, double *largest_rounding) {
-  const long n = long(closed_vectors.size());
+Eigen::MatrixXi wedge_matrix(const std::vector<Eigen::VectorXd> &closed_forms,
+                             const MeshEdges &edges, double *largest_rounding) {
+  const long n = long(closed_forms.size());
   Eigen::MatrixXi wedge = Eigen::MatrixXi::Zero(n, n);
   double worst = 0;
   for (long j = 0; j < n; ++j)
     for (long k = j + 1; k < n; ++k) {
       double sum = 0;
-      for (long f = 0; f < closed_vectors[j].rows(); ++f)
-        sum += geometry.areas[f] *
-               geometry.normals[f].dot(Eigen::Vector3d(closed_vectors[j].row(f))
-                                           .cross(Eigen::Vector3d(closed_vectors[k].row(f))));
+      for (size_t f = 0; f < edges.face_edges.size(); ++f) {
+        double a[3], b[3];
+        for (int side = 0; side < 3; ++side) {
+          const int e = edges.face_edges[f][side], sign = edges.face_signs[f][side];
+          a[side] = sign * closed_forms[size_t(j)][e];
+          b[side] = sign * closed_forms[size_t(k)][e];
+        }
+        for (int side = 0; side < 3; ++side)
+          sum += (a[side] * b[(side + 1) % 3] - a[(side + 1) % 3] * b[side]) / 6.0;
+      }
       const double rounded = std::round(sum);
       worst = std::max(worst, std::abs(sum - rounded));
       wedge(j, k) = int(rounded);

@@ -150,4 +150,8 @@ nlohmann::json parameterization_json(const Parameterization &map) {
   return report;
 }
 
+std::string json_text(const nlohmann::json &report) {
+  return report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 } // namespace meromorph

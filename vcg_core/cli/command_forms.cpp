@@ -68,7 +68,7 @@ int run_forms(const FormsOptions &options) {
   if (forms.genus >= 2) report["riemann_matrix"] = complex_matrix_json(forms.riemann_matrix);
 
   if (!options.report.empty()) {
-    write_text_file(report_file, report.dump(2) + "\n");
+    write_text_file(report_file, json_text(report) + "\n");
     outputs.commit();
   }
   if (!options.quiet || options.report.empty()) {
@@ -79,7 +79,7 @@ int run_forms(const FormsOptions &options) {
                 << "i";
     if (forms.genus >= 2) std::cout << ", Riemann matrix (see the report)";
     std::cout << ", non-holomorphicity " << forms.non_holomorphicity_mean << "\n";
-    if (options.report.empty()) std::cout << report.dump(2) << "\n";
+    if (options.report.empty()) std::cout << json_text(report) << "\n";
   }
   return int(ExitCode::done);
 }

@@ -57,7 +57,7 @@ int run_info_catching(const InfoOptions &options) {
         {"error", {{"exit_code", int(error.code())}, {"message", error.what()}}},
         {"ok", false},
         {"version", MEROMORPH_VERSION}};
-    std::cout << report.dump(2) << "\n";
+    std::cout << json_text(report) << "\n";
     throw;
   }
 }
@@ -84,7 +84,7 @@ int run_info(const InfoOptions &options) {
                              {"ok", validation.ok()},
                              {"version", MEROMORPH_VERSION}};
     if (!repairs.empty()) report["findings_before_repair"] = findings_json(before_repair);
-    std::cout << report.dump(2) << "\n";
+    std::cout << json_text(report) << "\n";
   } else {
     print_text(source, topology, validation, repairs);
   }

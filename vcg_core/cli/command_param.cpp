@@ -116,7 +116,7 @@ int run_param(const ParamOptions &options) {
   report["repairs"] = input.repairs;
   report["timings_ms"]["read"] = input.read_ms;
   report["version"] = MEROMORPH_VERSION;
-  if (!options.report.empty()) write_text_file(report_file, report.dump(2) + "\n");
+  if (!options.report.empty()) write_text_file(report_file, json_text(report) + "\n");
   outputs.commit();
 
   const double total_ms =
