@@ -52,9 +52,11 @@ public:
         free_count_(int(laplacian.rows()) - int(pinned.size())) {
     factorization_.compute(restricted(laplacian, numbering_, free_count_));
     if (factorization_.info() != Eigen::Success)
-      throw Error(ExitCode::internal_failure,
-                  "the Laplacian could not be factored (is the mesh connected, without "
-                  "degenerate faces?)");
+      // Validation has accepted the mesh (connected, no degenerate faces): what is left is
+      // geometry whose cotangent weights span more than double precision can factor.
+      throw InputError("the cotangent Laplacian could not be factored: the triangles' sizes or "
+                       "angles span more than double precision resolves (a vertex far from the "
+                       "rest, a spike?)");
   }
   Eigen::VectorXd solve(const Eigen::VectorXd &b) const override {
     Eigen::VectorXd free_b(free_count_);
