@@ -160,7 +160,7 @@ std::vector<PlaneValue> form_ratio_map(const Mesh &mesh, const MeshEdges &edges,
     known_f[f] = std::isfinite(ratio_f[f].real()) && std::isfinite(ratio_f[f].imag());
     known_g[f] = std::isfinite(ratio_g[f].real()) && std::isfinite(ratio_g[f].imag());
   }
-  // F where |F| < 2, G = 1 / F where |F| > 1/2; blended on the sphere in between.
+  // F where |F| < 8, G = 1 / F where |F| > 1/8; blended on the sphere between 1/2 and 2.
   const std::vector<Complex> f =
       solve_chart(mesh, in, geometry, near_zero, ratio_f, known_f, guess_f);
   const std::vector<Complex> g =
