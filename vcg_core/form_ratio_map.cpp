@@ -44,6 +44,7 @@ std::vector<Complex> solve_chart(const Mesh &mesh, const FaceIncidence &in,
   mean_area /= double(std::max<size_t>(1, geometry.areas.size()));
   const double stiffness = 1.0; // conformal energy against the data's area-weighted misfit
   std::vector<Eigen::Triplet<Complex>> entries;
+  entries.reserve(in.corners.size() * 21 + region.size());
   Eigen::VectorXcd right = Eigen::VectorXcd::Zero(n);
   double largest = 0;
   for (size_t f = 0; f < in.corners.size(); ++f) {
@@ -89,19 +90,25 @@ std::vector<Complex> solve_chart(const Mesh &mesh, const FaceIncidence &in,
   // (CHOLMOD cannot analyse an empty matrix, and Eigen does not check that it could.)
   std::vector<Complex> values(guess);
   if (n == 0) return values;
+  for (const Eigen::Triplet<Complex> &t : entries)
+    if (!std::isfinite(t.value().real()) || !std::isfinite(t.value().imag()))
+      return values; // the forms are not resolved here
+  Eigen::SparseMatrix<Complex> hermitian(n, n);
+  hermitian.setFromTriplets(entries.begin(), entries.end());
+  entries = {};
+  // The lower triangle of the real form (CHOLMOD reads only that).
   std::vector<Eigen::Triplet<double>> real_entries;
-  real_entries.reserve(entries.size() * 4);
-  for (const Eigen::Triplet<Complex> &t : entries) {
-    const int i = t.row(), j = t.col();
-    const double re = t.value().real(), im = t.value().imag();
-    if (!std::isfinite(re) || !std::isfinite(im)) return values; // forms not resolved here
-    real_entries.emplace_back(i, j, re);
-    real_entries.emplace_back(i + n, j + n, re);
-    if (im != 0) {
-      real_entries.emplace_back(i, j + n, -im);
-      real_entries.emplace_back(i + n, j, im);
+  real_entries.reserve(size_t(hermitian.nonZeros()) * 2);
+  for (int column = 0; column < n; ++column)
+    for (Eigen::SparseMatrix<Complex>::InnerIterator it(hermitian, column); it; ++it) {
+      const int i = int(it.row()), j = column;
+      const double re = it.value().real(), im = it.value().imag();
+      if (i >= j) {
+        real_entries.emplace_back(i, j, re);
+        real_entries.emplace_back(i + n, j + n, re);
+      }
+      if (im != 0) real_entries.emplace_back(i + n, j, im); // Im H below, -Im H above
     }
-  }
   Eigen::SparseMatrix<double> normal(2 * n, 2 * n);
   normal.setFromTriplets(real_entries.begin(), real_entries.end());
   Eigen::VectorXd real_right(2 * n);
