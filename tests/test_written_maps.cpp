@@ -282,6 +282,25 @@ TEST(WrittenMaps, HolesClosedAndSeveralParts) {
   expect_valid_parts_map(dir, test::data_path("face.off"), {"--close-holes"}, {{0, true}});
   expect_valid_parts_map(dir, several_parts(dir), {"--layer-gap", "0.2"},
                          {{0, false}, {1, false}, {2, false}});
+  // --pack-uv: each part's texture in its own cell of a 2 x 2 grid over the unit square.
+  const std::string parts = several_parts(dir);
+  const test::RunResult packed =
+      run_cli({"param", parts, "-o", dir.path("packed.ply"), "--sphere", dir.path("packed.sph.ply"),
+               "--report", dir.path("packed.json"), "--pack-uv", "--quiet"});
+  ASSERT_EQ(packed.exit_code, 0) << packed.err;
+  const auto texture = test::read_vertex_columns(dir.path("packed.ply"));
+  const auto sphere = test::read_vertex_columns(dir.path("packed.sph.ply"));
+  ASSERT_EQ(texture.at("texture_u").size(), sphere.at("component").size());
+  for (size_t v = 0; v < sphere.at("component").size(); ++v) {
+    const int part = int(sphere.at("component")[v]);
+    const double u = texture.at("texture_u")[v], w = texture.at("texture_v")[v];
+    ASSERT_TRUE(u >= 0.5 * (part % 2) && u <= 0.5 * (part % 2 + 1) && w >= 0.5 * (part / 2) &&
+                w <= 0.5 * (part / 2 + 1))
+        << "vertex " << v << " of part " << part << " at (" << u << ", " << w << ")";
+  }
+  EXPECT_EQ(run_cli({"param", parts, "-o", dir.path("p.ply"), "--pack-uv", "--uv", "stereographic"})
+                .exit_code,
+            2);
   // Without --close-holes a mesh with holes is refused, naming the option.
   const test::RunResult refused =
       run_cli({"param", test::data_path("bunny.off"), "-o", dir.path("b.ply"), "--quiet"});

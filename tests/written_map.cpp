@@ -176,14 +176,15 @@ WrittenMap read_written_map(const std::string &path, int euler, double component
   return out;
 }
 
-double written_angle_error_degrees(const WrittenMap &map, const std::string &surface_ply) {
+// Every per-vertex property of a binary little-endian PLY surface, by name, as doubles.
+std::map<std::string, std::vector<double>> read_vertex_columns(const std::string &surface_ply) {
   std::ifstream stream(surface_ply, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(stream)), {});
   const size_t header_end = bytes.find("end_header\n");
   if (bytes.compare(0, 4, "ply\n") != 0 || header_end == std::string::npos)
     throw std::runtime_error(surface_ply + ": not a PLY file");
   std::istringstream header(bytes.substr(0, header_end));
-  std::vector<std::string> vertex_properties;
+  std::vector<std::pair<std::string, std::string>> vertex_properties; // type, name
   std::string line, element;
   int vertices = 0;
   while (std::getline(header, line)) {
@@ -197,27 +198,34 @@ double written_angle_error_degrees(const WrittenMap &map, const std::string &sur
     } else if (keyword == "property" && element == "vertex") {
       std::string type, name;
       words >> type >> name;
-      vertex_properties.push_back(type + " " + name);
+      vertex_properties.push_back({type, name});
     }
   }
-  if (vertices != map.vertices) throw std::runtime_error(surface_ply + ": other vertex count");
   size_t at = header_end + std::strlen("end_header\n");
-  std::vector<Vec> position(static_cast<size_t>(vertices));
-  for (Vec &p : position)
-    for (const std::string &property : vertex_properties) {
-      if (property == "double x")
-        p[0] = read_value<double>(bytes, at);
-      else if (property == "double y")
-        p[1] = read_value<double>(bytes, at);
-      else if (property == "double z")
-        p[2] = read_value<double>(bytes, at);
-      else if (property.rfind("double ", 0) == 0)
-        read_value<double>(bytes, at);
-      else if (property.rfind("float ", 0) == 0)
-        read_value<float>(bytes, at);
+  std::map<std::string, std::vector<double>> columns;
+  for (int v = 0; v < vertices; ++v)
+    for (const auto &[type, name] : vertex_properties) {
+      if (type == "double")
+        columns[name].push_back(read_value<double>(bytes, at));
+      else if (type == "float")
+        columns[name].push_back(read_value<float>(bytes, at));
+      else if (type == "int")
+        columns[name].push_back(read_value<int32_t>(bytes, at));
+      else if (type == "uchar")
+        columns[name].push_back(read_value<uint8_t>(bytes, at));
       else
-        throw std::runtime_error("unexpected vertex property " + property);
+        throw std::runtime_error("unexpected vertex property " + type + " " + name);
     }
+  return columns;
+}
+
+double written_angle_error_degrees(const WrittenMap &map, const std::string &surface_ply) {
+  const std::map<std::string, std::vector<double>> columns = read_vertex_columns(surface_ply);
+  if (columns.at("x").size() != size_t(map.vertices))
+    throw std::runtime_error(surface_ply + ": other vertex count");
+  std::vector<Vec> position(static_cast<size_t>(map.vertices));
+  for (size_t v = 0; v < position.size(); ++v)
+    position[v] = {columns.at("x")[v], columns.at("y")[v], columns.at("z")[v]};
   auto corner = [](const Vec &at, const Vec &b, const Vec &c) {
     const Vec u = sub(b, at), v = sub(c, at);
     const Vec n = cross(u, v);

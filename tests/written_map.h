@@ -48,6 +48,10 @@ struct WrittenMap {
 // `component_spacing`: the report's; part k's sphere is centred at x = k * spacing.
 WrittenMap read_written_map(const std::string &sphere_ply, int euler, double component_spacing = 0);
 
+// Every per-vertex property of a binary little-endian PLY file (double, float, int, uchar), by
+// name, as doubles: e.g. texture_u and texture_v of the surface `param -o` wrote.
+std::map<std::string, std::vector<double>> read_vertex_columns(const std::string &surface_ply);
+
 // The mean corner-angle error in degrees between the surface as written by `param -o` (binary
 // PLY with double x, y, z) and the chordal triangles of the written sphere.
 double written_angle_error_degrees(const WrittenMap &map, const std::string &surface_ply);

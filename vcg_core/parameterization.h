@@ -41,6 +41,10 @@ struct ParameterizeOptions {
   int puncture_face = -1;               // genus 0: the face at the pole (-1: automatic)
   SolverKind solver = SolverKind::cholmod;
   bool close_holes = false; // parameterize_surface: close holes for the computation only
+  // parameterize_surface, several parts, spherical texture coordinates: part k's texture in cell k
+  // of a grid of n x n cells over the unit square (n = ceil(sqrt(parts)), row by row from the
+  // bottom left) instead of each filling the unit square.
+  bool pack_uv = false;
 };
 
 // A hole closed for the computation (surface_map.h): its part, loop length in edges, a vertex of

@@ -1,6 +1,8 @@
 #include "surface_map.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <map>
 
 #include "errors.h"
@@ -53,6 +55,9 @@ Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptio
                                "; or let meromorph close them for the computation only (--close-"
                                "holes; MeshLab and Blender: Close Holes)"
                          : left->message);
+  if (options.pack_uv && options.uv != UvKind::spherical)
+    throw ArgumentError("--pack-uv packs spherical texture coordinates (each part's in the unit "
+                        "square); stereographic ones are unbounded");
   if (validation.ok()) return parameterize(input, options, progress, &validation);
 
   const SurfaceParts split = split_into_closed_parts(input, options.close_holes);
@@ -175,6 +180,21 @@ Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptio
     out.sheets.coverage = only.sheets.coverage;
   } else {
     out.method = "each part on its own (components)";
+    if (options.pack_uv) {
+      const int cells = int(std::ceil(std::sqrt(double(part_count) - 0.5)));
+      auto into_cell = [&](int part, std::array<double, 2> &uv) {
+        uv[0] = (double(part % cells) + uv[0]) / cells;
+        uv[1] = (double(part / cells) + uv[1]) / cells;
+      };
+      for (size_t v = 0; v < vertex_count; ++v)
+        into_cell(split.part_of_vertex[v], out.uv.vertex[v]);
+      for (size_t f = 0; f < face_count; ++f)
+        for (auto &uv : out.uv.wedge[f])
+          into_cell(split.part_of_face[f], uv);
+      out.notes.push_back("texture coordinates packed: part k in cell k of a " +
+                          std::to_string(cells) + " x " + std::to_string(cells) +
+                          " grid over the unit square, row by row from the bottom left");
+    }
     // The parts' layered spheres side by side along x.
     out.component_spacing = 2.5 * (1 + options.layer_gap * highest_layer);
     out.vertex_component = split.part_of_vertex;

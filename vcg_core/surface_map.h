@@ -7,11 +7,12 @@
 // Out: one `Parameterization` in the input's numbering: a closed, connected mesh gets exactly
 //      `parameterize`'s result; otherwise every input vertex and face gets its part's sphere
 //      position, texture coordinates and layer (each part's texture fills the unit square on its
-//      own; with several parts the layered spheres stand side by side along x), the branch points
-//      of all parts, distortion measured on the input's faces only, the degree, genus, Euler
-//      characteristic and ramification summed over the parts, valid only when every part is, and
-//      `components` (each part's figures) and `holes_closed`. Outputs hold the input's vertices and
-//      faces only: a closed hole shows as a gap on the sphere.
+//      own, or its own cell of it with `options.pack_uv`; with several parts the layered spheres
+//      stand side by side along x), the branch points of all parts, distortion measured on the
+//      input's faces only, the degree, genus, Euler characteristic and ramification summed over the
+//      parts, valid only when every part is, and `components` (each part's figures) and
+//      `holes_closed`. Outputs hold the input's vertices and faces only: a closed hole shows as a
+//      gap on the sphere.
 #pragma once
 
 #include "mesh.h"

@@ -26,7 +26,8 @@ struct ParamOptions {
   std::string input, output, sphere, report;
   std::string uv = "spherical";
   std::string solver = "cholmod";
-  bool no_mobius = false, repair = false, keep_invalid = false, close_holes = false, quiet = false;
+  bool no_mobius = false, repair = false, keep_invalid = false, close_holes = false,
+       pack_uv = false, quiet = false;
   int origin = -1;
   std::vector<int> forms{-1, -1};
   double layer_gap = 0.0;
@@ -53,6 +54,7 @@ int run_param(const ParamOptions &options) {
   settings.puncture_face = options.puncture_face;
   settings.solver = solver_from_name(options.solver);
   settings.close_holes = options.close_holes;
+  settings.pack_uv = options.pack_uv;
 
   const auto start = std::chrono::steady_clock::now();
   Mesh mesh;
@@ -186,6 +188,9 @@ Command add_param_command(CLI::App &app) {
   param->add_flag("--close-holes", options->close_holes,
                   "close every hole for the computation only (the outputs keep the input's faces; "
                   "the holes show as gaps on the sphere)");
+  param->add_flag("--pack-uv", options->pack_uv,
+                  "several parts: each part's texture in its own cell of the unit square (a grid, "
+                  "row by row from the bottom left) instead of each filling it");
   param->add_flag("--keep-invalid", options->keep_invalid,
                   "write the map even when it is not a valid branched cover (the exit code is "
                   "still 3)");
