@@ -174,7 +174,8 @@ TEST(Parameterization, GenusZeroWithLongThinPartsFoldsNothing) {
 TEST(Parameterization, GenusOneWithLongLimbsIsMappedOrRefusedWithTheCause) {
   // A ball with a hole and four limbs of radius 0.12: reaching 2 (about 8 times longer than
   // thick) the map is valid; reaching 4 (about 16 times) the limbs' images shrink below what
-  // doubles resolve, and the map is refused, saying so, instead of written broken.
+  // doubles resolve, and the map is refused, saying so, instead of written broken: exit code 3
+  // and nothing written, unless asked to keep it.
   Mesh mesh;
   make_tentacle_blob(mesh, 4, 2.0, 30, true);
   const Parameterization map = parameterize(mesh);
@@ -188,10 +189,24 @@ TEST(Parameterization, GenusOneWithLongLimbsIsMappedOrRefusedWithTheCause) {
   const test::RunResult refused =
       test::run_cli({"param", dir.path("limbs.ply"), "-o", dir.path("limbs.uv.ply"), "--quiet"});
   EXPECT_EQ(refused.exit_code, 3) << refused.err;
+  EXPECT_NE(refused.err.find("no valid map on this triangulation"), std::string::npos)
+      << refused.err;
   EXPECT_NE(refused.err.find("smaller than double precision resolves"), std::string::npos)
       << refused.err;
   EXPECT_NE(refused.err.find("the first at"), std::string::npos) << "where: " << refused.err;
+  EXPECT_NE(refused.err.find("nothing was written"), std::string::npos) << refused.err;
   EXPECT_FALSE(std::filesystem::exists(dir.path("limbs.uv.ply")));
+  // Unless asked to keep it: written, still exit 3, and the report says why.
+  const test::RunResult kept =
+      test::run_cli({"param", dir.path("limbs.ply"), "-o", dir.path("limbs.uv.ply"), "--report",
+                     dir.path("limbs.json"), "--quiet", "--keep-invalid"});
+  EXPECT_EQ(kept.exit_code, 3) << kept.err;
+  ASSERT_TRUE(std::filesystem::exists(dir.path("limbs.json")));
+  std::ifstream kept_report_stream(dir.path("limbs.json"));
+  const nlohmann::json kept_report = nlohmann::json::parse(kept_report_stream);
+  EXPECT_FALSE(kept_report["valid"].get<bool>());
+  EXPECT_FALSE(kept_report["invalid"].empty());
+  EXPECT_TRUE(kept_report.contains("advice"));
 }
 
 TEST(Parameterization, SolidAnglesOfTinyTrianglesKeepTheirSign) {
@@ -334,29 +349,6 @@ TEST(ParamCommand, WritesSurfaceSphereAndReport) {
   const test::RunResult raw_mapped =
       test::run_cli({"param", dir.path("raw3.ply"), "-o", dir.path("raw3.uv.ply"), "--quiet"});
   EXPECT_EQ(raw_mapped.exit_code, 0) << raw_mapped.err;
-
-  // A map that is not a valid branched cover exits with code 3 and writes nothing, unless asked
-  // to keep it: limbs 16 times longer than thick shrink below what doubles resolve.
-  const test::RunResult limbs = test::run_cli(
-      {"make", "blob", "--hole", "--tentacles", "4", "--length", "4", "-o", dir.path("limbs.ply")});
-  ASSERT_EQ(limbs.exit_code, 0) << limbs.err;
-  const test::RunResult refused =
-      test::run_cli({"param", dir.path("limbs.ply"), "-o", dir.path("limbs.uv.ply"), "--quiet"});
-  EXPECT_EQ(refused.exit_code, 3) << refused.err;
-  EXPECT_NE(refused.err.find("no valid map on this triangulation"), std::string::npos)
-      << refused.err;
-  EXPECT_NE(refused.err.find("nothing was written"), std::string::npos) << refused.err;
-  EXPECT_FALSE(std::filesystem::exists(dir.path("limbs.uv.ply")));
-  const test::RunResult kept =
-      test::run_cli({"param", dir.path("limbs.ply"), "-o", dir.path("limbs.uv.ply"), "--report",
-                     dir.path("limbs.json"), "--quiet", "--keep-invalid"});
-  EXPECT_EQ(kept.exit_code, 3) << kept.err;
-  ASSERT_TRUE(std::filesystem::exists(dir.path("limbs.json")));
-  std::ifstream kept_report_stream(dir.path("limbs.json"));
-  const nlohmann::json kept_report = nlohmann::json::parse(kept_report_stream);
-  EXPECT_FALSE(kept_report["valid"].get<bool>());
-  EXPECT_FALSE(kept_report["invalid"].empty());
-  EXPECT_TRUE(kept_report.contains("advice"));
 
   // Never over the input; open surfaces refused with exit code 3.
   EXPECT_EQ(test::run_cli({"param", input, "-o", input}).exit_code, 2);

@@ -7,7 +7,7 @@
 #include <tuple>
 
 #include "branch_points.h"
-#include "face_vectors.h"
+#include "branch_star.h"
 #include "map_quality.h"
 #include "mesh_edges.h"
 #include "sphere_geometry.h"
@@ -88,72 +88,42 @@ std::vector<std::vector<int>> trouble_spots(const FaceIncidence &in,
   return spots;
 }
 
-// The one-ring of `vertex` in cyclic order (counter-clockwise seen from outside) with the corner
-// angle of each face at `vertex` between neighbour k and neighbour k + 1. Empty if the star is
-// not a simple cycle.
-struct Star {
-  std::vector<int> ring;
-  std::vector<double> corners;
-};
-
-Star star_of(const Mesh &mesh, const FaceIncidence &in, int vertex) {
-  std::map<int, std::pair<int, int>> next; // neighbour -> (next neighbour, face)
-  for (int f : in.faces_of_vertex[vertex]) {
-    const auto &c = in.corners[f];
-    const int k = c[0] == vertex ? 0 : c[1] == vertex ? 1 : 2;
-    next[c[(k + 1) % 3]] = {c[(k + 2) % 3], f};
-  }
-  Star star;
-  if (next.empty()) return star;
-  int w = next.begin()->first;
-  for (size_t step = 0; step < next.size(); ++step) {
-    const auto it = next.find(w);
-    if (it == next.end()) return {};
-    const int f = it->second.second;
-    const auto &c = in.corners[f];
-    const int k = c[0] == vertex ? 0 : c[1] == vertex ? 1 : 2;
-    star.ring.push_back(w);
-    star.corners.push_back(corner_angle(mesh.face[f], k));
-    w = it->second.first;
-  }
-  if (w != star.ring.front()) return {};
-  return star;
-}
-
-// Chart values of a branch vertex's one-ring (the vertex at `centre_value`) placed so that the
-// star winds twice with every image corner below 170 degrees: each neighbour keeps its distance
-// from the centre, its direction follows the doubled corner angles (capped, the excess shared
-// among the other corners), starting from the first neighbour's direction. False if the star has
-// fewer than five corners (two turns need them).
-bool double_star(const Star &star, Complex centre_value, std::vector<Complex> &ring_values) {
-  const size_t n = star.ring.size();
+// Chart values of a branch vertex's one-ring (the vertex at `centre_value`, `corners` its corner
+// angles between consecutive neighbours) placed so that the star winds twice with every image
+// corner below 170 degrees: each neighbour keeps its distance from the centre, its direction
+// follows the doubled corners (capped, the excess shared among the others in proportion to their
+// size), starting from the first neighbour's direction. False if the star has fewer than five
+// corners (two turns need them).
+bool double_star(const std::vector<double> &corners, Complex centre_value,
+                 std::vector<Complex> &ring_values) {
+  const size_t n = corners.size();
   if (n < 5) return false;
   constexpr double cap = 170.0 * M_PI / 180.0;
   double total = 0;
-  for (double a : star.corners)
+  for (double a : corners)
     total += a;
-  std::vector<double> turn(n);
+  std::vector<double> turns(n);
   for (size_t k = 0; k < n; ++k)
-    turn[k] = star.corners[k] * 4.0 * M_PI / total;
+    turns[k] = corners[k] * 4.0 * M_PI / total;
   for (int round = 0; round < 8; ++round) {
     double excess = 0, free = 0;
     for (size_t k = 0; k < n; ++k) {
-      if (turn[k] > cap) {
-        excess += turn[k] - cap;
-        turn[k] = cap;
-      } else if (turn[k] < cap) {
-        free += turn[k];
+      if (turns[k] > cap) {
+        excess += turns[k] - cap;
+        turns[k] = cap;
+      } else if (turns[k] < cap) {
+        free += turns[k];
       }
     }
     if (excess <= 0 || free <= 0) break;
     for (size_t k = 0; k < n; ++k)
-      if (turn[k] < cap) turn[k] += excess * turn[k] / free;
+      if (turns[k] < cap) turns[k] += excess * turns[k] / free;
   }
   double direction = std::arg(ring_values[0] - centre_value);
   for (size_t k = 0; k < n; ++k) {
     const double radius = std::abs(ring_values[k] - centre_value);
     ring_values[k] = centre_value + std::polar(radius, direction);
-    direction += turn[k];
+    direction += turns[k];
   }
   return true;
 }
@@ -327,14 +297,23 @@ int snap_branch_points(const Mesh &mesh, const MeshEdges &edges,
             }
             // The same with the one-ring re-placed around the critical value, for stars whose
             // corners would reach 180 degrees or more when doubled.
-            const Star star = star_of(mesh, in, v);
+            // From the neighbour of lowest index: the star's overall turn keeps that one's
+            // direction.
+            std::vector<int> ring = ordered_ring(in, v);
+            std::rotate(ring.begin(), std::min_element(ring.begin(), ring.end()), ring.end());
             std::vector<Complex> ring_values;
-            for (int w : star.ring)
-              ring_values.push_back(chart_at(centre, sphere[w]));
-            if (!star.ring.empty() && double_star(star, c, ring_values)) {
+            std::vector<double> corners;
+            for (size_t k = 0; k < ring.size(); ++k) {
+              ring_values.push_back(chart_at(centre, sphere[ring[k]]));
+              const Point3 &at = mesh.vert[size_t(v)].cP();
+              corners.push_back(
+                  vcg::Angle(mesh.vert[size_t(ring[k])].cP() - at,
+                             mesh.vert[size_t(ring[(k + 1) % ring.size()])].cP() - at));
+            }
+            if (double_star(corners, c, ring_values)) {
               std::vector<std::pair<int, Eigen::Vector3d>> replaced = change;
-              for (size_t k = 0; k < star.ring.size(); ++k) {
-                const int w = star.ring[k];
+              for (size_t k = 0; k < ring.size(); ++k) {
+                const int w = ring[k];
                 if (!std::any_of(original.begin(), original.end(),
                                  [&](const auto &o) { return o.first == w; }))
                   original.push_back({w, sphere[w]});

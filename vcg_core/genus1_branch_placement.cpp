@@ -6,6 +6,7 @@
 #include <queue>
 
 #include "branch_points.h"
+#include "branch_star.h"
 
 namespace meromorph {
 namespace {
@@ -86,26 +87,6 @@ Shifted shift_onto(const FaceIncidence &in, const Genus1Map &map, int c, Complex
     if (!std::binary_search(faces.begin(), faces.end(), f)) out.fading_faces.push_back(f);
   out.faces = std::move(faces);
   return out;
-}
-
-// The one-ring of `c` in counter-clockwise order (faces (c, ring[j], ring[j + 1])); empty if the
-// ring is not a simple cycle.
-std::vector<int> ordered_ring(const FaceIncidence &in, int c) {
-  std::vector<std::pair<int, int>> next; // (a, b) for each face (c, a, b)
-  for (int f : in.faces_of_vertex[size_t(c)]) {
-    const auto &corners = in.corners[size_t(f)];
-    const int k = int(std::find(corners.begin(), corners.end(), c) - corners.begin());
-    next.push_back({corners[size_t((k + 1) % 3)], corners[size_t((k + 2) % 3)]});
-  }
-  std::vector<int> ring{next.front().first};
-  while (ring.size() <= next.size()) {
-    auto step = std::find_if(next.begin(), next.end(),
-                             [&](const std::pair<int, int> &n) { return n.first == ring.back(); });
-    if (step == next.end()) return {};
-    if (step->second == ring.front()) break;
-    ring.push_back(step->second);
-  }
-  return ring.size() == next.size() ? ring : std::vector<int>{};
 }
 
 // A branch vertex doubles its corners (in the flat coordinate): a corner of 90 degrees or more

@@ -69,9 +69,8 @@ CutTree minimum_spanning_tree(const std::vector<Vector> &values) {
   return tree;
 }
 
-// A star: every branch value joined to one of the `rank`-th direction farthest from all of them
-// (rank 0: the farthest).
-CutTree star_tree(const std::vector<Vector> &values, int rank) {
+// Directions of a grid over the sphere, farthest from every branch value first.
+std::vector<Vector> directions_away_from(const std::vector<Vector> &values) {
   std::vector<std::pair<double, Vector>> directions;
   for (int i = -2; i <= 2; ++i)
     for (int j = -2; j <= 2; ++j)
@@ -85,7 +84,14 @@ CutTree star_tree(const std::vector<Vector> &values, int rank) {
       }
   std::sort(directions.begin(), directions.end(),
             [](const auto &a, const auto &b) { return a.first < b.first; });
-  const Vector star = directions[size_t(std::min<int>(rank, int(directions.size()) - 1))].second;
+  std::vector<Vector> sorted;
+  for (const auto &[distance, direction] : directions)
+    sorted.push_back(direction);
+  return sorted;
+}
+
+// A star: every branch value joined to `star`.
+CutTree star_tree(const std::vector<Vector> &values, const Vector &star) {
   CutTree tree{values, {}};
   tree.nodes.push_back(star);
   for (size_t i = 0; i < values.size(); ++i)
@@ -250,9 +256,10 @@ Sheets label_sheets(const Mesh &mesh, const MeshEdges &edges, const std::vector<
   };
   Sheets sheets = label_with_cuts(mesh, edges, sphere, branch_vertices, degree, areas,
                                   minimum_spanning_tree(values));
-  for (int rank = 0; rank < 6 && worst(sheets) > 0.02; ++rank) {
+  const std::vector<Vector> directions = directions_away_from(values);
+  for (size_t rank = 0; rank < 6 && worst(sheets) > 0.02; ++rank) {
     Sheets star = label_with_cuts(mesh, edges, sphere, branch_vertices, degree, areas,
-                                  star_tree(values, rank));
+                                  star_tree(values, directions[rank]));
     if (worst(star) < worst(sheets)) sheets = std::move(star);
   }
   return sheets;
