@@ -22,7 +22,8 @@ template <class T> T take(const uint8_t *&data, size_t &size) {
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
-  const size_t vertex_count = take<uint8_t>(data, size) % 64;
+  const uint8_t first = take<uint8_t>(data, size);
+  const size_t vertex_count = first % 64;
   const size_t triangle_count = take<uint8_t>(data, size) % 128;
   meromorph_options options;
   meromorph_default_options(&options);
@@ -33,6 +34,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   if (flags & 8) options.layer_gap = take<double>(data, size);
   if (flags & 16) options.form_pair[0] = take<int8_t>(data, size);
   if (flags & 32) options.mobius = take<int8_t>(data, size);
+  options.close_holes = (first >> 6) & 1;
+  options.split_nonmanifold = (first >> 7) & 1;
   // Positions: small integers (a lattice, so meshes are often valid) or raw doubles.
   std::vector<double> positions(3 * vertex_count);
   for (double &p : positions)
@@ -52,6 +55,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     meromorph_vertex_uvs(result, buffer.data());
     meromorph_corner_uvs(result, buffer.data());
     meromorph_layers(result, ints.data());
+    const size_t sphere_vertices = meromorph_sphere_vertex_count(result);
+    std::vector<double> layered(3 * sphere_vertices);
+    std::vector<int32_t> sphere_ints(sphere_vertices), sphere_triangles(3 * triangle_count);
+    if (meromorph_sphere_mesh(result, layered.data(), sphere_triangles.data(), sphere_ints.data(),
+                              sphere_ints.data(), sphere_ints.data(),
+                              sphere_ints.data()) != MEROMORPH_OK)
+      __builtin_trap();
+    for (int32_t t : sphere_triangles)
+      if (t < 0 || size_t(t) >= sphere_vertices) __builtin_trap(); // the sphere mesh is whole
     if (meromorph_branch_point_count(result) <= vertex_count)
       meromorph_branch_points(result, ints.data(), degrees.data());
     meromorph_distortion distortion;

@@ -199,7 +199,58 @@ int main(void) {
   CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
         MEROMORPH_ERROR_ARGUMENT);
   CHECK(strstr(meromorph_last_error(), "close_holes") != NULL);
-  /* A caller compiled against ABI version 1 (no close_holes) is still served. */
+  /* Two tori touching at one vertex (a non-manifold vertex): refused by default, naming the
+     option; with split_nonmanifold each is mapped on its own and the layered sphere gets a copy
+     of the shared vertex. */
+  {
+    const size_t n = 2 * V - 1;
+    const int32_t shared = (MAJOR / 2) * MINOR; /* (-3, 0, 0) on the first torus */
+    double *p = malloc(sizeof(double) * 3 * n);
+    int32_t *t = malloc(sizeof(int32_t) * 6 * F),
+            *sphere_triangles = malloc(sizeof(int32_t) * 6 * F);
+    int32_t *source = malloc(sizeof(int32_t) * (n + 1));
+    size_t k, copies = 0;
+    fill_torus(MAJOR, MINOR, p, t);
+    fill_torus(MAJOR, MINOR, p + 3 * (V - 1), t + 3 * F);
+    for (k = 0; k < (size_t)V; ++k) /* the second torus: its vertex 0 at (-3, 0, 0) */
+      p[3 * (V - 1 + k)] -= 6.0;
+    for (k = 3 * F; k < 6 * (size_t)F; ++k) /* its vertex k is the array's V - 1 + k; 0: shared */
+      t[k] = t[k] == 0 ? shared : t[k] + V - 1;
+    meromorph_default_options(&options);
+    CHECK(meromorph_parameterize_d(p, n, t, 2 * F, &options, &result) == MEROMORPH_ERROR_INPUT);
+    CHECK(strstr(meromorph_last_error(), "non-manifold") != NULL);
+    CHECK(strstr(meromorph_last_error(), "split") != NULL);
+    options.split_nonmanifold = 1;
+    CHECK(meromorph_parameterize_d(p, n, t, 2 * F, &options, &result) == MEROMORPH_OK);
+    CHECK(meromorph_vertex_count(result) == n && meromorph_sphere_vertex_count(result) == n + 1);
+    CHECK(meromorph_genus(result) == 2 && meromorph_degree(result) == 4);
+    CHECK(meromorph_map_valid(result) == 1);
+    CHECK(meromorph_sphere_mesh(result, NULL, sphere_triangles, source, NULL, NULL, NULL) ==
+          MEROMORPH_OK);
+    CHECK(source[n] == shared);
+    for (k = 0; k < 6 * (size_t)F; ++k) {
+      CHECK(source[sphere_triangles[k]] == t[k]);
+      copies += sphere_triangles[k] == (int32_t)n;
+    }
+    CHECK(copies == 6); /* the copy has the one fan of six triangles of one torus */
+    CHECK(strstr(meromorph_report_json(result), "nonmanifold_split") != NULL);
+    meromorph_result_free(result);
+    result = NULL;
+    options.split_nonmanifold = 3;
+    CHECK(meromorph_parameterize_d(p, n, t, 2 * F, &options, &result) == MEROMORPH_ERROR_ARGUMENT);
+    CHECK(strstr(meromorph_last_error(), "split_nonmanifold") != NULL);
+    free(p);
+    free(t);
+    free(sphere_triangles);
+    free(source);
+  }
+  /* Callers compiled against ABI version 1 (no close_holes) or 2 (no split_nonmanifold) are
+     still served. */
+  meromorph_default_options(&options);
+  options.struct_size = offsetof(meromorph_options, split_nonmanifold);
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_OK);
+  meromorph_result_free(result);
+  result = NULL;
   meromorph_default_options(&options);
   options.struct_size = offsetof(meromorph_options, close_holes);
   CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_OK);

@@ -1,6 +1,7 @@
 // The C ABI (meromorph.h) over the core: arrays in, the parameterization out, errors as codes.
 #include "meromorph.h"
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -17,7 +18,8 @@ struct meromorph_result {
   meromorph::Parameterization map;
   std::string report;
   std::string invalid_reasons;
-  size_t triangles = 0;
+  size_t vertices = 0, triangles = 0;
+  std::vector<std::array<int, 3>> input_triangles; // the sphere's when nothing was split
 };
 
 namespace {
@@ -39,6 +41,11 @@ std::string check_options(const meromorph_options &options, size_t vertex_count,
     return "options.mobius is " + std::to_string(options.mobius) + "; use 0 or 1";
   if (options.close_holes != 0 && options.close_holes != 1)
     return "options.close_holes is " + std::to_string(options.close_holes) + "; use 0 or 1";
+  if (options.split_nonmanifold != 0 && options.split_nonmanifold != 1)
+    return "options.split_nonmanifold is " + std::to_string(options.split_nonmanifold) +
+           "; use 0 or 1";
+  if (options.pack_uv != 0 && options.pack_uv != 1)
+    return "options.pack_uv is " + std::to_string(options.pack_uv) + "; use 0 or 1";
   if (options.origin_vertex < -1 || (long long)options.origin_vertex >= (long long)vertex_count)
     return "options.origin_vertex is " + std::to_string(options.origin_vertex) +
            "; use -1 (automatic) or a vertex from 0 to " + std::to_string(vertex_count - 1);
@@ -75,9 +82,11 @@ meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
   meromorph_options settings;
   meromorph_default_options(&settings);
   if (options) {
-    // Version 1 ended before close_holes.
-    const size_t version_1_size = offsetof(meromorph_options, close_holes);
-    if (options->struct_size != sizeof(meromorph_options) && options->struct_size != version_1_size)
+    // Version 1 ended before close_holes, version 2 before split_nonmanifold.
+    const size_t version_1_size = offsetof(meromorph_options, close_holes),
+                 version_2_size = offsetof(meromorph_options, split_nonmanifold);
+    if (options->struct_size != sizeof(meromorph_options) &&
+        options->struct_size != version_1_size && options->struct_size != version_2_size)
       return fail(MEROMORPH_ERROR_ARGUMENT,
                   "options.struct_size is " + std::to_string(options->struct_size) +
                       ", which matches no version of meromorph_options (this library's is " +
@@ -109,6 +118,8 @@ meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
     parameters.layer_gap = settings.layer_gap;
     parameters.puncture_face = settings.pole_face;
     parameters.close_holes = settings.close_holes != 0;
+    parameters.split_nonmanifold = settings.split_nonmanifold != 0;
+    parameters.pack_uv = settings.pack_uv != 0;
     Progress progress;
     if (settings.progress) {
       const meromorph_progress_fn callback = settings.progress;
@@ -124,6 +135,8 @@ meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
       report["version"] = MEROMORPH_VERSION;
       out->report = json_text(report);
       out->invalid_reasons = join_phrases(out->map.invalid);
+      out->vertices = vertex_count;
+      if (out->map.sphere_faces.empty()) out->input_triangles = std::move(arrays.triangles);
       out->triangles = triangle_count;
     } catch (...) {
       delete out;
@@ -192,7 +205,7 @@ void meromorph_result_free(meromorph_result *result) {
 }
 
 size_t meromorph_vertex_count(const meromorph_result *r) {
-  return r ? r->map.sphere.size() : 0;
+  return r ? r->vertices : 0;
 }
 size_t meromorph_triangle_count(const meromorph_result *r) {
   return r ? r->triangles : 0;
@@ -222,7 +235,7 @@ const char *meromorph_advice(const meromorph_result *r) {
 
 meromorph_status meromorph_sphere_positions(const meromorph_result *r, double *xyz) {
   MEROMORPH_CHECK(r, xyz);
-  for (size_t v = 0; v < r->map.sphere.size(); ++v)
+  for (size_t v = 0; v < r->vertices; ++v)
     for (int k = 0; k < 3; ++k)
       xyz[3 * v + k] = r->map.sphere[v][k];
   return MEROMORPH_OK;
@@ -230,7 +243,7 @@ meromorph_status meromorph_sphere_positions(const meromorph_result *r, double *x
 
 meromorph_status meromorph_layered_positions(const meromorph_result *r, double *xyz) {
   MEROMORPH_CHECK(r, xyz);
-  for (size_t v = 0; v < r->map.layered.size(); ++v)
+  for (size_t v = 0; v < r->vertices; ++v)
     for (int k = 0; k < 3; ++k)
       xyz[3 * v + k] = r->map.layered[v][k];
   return MEROMORPH_OK;
@@ -238,7 +251,7 @@ meromorph_status meromorph_layered_positions(const meromorph_result *r, double *
 
 meromorph_status meromorph_vertex_uvs(const meromorph_result *r, double *uv) {
   MEROMORPH_CHECK(r, uv);
-  for (size_t v = 0; v < r->map.uv.vertex.size(); ++v)
+  for (size_t v = 0; v < r->vertices; ++v)
     for (int k = 0; k < 2; ++k)
       uv[2 * v + k] = r->map.uv.vertex[v][k];
   return MEROMORPH_OK;
@@ -255,7 +268,7 @@ meromorph_status meromorph_corner_uvs(const meromorph_result *r, double *uv) {
 
 meromorph_status meromorph_layers(const meromorph_result *r, int32_t *layer) {
   MEROMORPH_CHECK(r, layer);
-  for (size_t v = 0; v < r->map.sheets.vertex_layer.size(); ++v)
+  for (size_t v = 0; v < r->vertices; ++v)
     layer[v] = r->map.sheets.vertex_layer[v];
   return MEROMORPH_OK;
 }
@@ -263,12 +276,42 @@ meromorph_status meromorph_layers(const meromorph_result *r, int32_t *layer) {
 meromorph_status meromorph_vertex_components(const meromorph_result *r, int32_t *component) {
   MEROMORPH_CHECK(r, component);
   const std::vector<int> &part = r->map.vertex_component;
-  for (size_t v = 0; v < r->map.sphere.size(); ++v)
+  for (size_t v = 0; v < r->vertices; ++v)
     component[v] = part.empty() ? 0 : part[v];
   return MEROMORPH_OK;
 }
 double meromorph_component_spacing(const meromorph_result *r) {
   return r ? r->map.component_spacing : 0.0;
+}
+
+size_t meromorph_sphere_vertex_count(const meromorph_result *r) {
+  return r ? r->map.layered.size() : 0;
+}
+
+meromorph_status meromorph_sphere_mesh(const meromorph_result *r, double *layered_xyz,
+                                       int32_t *triangles, int32_t *source_vertex, int32_t *layer,
+                                       int32_t *component, int32_t *branch) {
+  if (!r) return fail(MEROMORPH_ERROR_ARGUMENT, "result is NULL");
+  const meromorph::Parameterization &map = r->map;
+  const size_t count = map.layered.size();
+  for (size_t v = 0; v < count; ++v) {
+    if (layered_xyz)
+      for (int k = 0; k < 3; ++k)
+        layered_xyz[3 * v + k] = map.layered[v][k];
+    if (source_vertex)
+      source_vertex[v] =
+          map.sphere_source_vertex.empty() ? int32_t(v) : map.sphere_source_vertex[v];
+    if (layer) layer[v] = map.sheets.vertex_layer[v];
+    if (component) component[v] = map.vertex_component.empty() ? 0 : map.vertex_component[v];
+    if (branch) branch[v] = map.branch_flag[v];
+  }
+  if (triangles) {
+    const auto &faces = map.sphere_faces.empty() ? r->input_triangles : map.sphere_faces;
+    for (size_t t = 0; t < faces.size(); ++t)
+      for (int k = 0; k < 3; ++k)
+        triangles[3 * t + k] = faces[t][k];
+  }
+  return MEROMORPH_OK;
 }
 
 size_t meromorph_branch_point_count(const meromorph_result *r) {

@@ -1,12 +1,13 @@
 /* meromorph C ABI: conformal maps of closed triangle meshes of any genus onto the sphere.
  *
- * In:  a closed, connected, oriented manifold triangle mesh as flat arrays: vertex positions
- *      (x, y, z per vertex, double or float) and triangles (three 0-based int32 vertex indices
- *      each, counter-clockwise seen from outside), and options (call meromorph_default_options
- *      first; struct_size tells the library which version of the struct the caller compiled).
- * Out: an opaque result with per-vertex sphere positions, layered-sphere positions, texture
- *      coordinates (per vertex and per triangle corner), layers, branch points with local
- *      degrees, degree, genus, distortion figures and the JSON report of `meromorph param`.
+ * In:  an oriented triangle mesh as flat arrays: vertex positions (x, y, z per vertex, double or
+ *      float) and triangles (three 0-based int32 vertex indices each, counter-clockwise seen from
+ *      outside), closed and manifold, or with several parts (each mapped on its own), holes
+ *      (options.close_holes) and non-manifold spots (options.split_nonmanifold); and options (call
+ * meromorph_default_options first; struct_size tells the library which version of the struct the
+ * caller compiled). Out: an opaque result with per-vertex sphere positions, layered-sphere
+ * positions, texture coordinates (per vertex and per triangle corner), layers, branch points with
+ * local degrees, degree, genus, distortion figures and the JSON report of `meromorph param`.
  * Errors: meromorph_parameterize_* and the buffer getters return a status; the scalar getters
  *      return a value that marks a NULL result (-1, 0 or ""). meromorph_last_error() says what went
  *      wrong in words (with vertex / face indices).
@@ -28,7 +29,7 @@
 extern "C" {
 #endif
 
-#define MEROMORPH_ABI_VERSION 2
+#define MEROMORPH_ABI_VERSION 3
 
 #if defined(__GNUC__)
 #define MEROMORPH_API __attribute__((visibility("default")))
@@ -61,6 +62,13 @@ typedef struct meromorph_options {
   int close_holes; /* 1: close holes for the computation only (outputs keep the input's faces);
                       0: refuse a mesh with holes (default). Since ABI version 2; a version-1
                       struct_size is still accepted, with 0 here. */
+  int split_nonmanifold; /* 1: take non-manifold vertices and edges apart for the computation (the
+                            layered sphere then has copies of the split vertices: see
+                            meromorph_sphere_mesh); 0: refuse such a mesh (default). Since ABI
+                            version 3; a version 1 or 2 struct_size is accepted, with 0 here. */
+  int pack_uv;           /* several parts, spherical uvs: 1 puts part k's uvs in cell k of a grid
+                            over the unit square; 0: each part fills it (default). Since ABI
+                            version 3. */
 } meromorph_options;
 
 typedef struct meromorph_result meromorph_result;
@@ -105,9 +113,11 @@ MEROMORPH_API const char *meromorph_invalid_reasons(const meromorph_result *resu
    result. */
 MEROMORPH_API const char *meromorph_advice(const meromorph_result *result);
 
-/* Copies into the caller's buffer, which must hold: sphere and layered positions 3 doubles per
-   vertex, vertex uvs 2 doubles per vertex, corner uvs 6 doubles per triangle (u, v for each of
-   its three corners), layers and components 1 int32 per vertex. MEROMORPH_ERROR_ARGUMENT if a
+/* Copies into the caller's buffer, which must hold (per vertex of the input, in its order):
+   sphere and layered positions 3 doubles per vertex, vertex uvs 2 doubles per vertex, corner uvs
+   6 doubles per triangle (u, v for each of its three corners), layers and components 1 int32 per
+   vertex. A vertex that split_nonmanifold split gets the values of the fan of its first
+   triangle here (its corner uvs are exact for every triangle). MEROMORPH_ERROR_ARGUMENT if a
    pointer is NULL. */
 MEROMORPH_API meromorph_status meromorph_sphere_positions(const meromorph_result *result,
                                                           double *xyz);
@@ -122,9 +132,21 @@ MEROMORPH_API meromorph_status meromorph_vertex_components(const meromorph_resul
                                                            int32_t *component);
 MEROMORPH_API double meromorph_component_spacing(const meromorph_result *result);
 
+/* The layered sphere as a mesh: meromorph_sphere_vertex_count vertices (the input's in order,
+   then, when split_nonmanifold split vertices, their copies) and meromorph_triangle_count
+   triangles (the input's, in order, pointing at the copies where split). Fills, per sphere
+   vertex: layered_xyz 3 doubles, source_vertex (the input vertex), layer, component and branch
+   (the local degree at a branch point, 0 elsewhere) 1 int32 each; triangles 3 int32 per
+   triangle. Any buffer may be NULL (not filled). Since ABI version 3. */
+MEROMORPH_API size_t meromorph_sphere_vertex_count(const meromorph_result *result);
+MEROMORPH_API meromorph_status meromorph_sphere_mesh(const meromorph_result *result,
+                                                     double *layered_xyz, int32_t *triangles,
+                                                     int32_t *source_vertex, int32_t *layer,
+                                                     int32_t *component, int32_t *branch);
+
 MEROMORPH_API size_t meromorph_branch_point_count(const meromorph_result *result);
-/* vertices and local_degrees: meromorph_branch_point_count entries each; local_degrees may be
-   NULL. */
+/* vertices (the input's) and local_degrees: meromorph_branch_point_count entries each;
+   local_degrees may be NULL. */
 MEROMORPH_API meromorph_status meromorph_branch_points(const meromorph_result *result,
                                                        int32_t *vertices, int32_t *local_degrees);
 

@@ -45,6 +45,17 @@ struct ParameterizeOptions {
   // of a grid of n x n cells over the unit square (n = ceil(sqrt(parts)), row by row from the
   // bottom left) instead of each filling the unit square.
   bool pack_uv = false;
+  // parameterize_surface: take non-manifold vertices and edges apart for the computation
+  // (nonmanifold_split.h) instead of refusing the mesh.
+  bool split_nonmanifold = false;
+};
+
+// What parameterize_surface took apart (nonmanifold_split.h): input vertices that were split,
+// input edges with more than two faces, and how many vertices the split added.
+struct NonmanifoldSplitReport {
+  std::vector<int> vertices;
+  std::vector<std::array<int, 2>> edges;
+  int added_vertices = 0;
 };
 
 // A hole closed for the computation (surface_map.h): its part, loop length in edges, a vertex of
@@ -58,7 +69,8 @@ struct BranchPoint {
   int vertex = -1;
   Eigen::Vector3d position;
   Eigen::Vector3d sphere;
-  int local_degree = 1; // e; the point is a branch point of order e - 1
+  int local_degree = 1;   // e; the point is a branch point of order e - 1
+  int sphere_vertex = -1; // non-manifold spots split: the vertex in the layered sphere's numbering
 };
 
 struct Parameterization {
@@ -108,6 +120,13 @@ struct Parameterization {
   std::vector<int> vertex_component; // per vertex: its part (empty: one part); part k's layered
                                      // sphere is centred at x = k * component_spacing
   double component_spacing = 0;
+  // parameterize_surface with split_nonmanifold on a non-manifold mesh: the per-vertex arrays
+  // above are per vertex of the split mesh (the input's vertices first, then the copies), whose
+  // faces are `sphere_faces` (the input's, in order, pointing at the copies) and whose vertices
+  // come from `sphere_source_vertex`; branch points name input vertices. Empty otherwise.
+  NonmanifoldSplitReport nonmanifold_split;
+  std::vector<int> sphere_source_vertex;
+  std::vector<std::array<int, 3>> sphere_faces;
 };
 
 struct Validation;

@@ -72,11 +72,13 @@ nlohmann::json vector_json(const Eigen::Vector3d &v) {
 
 nlohmann::json parameterization_json(const Parameterization &map) {
   nlohmann::json branch_points = nlohmann::json::array();
-  for (const BranchPoint &b : map.branch_points)
+  for (const BranchPoint &b : map.branch_points) {
     branch_points.push_back({{"vertex", b.vertex},
                              {"position", vector_json(b.position)},
                              {"sphere", vector_json(b.sphere)},
                              {"ramification", b.local_degree}});
+    if (b.sphere_vertex >= 0) branch_points.back()["sphere_vertex"] = b.sphere_vertex;
+  }
   nlohmann::json timings = nlohmann::json::object();
   for (const auto &[stage, ms] : map.timings_ms)
     timings[stage] = ms;
@@ -134,6 +136,14 @@ nlohmann::json parameterization_json(const Parameterization &map) {
                        {"vertex", hole.vertex},
                        {"sphere_area_over_4pi", hole.image_area_over_4pi}});
     report["holes_closed"] = holes;
+  }
+  if (!map.sphere_source_vertex.empty()) {
+    nlohmann::json edges = nlohmann::json::array();
+    for (const auto &edge : map.nonmanifold_split.edges)
+      edges.push_back({edge[0], edge[1]});
+    report["nonmanifold_split"] = {{"vertices", map.nonmanifold_split.vertices},
+                                   {"edges", edges},
+                                   {"added_vertices", map.nonmanifold_split.added_vertices}};
   }
   if (one_part && map.genus >= 2) {
     report["form_pair"] = map.form_pair;

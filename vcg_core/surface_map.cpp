@@ -7,10 +7,13 @@
 
 #include "errors.h"
 #include "map_quality.h"
+#include "mesh_from_arrays.h"
+#include "nonmanifold_split.h"
 #include "sphere_geometry.h"
 #include "surface_parts.h"
 #include "unit_scale.h"
 #include "validation.h"
+#include "wording.h"
 
 namespace meromorph {
 namespace {
@@ -44,23 +47,10 @@ ParameterizeOptions options_for_part(const ParameterizeOptions &options, const S
   return own;
 }
 
-} // namespace
-
-Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptions &options,
-                                      const Progress &progress) {
-  const Validation validation = validate_mesh(input);
-  if (const Finding *left = finding_left(validation, options.close_holes))
-    throw InputError(left->kind == FindingKind::boundary_loops
-                         ? left->message +
-                               "; or let meromorph close them for the computation only (--close-"
-                               "holes; MeshLab and Blender: Close Holes)"
-                         : left->message);
-  if (options.pack_uv && options.uv != UvKind::spherical)
-    throw ArgumentError("--pack-uv packs spherical texture coordinates (each part's in the unit "
-                        "square); stereographic ones are unbounded");
-  if (validation.ok()) return parameterize(input, options, progress, &validation);
-
-  const SurfaceParts split = split_into_closed_parts(input, options.close_holes);
+// Several parts, or holes to close: each part mapped on its own, in `mesh`'s numbering.
+Parameterization parameterize_parts(const Mesh &mesh, const Validation &validation,
+                                    const ParameterizeOptions &options, const Progress &progress) {
+  const SurfaceParts split = split_into_closed_parts(mesh, options.close_holes);
   const size_t part_count = split.parts.size();
   Parameterization out;
   out.notes = validation.notes;
@@ -68,11 +58,10 @@ Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptio
     out.notes.push_back("the mesh has " + std::to_string(part_count) +
                         " separate parts: each is mapped on its own");
   if (!split.holes.empty())
-    out.notes.push_back(std::to_string(split.holes.size()) +
-                        (split.holes.size() == 1 ? " hole was" : " holes were") +
+    out.notes.push_back(plural(split.holes.size(), "hole was", "holes were") +
                         " closed for the computation only; the outputs hold the input's faces");
 
-  const size_t vertex_count = input.vert.size(), face_count = input.face.size();
+  const size_t vertex_count = mesh.vert.size(), face_count = mesh.face.size();
   out.sphere.resize(vertex_count);
   out.layered.resize(vertex_count);
   out.branch_flag.assign(vertex_count, 0);
@@ -205,14 +194,88 @@ Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptio
     out.timings_ms.push_back({stage, ms});
   out.advice = join_phrases(advice);
 
-  // Distortion on the input's faces, as written (at unit scale: angles do not depend on it).
+  // Distortion on the mesh's faces, as written (at unit scale: angles do not depend on it).
   Mesh unit;
-  copy_at_unit_scale(input, unit_scale_of(input), unit);
+  copy_at_unit_scale(mesh, unit_scale_of(mesh), unit);
   std::vector<int> branch_vertices;
   for (const BranchPoint &b : out.branch_points)
     branch_vertices.push_back(b.vertex);
   out.quality = measure_map_quality(unit, out.sphere, branch_vertices);
   return out;
+}
+
+} // namespace
+
+Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptions &options,
+                                      const Progress &progress) {
+  if (options.pack_uv && options.uv != UvKind::spherical)
+    throw ArgumentError("--pack-uv packs spherical texture coordinates (each part's in the unit "
+                        "square); stereographic ones are unbounded");
+  Validation validation = validate_mesh(input);
+  const std::vector<std::string> input_notes = validation.notes;
+  // Non-manifold spots taken apart first: what is left is judged on the split mesh.
+  const bool nonmanifold = validation.find(FindingKind::non_manifold_edges) ||
+                           validation.find(FindingKind::non_manifold_vertices);
+  Mesh split_mesh;
+  NonmanifoldSplit split_spots;
+  if (nonmanifold && options.split_nonmanifold) {
+    split_spots = split_nonmanifold(input, split_mesh);
+    validation = validate_mesh(split_mesh);
+  }
+  const Mesh &mesh = nonmanifold && options.split_nonmanifold ? split_mesh : input;
+  if (const Finding *left = finding_left(validation, options.close_holes)) {
+    std::string message = left->message;
+    if (left->kind == FindingKind::boundary_loops)
+      message +=
+          std::string(nonmanifold ? " (some where non-manifold edges were taken apart)" : "") +
+          "; or let meromorph close them for the computation only (--close-holes; MeshLab "
+          "and Blender: Close Holes)";
+    if (left->kind == FindingKind::non_manifold_edges ||
+        left->kind == FindingKind::non_manifold_vertices)
+      message += "; or let meromorph take them apart for the computation (--split-nonmanifold; "
+                 "MeshLab and Blender: Split Non-Manifold Spots)";
+    throw InputError(message);
+  }
+  Parameterization out = validation.ok() ? parameterize(mesh, options, progress, &validation)
+                                         : parameterize_parts(mesh, validation, options, progress);
+  if (nonmanifold && options.split_nonmanifold) {
+    out.nonmanifold_split = {split_spots.split_vertices, split_spots.split_edges,
+                             split_spots.added_vertices};
+    out.sphere_source_vertex = split_spots.source_vertex;
+    out.sphere_faces = arrays_from_mesh(mesh).triangles;
+    // The copies sit on their originals by construction: only the input's own notes stay.
+    const std::vector<std::string> split_notes = validation.notes;
+    out.notes.erase(
+        std::remove_if(out.notes.begin(), out.notes.end(),
+                       [&](const std::string &note) {
+                         return std::count(split_notes.begin(), split_notes.end(), note) > 0 &&
+                                std::count(input_notes.begin(), input_notes.end(), note) == 0;
+                       }),
+        out.notes.end());
+    out.notes.push_back(
+        "non-manifold spots taken apart for the computation: " +
+        std::to_string(split_spots.split_vertices.size()) + " vertices split into " +
+        std::to_string(split_spots.split_vertices.size() + size_t(split_spots.added_vertices)) +
+        ", " + plural(split_spots.split_edges.size(), "edge", "edges") +
+        " with more than two faces taken apart; the layered sphere has the split vertices, "
+        "the surface keeps its own (each face corner has its texture coordinates)");
+    for (BranchPoint &b : out.branch_points) {
+      b.sphere_vertex = b.vertex;
+      b.vertex = split_spots.source_vertex[size_t(b.vertex)];
+    }
+    for (ClosedHoleReport &hole : out.holes_closed)
+      hole.vertex = split_spots.source_vertex[size_t(hole.vertex)];
+  }
+  return out;
+}
+
+void layered_sphere_mesh(const Mesh &input, const Parameterization &map, Mesh &sphere) {
+  MeshArrays arrays = arrays_from_mesh(input);
+  if (!map.sphere_faces.empty()) arrays.triangles = map.sphere_faces;
+  arrays.positions.resize(map.layered.size());
+  for (size_t v = 0; v < map.layered.size(); ++v)
+    arrays.positions[v] = Point3(map.layered[v][0], map.layered[v][1], map.layered[v][2]);
+  mesh_from_arrays(arrays, sphere);
 }
 
 } // namespace meromorph

@@ -12,7 +12,9 @@
 //      input's faces only, the degree, genus, Euler characteristic and ramification summed over the
 //      parts, valid only when every part is, and `components` (each part's figures) and
 //      `holes_closed`. Outputs hold the input's vertices and faces only: a closed hole shows as a
-//      gap on the sphere.
+//      gap on the sphere. With `options.split_nonmanifold`, non-manifold vertices and edges are
+//      first taken apart (nonmanifold_split.h): the per-vertex arrays are then the split mesh's
+//      (`sphere_faces`, `sphere_source_vertex`) and `nonmanifold_split` says what was split.
 #pragma once
 
 #include "mesh.h"
@@ -23,5 +25,9 @@ namespace meromorph {
 
 Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptions &options = {},
                                       const Progress &progress = {});
+
+// The layered sphere as a mesh: `map.layered` positions on the input's faces (on the split
+// mesh's vertices and faces when non-manifold spots were taken apart).
+void layered_sphere_mesh(const Mesh &input, const Parameterization &map, Mesh &sphere);
 
 } // namespace meromorph

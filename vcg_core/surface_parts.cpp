@@ -22,13 +22,14 @@ int find_root(std::vector<int> &parent, int x) {
 
 // Closes a hole: rings of vertices shrinking towards the loop's centroid, about one ring per
 // 2 pi edges of the loop and fewer vertices the smaller a ring is, zipped together by their
-// arc-length parameter, and a fan at the centre (a loop of three edges: one triangle); so the
+// arc-length parameter, and a fan at the centre (a loop of three edges: one triangle, unless
+// the part is that one triangle: then a fan from its centroid, not the same face again); so the
 // triangles stay about as large as the loop's edges (a plain fan from the centroid would make long
 // needles on a large hole). A face walks a boundary edge a -> b; the faces closing it walk b -> a.
 void close_loop(const std::vector<int> &loop, std::vector<Point3> &positions,
                 std::vector<std::array<int, 3>> &triangles) {
   const size_t n = loop.size();
-  if (n == 3) { // one triangle, no new vertex
+  if (n == 3 && triangles.size() > 1) { // one triangle, no new vertex
     triangles.push_back({loop[2], loop[1], loop[0]});
     return;
   }

@@ -11,6 +11,7 @@
 #include "errors.h"
 #include "topology.h"
 #include "unit_scale.h"
+#include "wording.h"
 
 namespace meromorph {
 
@@ -93,10 +94,6 @@ bool has_zero_area(const MeshFace &face) {
 }
 
 namespace {
-
-std::string plural(size_t n, const char *one, const char *many) {
-  return std::to_string(n) + " " + (n == 1 ? one : many);
-}
 
 std::string list_edges(const std::vector<std::array<int, 2>> &edges, size_t shown = 10) {
   std::string text;

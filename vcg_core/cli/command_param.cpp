@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <numeric>
 #include <sstream>
 
 #include "commands.h"
@@ -27,7 +28,7 @@ struct ParamOptions {
   std::string uv = "spherical";
   std::string solver = "cholmod";
   bool no_mobius = false, repair = false, keep_invalid = false, close_holes = false,
-       pack_uv = false, quiet = false;
+       pack_uv = false, split_nonmanifold = false, quiet = false;
   int origin = -1;
   std::vector<int> forms{-1, -1};
   double layer_gap = 0.0;
@@ -55,6 +56,7 @@ int run_param(const ParamOptions &options) {
   settings.solver = solver_from_name(options.solver);
   settings.close_holes = options.close_holes;
   settings.pack_uv = options.pack_uv;
+  settings.split_nonmanifold = options.split_nonmanifold;
 
   const auto start = std::chrono::steady_clock::now();
   Mesh mesh;
@@ -97,15 +99,15 @@ int run_param(const ParamOptions &options) {
 
   if (!options.sphere.empty()) {
     Mesh layered;
-    vcg::tri::Append<Mesh, Mesh>::MeshCopy(layered, mesh);
-    for (size_t v = 0; v < layered.vert.size(); ++v)
-      layered.vert[v].P() = Point3(map.layered[v][0], map.layered[v][1], map.layered[v][2]);
+    layered_sphere_mesh(mesh, map, layered);
     WriteOptions sphere;
     std::vector<int> component = map.vertex_component;
     component.resize(layered.vert.size(), 0);
-    std::vector<int> source_vertex(layered.vert.size());
-    for (size_t v = 0; v < source_vertex.size(); ++v)
-      source_vertex[v] = int(v);
+    std::vector<int> source_vertex = map.sphere_source_vertex;
+    if (source_vertex.empty()) {
+      source_vertex.resize(layered.vert.size());
+      std::iota(source_vertex.begin(), source_vertex.end(), 0);
+    }
     sphere.vertex_properties = {{"layer", map.sheets.vertex_layer, false},
                                 {"branch", map.branch_flag, true},
                                 {"source_vertex", source_vertex, false},
@@ -188,6 +190,10 @@ Command add_param_command(CLI::App &app) {
   param->add_flag("--close-holes", options->close_holes,
                   "close every hole for the computation only (the outputs keep the input's faces; "
                   "the holes show as gaps on the sphere)");
+  param->add_flag("--split-nonmanifold", options->split_nonmanifold,
+                  "take non-manifold vertices and edges apart for the computation (the surface "
+                  "keeps its vertices, with texture coordinates per face corner; the layered "
+                  "sphere gets the split vertices)");
   param->add_flag("--pack-uv", options->pack_uv,
                   "several parts: each part's texture in its own cell of the unit square (a grid, "
                   "row by row from the bottom left) instead of each filling it");
