@@ -90,6 +90,14 @@ void FilterMeromorphPlugin::initParameterSet(QAction *, MeshModel &,
                                "Close every hole for the computation only: the mesh keeps its "
                                "faces, the holes show as gaps on the sphere. Off: a mesh with "
                                "holes is refused."));
+  parameters.addParam(RichBool(
+      "splitNonManifold", true, "Split non-manifold spots",
+      "Take non-manifold vertices and edges apart for the computation: the mesh keeps its "
+      "vertices (texture coordinates per wedge are exact), the layered sphere gets the split "
+      "vertices. Off: such a mesh is refused."));
+  parameters.addParam(RichBool("packUv", false, "Pack the parts' texture coordinates",
+                               "Several parts, spherical coordinates: each part's texture in its "
+                               "own cell of the unit square instead of each filling it."));
 }
 
 bool FilterMeromorphPlugin::fail(const QString &message) {
@@ -150,6 +158,8 @@ bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
   options.form_pair[1] = parameters.getInt("formJ");
   options.layer_gap = parameters.getFloat("layerGap");
   options.close_holes = parameters.getBool("closeHoles") ? 1 : 0;
+  options.split_nonmanifold = parameters.getBool("splitNonManifold") ? 1 : 0;
+  options.pack_uv = parameters.getBool("packUv") && options.uv_kind == 0 ? 1 : 0;
   ProgressBridge bridge{callback};
   options.progress = report_progress;
   options.progress_user = &bridge;
@@ -162,12 +172,17 @@ bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
                     .arg(meromorph_last_error()));
 
   const size_t vertex_count = positions.size() / 3;
-  std::vector<double> uv(2 * vertex_count), corners(6 * faces.size()), layered(3 * vertex_count);
+  std::vector<double> uv(2 * vertex_count), corners(6 * faces.size());
   std::vector<int32_t> layers(vertex_count);
   meromorph_vertex_uvs(result, uv.data());
   meromorph_corner_uvs(result, corners.data());
   meromorph_layers(result, layers.data());
-  meromorph_layered_positions(result, layered.data());
+  // The layered sphere as a mesh (with copies of vertices split at non-manifold spots).
+  const size_t sphere_vertex_count = meromorph_sphere_vertex_count(result);
+  std::vector<double> layered(3 * sphere_vertex_count);
+  std::vector<int32_t> sphere_triangles(3 * faces.size()), sphere_layers(sphere_vertex_count);
+  meromorph_sphere_mesh(result, layered.data(), sphere_triangles.data(), nullptr,
+                        sphere_layers.data(), nullptr, nullptr);
   std::vector<int32_t> branch_vertices(meromorph_branch_point_count(result)),
       branch_degrees(branch_vertices.size());
   if (!branch_vertices.empty())
@@ -210,10 +225,17 @@ bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
 
   if (parameters.getBool("layeredSphere")) {
     MeshModel *sphere = document.addNewMesh("", model->label() + " layered sphere", false);
-    vcg::tri::Append<CMeshO, CMeshO>::MeshCopy(sphere->cm, mesh);
+    CMeshO &on_sphere = sphere->cm;
+    auto vertex = vcg::tri::Allocator<CMeshO>::AddVertices(on_sphere, sphere_vertex_count);
+    auto face = vcg::tri::Allocator<CMeshO>::AddFaces(on_sphere, faces.size());
     sphere->updateDataMask(MeshModel::MM_VERTQUALITY);
-    for (size_t v = 0; v < vertex_count; ++v)
-      sphere->cm.vert[v].P() = Point3m(layered[3 * v], layered[3 * v + 1], layered[3 * v + 2]);
+    for (size_t v = 0; v < sphere_vertex_count; ++v, ++vertex) {
+      vertex->P() = Point3m(layered[3 * v], layered[3 * v + 1], layered[3 * v + 2]);
+      vertex->Q() = float(sphere_layers[v]);
+    }
+    for (size_t f = 0; f < faces.size(); ++f, ++face)
+      for (int k = 0; k < 3; ++k)
+        face->V(k) = &on_sphere.vert[size_t(sphere_triangles[3 * f + k])];
     vcg::tri::UpdateBounding<CMeshO>::Box(sphere->cm);
     vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFaceNormalized(sphere->cm);
   }

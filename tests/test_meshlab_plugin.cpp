@@ -1,5 +1,6 @@
 // The MeshLab plugin in the real MeshLab: meshlabserver under xvfb-run loads it from the build tree
 // (a copy of meshlabserver beside a plugins/ folder with the system plugins and ours).
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -132,6 +133,56 @@ TEST(MeshLabPlugin, HolesAreClosedForTheComputationOrRefused) {
   EXPECT_EQ(holed.FN(), input.FN());
 }
 
+TEST(MeshLabPlugin, NonManifoldSpotsAreSplitForTheComputation) {
+  const MeshLab meshlab;
+  std::string log;
+  const std::string input = meshlab.path("cubes.off");
+  std::ofstream(input) << test::cubes_sharing_an_edge_off();
+  // With the layered sphere: a second layer, with copies of the shared edge's two vertices.
+  std::ifstream script_stream(script);
+  std::stringstream script_text;
+  script_text << script_stream.rdbuf();
+  std::string with_sphere = script_text.str();
+  const std::string off = "value=\"false\" name=\"layeredSphere\"";
+  ASSERT_NE(with_sphere.find(off), std::string::npos);
+  with_sphere.replace(with_sphere.find(off), off.size(), "value=\"true\" name=\"layeredSphere\"");
+  const std::string sphere_script = meshlab.path("sphere.mlx");
+  std::ofstream(sphere_script) << with_sphere;
+  // Then MeshLab's own "Delete Current Mesh", so the layered sphere is what gets saved.
+  std::string sphere_only = with_sphere;
+  sphere_only.replace(sphere_only.find("</FilterScript>"), 15,
+                      " <filter name=\"Delete Current Mesh\"/>\n</FilterScript>");
+  const std::string sphere_only_script = meshlab.path("sphere_only.mlx");
+  std::ofstream(sphere_only_script) << sphere_only;
+  ASSERT_EQ(meshlab.run("-i " + input + " -o " + meshlab.path("cubes.ply") + " -m vt vq wt -s " +
+                            sphere_script,
+                        log),
+            0)
+      << log;
+  EXPECT_NE(log.find("non-manifold spots taken apart for the computation: 2 vertices split into "
+                     "4, 1 edge"),
+            std::string::npos)
+      << log;
+  EXPECT_NE(log.find("2 separate parts"), std::string::npos) << log;
+  Mesh cubes, sphere;
+  test::load_ply_attributes(meshlab.path("cubes.ply"), cubes);
+  EXPECT_EQ(cubes.VN(), 14);
+  EXPECT_EQ(cubes.FN(), 24);
+  std::string sphere_log;
+  ASSERT_EQ(meshlab.run("-i " + input + " -o " + meshlab.path("cubes.sphere.ply") + " -s " +
+                            sphere_only_script,
+                        sphere_log),
+            0)
+      << sphere_log;
+  test::load_ply_attributes(meshlab.path("cubes.sphere.ply"), sphere);
+  EXPECT_EQ(sphere.VN(), 16);
+  EXPECT_EQ(sphere.FN(), 24);
+  for (const MeshVertex &v : sphere.vert) { // each cube on its own unit sphere, side by side
+    const double x = v.cP()[0] - 2.5 * std::round(v.cP()[0] / 2.5);
+    EXPECT_NEAR(std::sqrt(x * x + v.cP()[1] * v.cP()[1] + v.cP()[2] * v.cP()[2]), 1.0, 1e-5);
+  }
+}
+
 TEST(MeshLabPlugin, FilterIsListedWithItsParameters) {
   const MeshLab meshlab;
   std::string log;
@@ -143,10 +194,11 @@ TEST(MeshLabPlugin, FilterIsListedWithItsParameters) {
   const size_t at = dump.find("Conformal Spherical Parameterization");
   ASSERT_NE(at, std::string::npos);
   const std::string section = dump.substr(at, dump.find("\\section", at + 1) - at);
-  for (const char *label : {"Texture coordinates", "Moebius normalization", "Genus 1: pole vertex",
-                            "Genus >= 2: first form", "Genus >= 2: second form",
-                            "Seam-correct wedge texture coordinates", "Create the layered sphere",
-                            "Layer gap", "Close holes"})
+  for (const char *label :
+       {"Texture coordinates", "Moebius normalization", "Genus 1: pole vertex",
+        "Genus >= 2: first form", "Genus >= 2: second form",
+        "Seam-correct wedge texture coordinates", "Create the layered sphere", "Layer gap",
+        "Close holes", "Split non-manifold spots", "Pack the parts' texture coordinates"})
     EXPECT_NE(section.find(label), std::string::npos) << label;
 }
 

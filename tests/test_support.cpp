@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <sys/wait.h>
 
@@ -87,6 +88,31 @@ std::string off_text(const std::vector<std::array<double, 3>> &positions,
   for (const auto &t : triangles)
     text << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
   return text.str();
+}
+
+std::string cubes_sharing_an_edge_off() {
+  // Unit cubes at the origin and at (1, 1, 0): they share the edge x = y = 1.
+  std::vector<std::array<double, 3>> positions;
+  std::map<std::array<double, 3>, int> index;
+  std::vector<std::array<int, 3>> triangles;
+  const int quads[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
+                           {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
+  for (double offset : {0.0, 1.0}) {
+    int corner[8];
+    for (int c = 0; c < 8; ++c) {
+      const std::array<double, 3> p{(c >> 2) + offset, ((c >> 1) & 1) + offset, double(c & 1)};
+      if (!index.count(p)) {
+        index[p] = int(positions.size());
+        positions.push_back(p);
+      }
+      corner[c] = index[p];
+    }
+    for (const auto &q : quads) { // counter-clockwise seen from outside
+      triangles.push_back({corner[q[0]], corner[q[1]], corner[q[2]]});
+      triangles.push_back({corner[q[0]], corner[q[2]], corner[q[3]]});
+    }
+  }
+  return off_text(positions, triangles);
 }
 
 } // namespace meromorph::test

@@ -353,20 +353,8 @@ TEST(WrittenMaps, HolesClosedAndSeveralParts) {
   EXPECT_NE(refused.err.find("--close-holes"), std::string::npos) << refused.err;
 }
 
-// Meshes with non-manifold spots, as OFF text: two cubes sharing an edge, two copies of the shared
+// Meshes with non-manifold spots: two cubes sharing an edge, two copies of the shared
 // sphere touching at a vertex, the shared torus with a fin (a triangle on one of its edges).
-std::string off_text(const std::vector<std::array<double, 3>> &positions,
-                     const std::vector<std::array<int, 3>> &triangles) {
-  std::ostringstream text;
-  text.precision(17);
-  text << "OFF\n" << positions.size() << " " << triangles.size() << " 0\n";
-  for (const auto &p : positions)
-    text << p[0] << " " << p[1] << " " << p[2] << "\n";
-  for (const auto &t : triangles)
-    text << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
-  return text.str();
-}
-
 void arrays_of(const std::string &file, std::vector<std::array<double, 3>> &positions,
                std::vector<std::array<int, 3>> &triangles) {
   Mesh mesh;
@@ -379,28 +367,7 @@ void arrays_of(const std::string &file, std::vector<std::array<double, 3>> &posi
 }
 
 std::string cubes_sharing_an_edge(const test::TempDir &dir) {
-  // Unit cubes at the origin and at (1, 1, 0): they share the edge x = y = 1.
-  std::vector<std::array<double, 3>> positions;
-  std::map<std::array<double, 3>, int> index;
-  std::vector<std::array<int, 3>> triangles;
-  const int quads[6][4] = {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1},
-                           {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}};
-  for (double offset : {0.0, 1.0}) {
-    int corner[8];
-    for (int c = 0; c < 8; ++c) {
-      const std::array<double, 3> p{(c >> 2) + offset, ((c >> 1) & 1) + offset, double(c & 1)};
-      if (!index.count(p)) {
-        index[p] = int(positions.size());
-        positions.push_back(p);
-      }
-      corner[c] = index[p];
-    }
-    for (const auto &q : quads) { // counter-clockwise seen from outside
-      triangles.push_back({corner[q[0]], corner[q[2]], corner[q[1]]});
-      triangles.push_back({corner[q[0]], corner[q[3]], corner[q[2]]});
-    }
-  }
-  return dir.write("cubes_sharing_an_edge.off", off_text(positions, triangles));
+  return dir.write("cubes_sharing_an_edge.off", test::cubes_sharing_an_edge_off());
 }
 
 std::string spheres_touching_at_a_vertex(const test::TempDir &dir) {
@@ -431,7 +398,7 @@ std::string spheres_touching_at_a_vertex(const test::TempDir &dir) {
   for (size_t f = 0; f < face_count; ++f)
     triangles.push_back({copy_of[size_t(triangles[f][0])], copy_of[size_t(triangles[f][1])],
                          copy_of[size_t(triangles[f][2])]});
-  return dir.write("spheres_touching_at_a_vertex.off", off_text(positions, triangles));
+  return dir.write("spheres_touching_at_a_vertex.off", test::off_text(positions, triangles));
 }
 
 std::string torus_with_a_fin(const test::TempDir &dir) {
@@ -446,7 +413,7 @@ std::string torus_with_a_fin(const test::TempDir &dir) {
   apex[2] += 0.3;
   positions.push_back(apex);
   triangles.push_back({b, a, int(positions.size()) - 1});
-  return dir.write("torus_with_a_fin.off", off_text(positions, triangles));
+  return dir.write("torus_with_a_fin.off", test::off_text(positions, triangles));
 }
 
 TEST(WrittenMaps, NonManifoldSpotsTakenApart) {

@@ -2,15 +2,17 @@
 #
 # In:  flat numpy arrays (float32 positions, int32 triangles) and options.
 # Out: a dict of numpy arrays (sphere and layered positions, per-vertex and per-corner UVs,
-#      layers, branch vertices and local degrees) and figures; MeromorphError with the library's
-#      message and status when the mesh cannot be mapped.
+#      layers, branch vertices and local degrees; the layered sphere as a mesh, with the copies of
+#      vertices that were split at non-manifold spots) and figures; MeromorphError with the
+#      library's message and status when the mesh cannot be mapped or the library cannot be
+#      loaded.
 import ctypes
 import json
 import os
 
 import numpy as np
 
-ABI_VERSION = 2
+ABI_VERSION = 3
 STATUS_NAMES = {1: "internal failure", 2: "bad argument", 3: "cannot be mapped", 4: "cancelled"}
 
 PROGRESS = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_double, ctypes.c_char_p, ctypes.c_void_p)
@@ -28,6 +30,8 @@ class Options(ctypes.Structure):
         ("progress", PROGRESS),
         ("progress_user", ctypes.c_void_p),
         ("close_holes", ctypes.c_int),
+        ("split_nonmanifold", ctypes.c_int),
+        ("pack_uv", ctypes.c_int),
     ]
 
 
@@ -55,7 +59,11 @@ def load():
     global _library
     if _library is None:
         path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "libmeromorph.so")
-        lib = ctypes.CDLL(path)
+        try:
+            lib = ctypes.CDLL(path)
+        except OSError as error:
+            raise MeromorphError(1, "the add-on's library cannot be loaded (%s): reinstall the "
+                                 "add-on from its zip" % error)
         lib.meromorph_last_error.restype = ctypes.c_char_p
         lib.meromorph_version.restype = ctypes.c_char_p
         lib.meromorph_report_json.restype = ctypes.c_char_p
@@ -66,7 +74,9 @@ def load():
         lib.meromorph_parameterize_f.argtypes = [
             ctypes.c_void_p, ctypes.c_size_t, ctypes.c_void_p, ctypes.c_size_t,
             ctypes.POINTER(Options), ctypes.POINTER(ctypes.c_void_p)]
-        for name in ("vertex_count", "triangle_count", "branch_point_count"):
+        lib.meromorph_sphere_mesh.argtypes = [ctypes.c_void_p] * 7
+        for name in ("vertex_count", "triangle_count", "branch_point_count",
+                     "sphere_vertex_count"):
             getattr(lib, "meromorph_" + name).restype = ctypes.c_size_t
             getattr(lib, "meromorph_" + name).argtypes = [ctypes.c_void_p]
         for name in ("genus", "degree", "riemann_hurwitz_ok", "map_valid"):
@@ -85,7 +95,8 @@ def load():
 
 
 def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
-                 form_pair=(-1, -1), layer_gap=0.0, close_holes=False, progress=None):
+                 form_pair=(-1, -1), layer_gap=0.0, close_holes=False, split_nonmanifold=False,
+                 pack_uv=False, progress=None):
     lib = load()
     positions = np.ascontiguousarray(positions, dtype=np.float32).reshape(-1)
     triangles = np.ascontiguousarray(triangles, dtype=np.int32).reshape(-1)
@@ -97,6 +108,8 @@ def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
     options.form_pair[0], options.form_pair[1] = form_pair
     options.layer_gap = layer_gap
     options.close_holes = 1 if close_holes else 0
+    options.split_nonmanifold = 1 if split_nonmanifold else 0
+    options.pack_uv = 1 if pack_uv else 0
     callback = PROGRESS(lambda fraction, stage, user: 1 if progress is None else progress(fraction))
     options.progress = callback
     result = ctypes.c_void_p()
@@ -113,20 +126,36 @@ def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
             "corner_uv": np.empty(6 * t), "layer": np.empty(n, dtype=np.int32),
             "component": np.empty(n, dtype=np.int32),
         }
-        lib.meromorph_sphere_positions(result, out["sphere"].ctypes.data)
-        lib.meromorph_layered_positions(result, out["layered"].ctypes.data)
-        lib.meromorph_vertex_uvs(result, out["vertex_uv"].ctypes.data)
-        lib.meromorph_corner_uvs(result, out["corner_uv"].ctypes.data)
-        lib.meromorph_layers(result, out["layer"].ctypes.data)
-        lib.meromorph_vertex_components(result, out["component"].ctypes.data)
+        m = lib.meromorph_sphere_vertex_count(result)
+        out.update({
+            "sphere_layered": np.empty(3 * m), "sphere_triangles": np.empty(3 * t, dtype=np.int32),
+            "sphere_source": np.empty(m, dtype=np.int32), "sphere_layer": np.empty(m, dtype=np.int32),
+            "sphere_component": np.empty(m, dtype=np.int32),
+            "sphere_branch": np.empty(m, dtype=np.int32),
+        })
+        statuses = [
+            lib.meromorph_sphere_positions(result, out["sphere"].ctypes.data),
+            lib.meromorph_layered_positions(result, out["layered"].ctypes.data),
+            lib.meromorph_vertex_uvs(result, out["vertex_uv"].ctypes.data),
+            lib.meromorph_corner_uvs(result, out["corner_uv"].ctypes.data),
+            lib.meromorph_layers(result, out["layer"].ctypes.data),
+            lib.meromorph_vertex_components(result, out["component"].ctypes.data),
+            lib.meromorph_sphere_mesh(
+                result, out["sphere_layered"].ctypes.data, out["sphere_triangles"].ctypes.data,
+                out["sphere_source"].ctypes.data, out["sphere_layer"].ctypes.data,
+                out["sphere_component"].ctypes.data, out["sphere_branch"].ctypes.data),
+        ]
         count = lib.meromorph_branch_point_count(result)
         out["branch_vertices"] = np.empty(count, dtype=np.int32)
         out["branch_degrees"] = np.empty(count, dtype=np.int32)
         if count:
-            lib.meromorph_branch_points(result, out["branch_vertices"].ctypes.data,
-                                        out["branch_degrees"].ctypes.data)
+            statuses.append(lib.meromorph_branch_points(
+                result, out["branch_vertices"].ctypes.data, out["branch_degrees"].ctypes.data))
         distortion = Distortion()
-        lib.meromorph_get_distortion(result, ctypes.byref(distortion))
+        statuses.append(lib.meromorph_get_distortion(result, ctypes.byref(distortion)))
+        if any(statuses):
+            raise MeromorphError(1, "reading the result failed: %s"
+                                 % lib.meromorph_last_error().decode("utf-8", "replace"))
         out["angle_error"] = distortion.angle_error_mean_degrees
         out["folded_away"] = distortion.folded_faces_away_from_branch_points
         out["genus"] = lib.meromorph_genus(result)

@@ -65,10 +65,22 @@ class MESH_OT_conformal_sphere_map(bpy.types.Operator):
     close_holes: BoolProperty(name="Close Holes", default=True,
                               description="Close every hole for the computation only: the mesh "
                                           "keeps its faces, the holes show as gaps on the sphere")
+    split_nonmanifold: BoolProperty(
+        name="Split Non-Manifold Spots", default=True,
+        description="Take non-manifold vertices and edges apart for the computation: the mesh "
+                    "keeps its vertices (UVs per face corner); the layered sphere gets the split "
+                    "vertices")
+    pack_uv: BoolProperty(name="Pack Parts' UVs", default=False,
+                          description="Several parts: each part's UVs in its own cell of the "
+                                      "unit square instead of each filling it")
 
     @classmethod
     def poll(cls, context):
-        return True  # errors are reported in words by execute()
+        obj = context.active_object
+        if obj is None or obj.type != "MESH":
+            cls.poll_message_set("Select a mesh object first")
+            return False
+        return True
 
     def execute(self, context):
         obj = context.active_object
@@ -104,7 +116,8 @@ class MESH_OT_conformal_sphere_map(bpy.types.Operator):
                 positions, triangles, uv_kind=0 if self.uv_kind == "SPHERICAL" else 1,
                 mobius=self.mobius, origin_vertex=self.origin,
                 form_pair=(self.form_i, self.form_j), layer_gap=self.layer_gap,
-                close_holes=self.close_holes, progress=progress)
+                close_holes=self.close_holes, split_nonmanifold=self.split_nonmanifold,
+                pack_uv=self.pack_uv and self.uv_kind == "SPHERICAL", progress=progress)
         except library.MeromorphError as error:
             self.report({"ERROR"}, "'%s' cannot be mapped: %s (vertex numbers are Blender's)"
                         % (obj.name, error))
@@ -142,17 +155,29 @@ class MESH_OT_conformal_sphere_map(bpy.types.Operator):
         mesh = obj.data
         name = obj.name + " Layered Sphere"
         sphere_mesh = bpy.data.meshes.new(name)
-        sphere_mesh.from_pydata(result["layered"].reshape(-1, 3).tolist(), [],
-                                [tuple(p.vertices) for p in mesh.polygons])
+        # Each polygon on the sphere's vertices: a loop's sphere vertex is its triangle corner's
+        # (the input's vertex, or its copy where a non-manifold spot was split).
+        mesh.calc_loop_triangles()
+        loops = np.empty(3 * len(mesh.loop_triangles), dtype=np.int32)
+        mesh.loop_triangles.foreach_get("loops", loops)
+        loop_vertex = np.empty(len(mesh.loops), dtype=np.int64)
+        mesh.loops.foreach_get("vertex_index", loop_vertex)
+        loop_vertex[loops] = result["sphere_triangles"]
+        sphere_mesh.from_pydata(
+            result["sphere_layered"].reshape(-1, 3).tolist(), [],
+            [loop_vertex[p.loop_start:p.loop_start + p.loop_total].tolist() for p in mesh.polygons])
         attribute = sphere_mesh.attributes.new("layer", "INT", "POINT")
-        attribute.data.foreach_set("value", result["layer"])
+        attribute.data.foreach_set("value", result["sphere_layer"])
         component = sphere_mesh.attributes.new("component", "INT", "POINT")
-        component.data.foreach_set("value", result["component"])
+        component.data.foreach_set("value", result["sphere_component"])
+        source = sphere_mesh.attributes.new("source_vertex", "INT", "POINT")
+        source.data.foreach_set("value", result["sphere_source"])
         sphere_mesh.update()
         sphere = bpy.data.objects.new(name, sphere_mesh)
         context.collection.objects.link(sphere)
         sphere.matrix_world = obj.matrix_world.copy()
         group = sphere.vertex_groups.new(name="branch_points")
-        if len(result["branch_vertices"]):
-            group.add([int(v) for v in result["branch_vertices"]], 1.0, "REPLACE")
+        branch = np.flatnonzero(result["sphere_branch"])
+        if len(branch):
+            group.add([int(v) for v in branch], 1.0, "REPLACE")
         return sphere

@@ -171,7 +171,7 @@ check_result(cube, (0, 1, 0), quads=True)
 
 # Errors in Blender's words, nothing changed.
 clear_scene()
-expect_error("No active mesh")
+expect_error("Select a mesh object")
 bpy.ops.mesh.primitive_grid_add()
 grid = bpy.context.active_object
 expect_error("boundary loop", close_holes=False)
@@ -216,6 +216,56 @@ check(len(set(components[:half].tolist())) == 1 and len(set(components[half:].to
 for part in (co[:half], co[half:]):
     centre = np.array([round(part[:, 0].mean() / 2.5) * 2.5, 0, 0])
     check(np.allclose(np.linalg.norm(part - centre, axis=1), 1.0, atol=1e-5), "each part on its sphere")
+# Suzanne as Blender makes her: three parts (head and two eyes) and four holes, mapped with the
+# defaults: every face gets UVs, one layered-sphere object with a part per component.
+clear_scene()
+bpy.ops.mesh.primitive_monkey_add()
+suzanne = bpy.context.active_object
+check(run_operator(layer_gap=0.0) == {"FINISHED"}, "Suzanne mapped with the defaults")
+uv = np.empty(2 * len(suzanne.data.loops))
+suzanne.data.uv_layers["Conformal Sphere"].data.foreach_get("uv", uv)
+check(np.isfinite(uv).all() and len(uv) == 2 * len(suzanne.data.loops), "every loop has a UV")
+suzanne_sphere = bpy.data.objects[suzanne.name + " Layered Sphere"].data
+components = np.empty(len(suzanne_sphere.vertices), dtype=np.int32)
+suzanne_sphere.attributes["component"].data.foreach_get("value", components)
+check(sorted(set(components.tolist())) == [0, 1, 2], "Suzanne's three parts: %s" % set(components.tolist()))
+check(len(suzanne_sphere.polygons) == len(suzanne.data.polygons), "the sphere has every face")
+
+# Two cubes sharing an edge (a non-manifold edge of four faces): split for the computation, the
+# layered sphere gets the copies of the edge's two vertices, the cube keeps its vertices.
+clear_scene()
+corners = [(x, y, z) for x in (0, 1) for y in (0, 1) for z in (0, 1)]
+quads = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
+vertices = corners + [(x + 1, y + 1, z) for (x, y, z) in corners]
+second = {k: 8 + k for k in range(8)}
+second[0], second[1] = 6, 7  # (1, 1, z) of the second cube is (1, 1, z) of the first
+faces = quads + [tuple(second[v] for v in q) for q in quads]  # counter-clockwise from outside
+used = sorted({v for f in faces for v in f})
+index = {v: i for i, v in enumerate(used)}
+mesh = bpy.data.meshes.new("Cubes")
+mesh.from_pydata([vertices[v] for v in used], [], [tuple(index[v] for v in f) for f in faces])
+cubes = bpy.data.objects.new("Cubes", mesh)
+bpy.context.collection.objects.link(cubes)
+activate(cubes)
+expect_error("non-manifold", split_nonmanifold=False)
+check(run_operator(layer_gap=0.0) == {"FINISHED"}, "two cubes sharing an edge mapped")
+cubes_sphere = bpy.data.objects["Cubes Layered Sphere"].data
+check(len(cubes_sphere.vertices) == len(mesh.vertices) + 2,
+      "the sphere has two more vertices: %d" % len(cubes_sphere.vertices))
+source = np.empty(len(cubes_sphere.vertices), dtype=np.int32)
+cubes_sphere.attributes["source_vertex"].data.foreach_get("value", source)
+for polygon, original in zip(cubes_sphere.polygons, mesh.polygons):
+    check([int(source[v]) for v in polygon.vertices] == list(original.vertices),
+          "sphere polygon %d comes from the cube's" % polygon.index)
+co = np.empty(3 * len(cubes_sphere.vertices))
+cubes_sphere.vertices.foreach_get("co", co)
+components = np.empty(len(cubes_sphere.vertices), dtype=np.int32)
+cubes_sphere.attributes["component"].data.foreach_get("value", components)
+spacing = 2.5
+for part in (0, 1):
+    at = co.reshape(-1, 3)[components == part] - np.array([part * spacing, 0, 0])
+    check(np.allclose(np.linalg.norm(at, axis=1), 1.0, atol=1e-5), "cube %d on its own sphere" % part)
+
 clear_scene()
 mesh = bpy.data.meshes.new("Triangle")
 mesh.from_pydata([(0, 0, 0), (1, 0, 0), (0, 1, 0)], [], [(0, 1, 2)])
