@@ -8,10 +8,12 @@
 #include <set>
 #include <sstream>
 
+#include <Eigen/Geometry>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "test_support.h"
+#include "validation.h"
 #include "written_map.h"
 
 namespace meromorph {
@@ -439,6 +441,93 @@ TEST(WrittenMaps, NonManifoldSpotsTakenApart) {
     EXPECT_NE(refused.err.find("non-manifold"), std::string::npos) << refused.err;
     EXPECT_FALSE(std::ifstream(dir.path("refused.ply")).good());
   }
+}
+
+// A copy of a shared mesh with a zero-area face: a cap (the midpoint of an edge joined to its
+// ends, the faces beside it split) or a needle (a vertex doubled at the same point, joined by two
+// faces of zero area).
+std::string with_zero_area_faces(const test::TempDir &dir, const std::string &name, bool cap) {
+  std::vector<std::array<double, 3>> positions;
+  std::vector<std::array<int, 3>> triangles;
+  arrays_of(test::data_path(name), positions, triangles);
+  const auto [a, b, c] = triangles[0];
+  const int added = int(positions.size());
+  std::array<double, 3> point = positions[size_t(a)];
+  if (cap)
+    for (int k = 0; k < 3; ++k)
+      point[size_t(k)] = (positions[size_t(a)][size_t(k)] + positions[size_t(b)][size_t(k)]) / 2;
+  positions.push_back(point);
+  if (cap) { // (a, m, c), (m, b, c) and the cap (a, b, m) against the face across a-b
+    triangles[0] = {a, added, c};
+    triangles.push_back({added, b, c});
+    triangles.push_back({a, b, added});
+  } else { // a doubled: (n, b, c), (a, n, c); across a-b: (b, n, o), (n, a, o)
+    triangles[0] = {added, b, c};
+    triangles.push_back({a, added, c});
+    for (size_t f = 1; f + 1 < triangles.size(); ++f)
+      for (int k = 0; k < 3; ++k)
+        if (triangles[f][size_t(k)] == b && triangles[f][size_t((k + 1) % 3)] == a) {
+          const int o = triangles[f][size_t((k + 2) % 3)];
+          triangles[f] = {b, added, o};
+          triangles.push_back({added, a, o});
+          f = triangles.size();
+          break;
+        }
+  }
+  return dir.write(name + (cap ? ".cap.off" : ".needle.off"), test::off_text(positions, triangles));
+}
+
+TEST(WrittenMaps, ZeroAreaFacesAreKept) {
+  // Mapped without them, written with them: every input vertex and face is in the files, no
+  // face of positive area is folded, and the zero-area faces' images have (near) zero area.
+  test::TempDir dir;
+  for (const auto &[name, genus] : std::vector<std::pair<std::string, int>>{
+           {"sphere.off", 0}, {"torus.off", 1}, {"eight.off", 2}})
+    for (bool cap : {true, false}) {
+      const std::string input = with_zero_area_faces(dir, name, cap);
+      const std::string label = input.substr(input.rfind('/') + 1);
+      const test::RunResult r = run_cli({"param", input, "-o", dir.path(label + ".uv.ply"),
+                                         "--sphere", dir.path(label + ".sphere.ply"), "--report",
+                                         dir.path(label + ".json"), "--quiet"});
+      ASSERT_EQ(r.exit_code, 0) << label << ": " << r.err;
+      Mesh original;
+      test::load(input, original);
+      const test::WrittenMap map =
+          test::read_written_map(dir.path(label + ".sphere.ply"), 2 - 2 * genus);
+      EXPECT_EQ(map.vertices, original.VN()) << label;
+      EXPECT_EQ(map.faces, original.FN()) << label;
+      EXPECT_EQ(map.degree, genus == 0 ? 1 : 2) << label;
+      std::set<int> flat;
+      for (int f = 0; f < original.FN(); ++f)
+        if (has_zero_area(original.face[size_t(f)])) flat.insert(f);
+      EXPECT_EQ(flat.size(), cap ? 1u : 2u) << label;
+      for (int f : map.folded_faces)
+        EXPECT_TRUE(flat.count(f)) << label << ": face " << f << " of positive area is folded";
+      for (int f : flat) {
+        const auto &t = map.triangles[size_t(f)];
+        Eigen::Vector3d p[3];
+        for (int k = 0; k < 3; ++k)
+          p[k] = Eigen::Vector3d(map.sphere[size_t(t[size_t(k)])][0],
+                                 map.sphere[size_t(t[size_t(k)])][1],
+                                 map.sphere[size_t(t[size_t(k)])][2]);
+        // Near a great circle (spherically flat): the distance of the third corner from the plane
+        // of the other two and the centre, against the longest side, within what the map's angle
+        // error on these coarse meshes (up to 10 degrees) allows.
+        double longest = 0;
+        for (int k = 0; k < 3; ++k)
+          longest = std::max(longest, (p[(k + 1) % 3] - p[k]).norm());
+        const double off_circle =
+            std::abs(p[0].dot(p[1].cross(p[2]))) / std::max(1e-300, longest * longest);
+        EXPECT_LT(off_circle, 0.1)
+            << label << ": the image of zero-area face " << f << " is not flat";
+      }
+      std::ifstream report_stream(dir.path(label + ".json"));
+      const nlohmann::json report = nlohmann::json::parse(report_stream);
+      EXPECT_TRUE(report["valid"].get<bool>()) << label;
+      expect_reported_branching(report, map, label);
+      const auto texture = test::read_vertex_columns(dir.path(label + ".uv.ply"));
+      EXPECT_EQ(texture.at("texture_u").size(), size_t(original.VN())) << label;
+    }
 }
 
 } // namespace

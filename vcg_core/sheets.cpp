@@ -13,6 +13,8 @@ namespace {
 
 using Vector = Eigen::Vector3d;
 
+constexpr double unsure_edge_length = 1e-6;
+
 // Is x on the minor great-circle arc from a to b?
 bool on_arc(const Vector &x, const Vector &a, const Vector &b) {
   const Vector n = a.cross(b);
@@ -142,7 +144,14 @@ Sheets label_with_cuts(const Mesh &mesh, const MeshEdges &edges, const std::vect
       crossing[e] = crossing[e] ||
                     arcs_cross(sphere[i], sphere[j], nodes[size_t(arc[0])], nodes[size_t(arc[1])]);
   }
+  // Edges whose image is too short for the crossing test to be sure of its side (where long thin
+  // parts crowd, cross products of such nearby points are mostly rounding) are cut too, so that a
+  // sheet cannot leak into another through them.
   std::vector<char> edge_cut = crossing;
+  for (size_t e = 0; e < edges.vertices.size(); ++e)
+    if ((sphere[size_t(edges.vertices[e][0])] - sphere[size_t(edges.vertices[e][1])]).norm() <
+        unsure_edge_length)
+      edge_cut[e] = 1;
   for (int f = 0; f < face_count; ++f) {
     bool at_branch = false;
     for (int k = 0; k < 3; ++k)

@@ -6,8 +6,9 @@
 //      preimage falls into d sheets; the shortest tree cuts the fewest faces). Faces are joined
 //      across edges whose image crosses no cut into components, the d largest being the sheets.
 //      Faces at a branch vertex, faces whose image holds a branch value and folded faces are set
-//      apart, as are edges from a vertex whose image lies on a cut; they join the sheet they
-//      continue across an uncut edge, or else any neighbour's. Per face and per vertex a layer
+//      apart, as are edges from a vertex whose image lies on a cut and edges whose image is
+//      shorter than 1e-6 (too short to tell which side of a cut they are on); they join the sheet
+//      they continue across an uncut edge, or else any neighbour's. Per face and per vertex a layer
 //      0..d-1, and the signed area of each layer over 4 pi (about 1 when each layer covers the
 //      sphere once). Where the tree's layers do not each cover the sphere within 2% (a sheet in
 //      two pieces, seen with nearly equal branch values), stars from the six directions

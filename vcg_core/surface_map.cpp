@@ -14,6 +14,7 @@
 #include "unit_scale.h"
 #include "validation.h"
 #include "wording.h"
+#include "zero_area_faces.h"
 
 namespace meromorph {
 namespace {
@@ -24,6 +25,7 @@ const Finding *finding_left(const Validation &validation, bool close_holes) {
   const Finding *left = nullptr;
   for (const Finding &finding : validation.findings) {
     if (finding.kind == FindingKind::several_components ||
+        finding.kind == FindingKind::zero_area_faces ||
         (close_holes && finding.kind == FindingKind::boundary_loops))
       continue;
     if (!finding.repairable) return &finding;
@@ -204,6 +206,76 @@ Parameterization parameterize_parts(const Mesh &mesh, const Validation &validati
   return out;
 }
 
+// `map`, computed on the mesh without its zero-area faces, on `whole`'s vertices and faces: a
+// merged vertex takes the values of the vertex it was merged into; a face that was collapsed or
+// flipped takes its corners' texture coordinates (unwrapped across the seam) and its first
+// corner's layer. Distortion stays measured on the faces computed on.
+void with_zero_area_faces(const Mesh &whole, const ZeroAreaFix &fix,
+                          const ParameterizeOptions &options, Parameterization &map) {
+  const size_t vertex_count = whole.vert.size(), face_count = whole.face.size();
+  std::vector<int> representative(map.sphere.size(), -1); // per work vertex: a whole vertex
+  for (size_t v = 0; v < vertex_count; ++v)
+    if (representative[size_t(fix.vertex_in_work[v])] < 0)
+      representative[size_t(fix.vertex_in_work[v])] = int(v);
+  auto expand = [&](auto &values, auto blank) {
+    auto old = std::move(values);
+    values.assign(vertex_count, blank);
+    if (old.empty()) return;
+    for (size_t v = 0; v < vertex_count; ++v)
+      values[v] = old[size_t(fix.vertex_in_work[v])];
+  };
+  expand(map.sphere, Eigen::Vector3d());
+  expand(map.layered, Eigen::Vector3d());
+  expand(map.uv.vertex, std::array<double, 2>{});
+  expand(map.sheets.vertex_layer, 0);
+  if (!map.vertex_component.empty()) expand(map.vertex_component, 0);
+  std::vector<int> branch_flag = std::move(map.branch_flag);
+  map.branch_flag.assign(vertex_count, 0);
+  for (size_t w = 0; w < representative.size(); ++w)
+    if (representative[w] >= 0) map.branch_flag[size_t(representative[w])] = branch_flag[w];
+  auto to_whole = [&](int &vertex) {
+    if (vertex >= 0) vertex = representative[size_t(vertex)];
+  };
+  for (BranchPoint &b : map.branch_points)
+    to_whole(b.vertex);
+  for (Parameterization &part : map.components)
+    for (BranchPoint &b : part.branch_points)
+      to_whole(b.vertex);
+  for (ClosedHoleReport &hole : map.holes_closed)
+    to_whole(hole.vertex);
+  to_whole(map.origin_vertex);
+
+  auto wedge = std::move(map.uv.wedge);
+  auto around_pole = std::move(map.uv.around_pole);
+  auto face_layer = std::move(map.sheets.face_layer);
+  map.uv.wedge.resize(face_count);
+  map.uv.around_pole.assign(face_count, 0);
+  map.sheets.face_layer.assign(face_count, 0);
+  for (size_t f = 0; f < face_count; ++f) {
+    const int in_work = fix.face_in_work[f];
+    if (in_work >= 0) {
+      map.uv.wedge[f] = wedge[size_t(in_work)];
+      map.uv.around_pole[f] = around_pole[size_t(in_work)];
+      map.sheets.face_layer[f] = face_layer[size_t(in_work)];
+      continue;
+    }
+    const MeshFace &face = whole.face[f];
+    for (int k = 0; k < 3; ++k) {
+      auto uv = map.uv.vertex[size_t(index_of(whole, face.cV(k)))];
+      if (options.uv == UvKind::spherical && k > 0) // beside the first corner across the seam
+        uv[0] += std::round(map.uv.wedge[f][0][0] - uv[0]);
+      map.uv.wedge[f][size_t(k)] = uv;
+    }
+    map.sheets.face_layer[f] = map.sheets.vertex_layer[size_t(index_of(whole, face.cV(0)))];
+  }
+  if (map.puncture_face >= 0)
+    for (size_t f = 0; f < face_count; ++f)
+      if (fix.face_in_work[f] == map.puncture_face) {
+        map.puncture_face = int(f);
+        break;
+      }
+}
+
 } // namespace
 
 Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptions &options,
@@ -222,7 +294,7 @@ Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptio
     split_spots = split_nonmanifold(input, split_mesh);
     validation = validate_mesh(split_mesh);
   }
-  const Mesh &mesh = nonmanifold && options.split_nonmanifold ? split_mesh : input;
+  const Mesh &whole = nonmanifold && options.split_nonmanifold ? split_mesh : input;
   if (const Finding *left = finding_left(validation, options.close_holes)) {
     std::string message = left->message;
     if (left->kind == FindingKind::boundary_loops)
@@ -236,8 +308,31 @@ Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptio
                  "MeshLab and Blender: Split Non-Manifold Spots)";
     throw InputError(message);
   }
+  // Zero-area faces taken out of the computation (they are kept in the outputs).
+  Mesh flat_free;
+  ZeroAreaFix flat_fix;
+  const bool flat = validation.find(FindingKind::zero_area_faces) != nullptr;
+  if (flat) {
+    flat_fix = take_out_zero_area_faces(whole, flat_free);
+    validation = validate_mesh(flat_free);
+    if (const Finding *left = finding_left(validation, options.close_holes))
+      throw InputError(left->message + " (after zero-area faces were taken out)");
+    if (const Finding *still = validation.find(FindingKind::zero_area_faces))
+      throw InputError(still->message);
+  }
+  const Mesh &mesh = flat ? flat_free : whole;
   Parameterization out = validation.ok() ? parameterize(mesh, options, progress, &validation)
                                          : parameterize_parts(mesh, validation, options, progress);
+  if (flat) {
+    with_zero_area_faces(whole, flat_fix, options, out);
+    out.notes.push_back(
+        plural(flat_fix.zero_area_faces.size(), "face has", "faces have") +
+        " zero area: taken out of the computation (" +
+        plural(size_t(flat_fix.collapsed_edges), "edge", "edges") + " collapsed, " +
+        plural(size_t(flat_fix.flipped_edges), "edge", "edges") +
+        " flipped) and kept in the outputs, with their corners' texture coordinates; their "
+        "images on the sphere have zero area too");
+  }
   if (nonmanifold && options.split_nonmanifold) {
     out.nonmanifold_split = {split_spots.split_vertices, split_spots.split_edges,
                              split_spots.added_vertices};

@@ -71,12 +71,17 @@ bool repeats_a_vertex(const MeshFace &face) {
 }
 
 bool has_zero_area(const MeshFace &face) {
+  return has_zero_area(face.cP(0), face.cP(1), face.cP(2));
+}
+
+bool has_zero_area(const Point3 &p0, const Point3 &p1, const Point3 &p2) {
   // Edge vectors halved against overflow and scaled by a power of two to unit size, so neither
   // the squares of huge coordinates overflow nor those of tiny ones underflow.
+  const Point3 corner[3] = {p0, p1, p2};
   Point3 edge[3];
   double largest = 0;
   for (int k = 0; k < 3; ++k) {
-    edge[k] = face.cP((k + 1) % 3) / 2 - face.cP(k) / 2;
+    edge[k] = corner[(k + 1) % 3] / 2 - corner[k] / 2;
     for (int i = 0; i < 3; ++i)
       largest = std::max(largest, std::abs(edge[k][i]));
   }

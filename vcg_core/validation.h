@@ -74,6 +74,7 @@ bool repeats_a_vertex(const MeshFace &face);
 // A face whose area is at most zero_area_tolerance times its longest edge squared (scale-safe:
 // computed on edge vectors brought to unit size).
 bool has_zero_area(const MeshFace &face);
+bool has_zero_area(const Point3 &p0, const Point3 &p1, const Point3 &p2);
 
 Validation validate_mesh(const Mesh &mesh);
 
