@@ -163,11 +163,11 @@ void check_faces(const Mesh &mesh, Validation &out) {
   }
   if (!flat.faces.empty()) {
     flat.message = plural(flat.faces.size(), "face has", "faces have") +
-                   " zero area (their corners are collinear or coincide): faces " +
+                   " zero area (corners on a line or at one point): faces " +
                    list_indices(flat.faces) +
-                   "; collapse them (Blender: Mesh > Clean Up > Degenerate Dissolve; MeshLab: "
-                   "Filters > Remeshing, Simplification and Reconstruction > Remeshing: "
-                   "Isotropic Explicit Remeshing)";
+                   "; meromorph param takes them out of the computation and keeps them in its "
+                   "outputs (to remove them: Blender: Mesh > Clean Up > Degenerate Dissolve; "
+                   "MeshLab: Filters > Cleaning and Repairing > Remove Zero Area Faces)";
     out.findings.push_back(flat);
   }
 
