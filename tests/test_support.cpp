@@ -90,6 +90,17 @@ std::string off_text(const std::vector<std::array<double, 3>> &positions,
   return text.str();
 }
 
+void arrays_of(const std::string &file, std::vector<std::array<double, 3>> &positions,
+               std::vector<std::array<int, 3>> &triangles) {
+  Mesh mesh;
+  load(file, mesh);
+  for (const MeshVertex &v : mesh.vert)
+    positions.push_back({v.cP()[0], v.cP()[1], v.cP()[2]});
+  for (const MeshFace &f : mesh.face)
+    triangles.push_back(
+        {index_of(mesh, f.cV(0)), index_of(mesh, f.cV(1)), index_of(mesh, f.cV(2))});
+}
+
 std::string cubes_sharing_an_edge_off() {
   // Unit cubes at the origin and at (1, 1, 0): they share the edge x = y = 1.
   std::vector<std::array<double, 3>> positions;

@@ -44,6 +44,10 @@ void load_ply_attributes(const std::string &path, Mesh &mesh);
 std::string off_text(const std::vector<std::array<double, 3>> &positions,
                      const std::vector<std::array<int, 3>> &triangles);
 
+// The vertex positions and triangles of a mesh file (read as `load` does).
+void arrays_of(const std::string &file, std::vector<std::array<double, 3>> &positions,
+               std::vector<std::array<int, 3>> &triangles);
+
 // Two unit cubes (12 triangles each, counter-clockwise from outside) sharing the edge
 // x = y = 1: a non-manifold edge of four faces, as OFF text.
 std::string cubes_sharing_an_edge_off();

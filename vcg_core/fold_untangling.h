@@ -6,7 +6,11 @@
 //      can turn over under the Moebius centring, which bends straight edges into circles; such a
 //      fold is not a fold of the conformal map. Each folded face away from the fixed vertices has
 //      one of its corners moved to the normalized mean of its one-ring's images, if that leaves
-//      fewer folded faces around it. Returns how many vertices were moved (reported to the user).
+//      fewer folded faces around it. A face still folded then (an obtuse corner on a noisy mesh,
+//      next to a branch vertex too) has the region within 1 to 5 rings of it re-embedded in the
+//      gnomonic chart at its centre by mean-value weights of the surface (Floater), the region's
+//      rim and the fixed vertices kept, if no face of the region is folded afterwards. Returns
+//      how many vertices or regions were moved (reported to the user).
 #pragma once
 
 #include <vector>
