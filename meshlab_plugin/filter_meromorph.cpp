@@ -69,6 +69,10 @@ void FilterMeromorphPlugin::initParameterSet(QAction *, MeshModel &,
       "origin", -1, "Genus 1: pole vertex",
       "For a torus: the vertex where the map has its double pole (it goes to the north pole). "
       "-1 picks the first vertex whose corners are all acute."));
+  parameters.addParam(RichInt(
+      "poleFace", -1, "Genus 0: pole face",
+      "For a sphere-like mesh: the face mapped around the north pole. -1 picks a well-shaped "
+      "face of about median area."));
   parameters.addParam(RichInt("formI", -1, "Genus >= 2: first form",
                               "For genus 2 or more the map is (psi_i + psi_j) / (psi_i - psi_j) "
                               "for two normalized holomorphic 1-forms: this is i (0 .. g-1). "
@@ -115,8 +119,8 @@ struct ProgressBridge {
 
 int report_progress(double fraction, const char *stage, void *user) {
   ProgressBridge *bridge = static_cast<ProgressBridge *>(user);
-  if (bridge->callback) bridge->callback(int(100 * fraction), stage);
-  return 1;
+  // MeshLab's callback returns false to stop (MeshLab 2020.09's own never does).
+  return !bridge->callback || bridge->callback(int(100 * fraction), stage) ? 1 : 0;
 }
 
 } // namespace
@@ -154,6 +158,7 @@ bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
   options.uv_kind = parameters.getEnum("uvKind");
   options.mobius = parameters.getBool("mobius") ? 1 : 0;
   options.origin_vertex = parameters.getInt("origin");
+  options.pole_face = parameters.getInt("poleFace");
   options.form_pair[0] = parameters.getInt("formI");
   options.form_pair[1] = parameters.getInt("formJ");
   options.layer_gap = parameters.getFloat("layerGap");

@@ -196,7 +196,7 @@ TEST(MeshLabPlugin, FilterIsListedWithItsParameters) {
   const std::string section = dump.substr(at, dump.find("\\section", at + 1) - at);
   for (const char *label :
        {"Texture coordinates", "Moebius normalization", "Genus 1: pole vertex",
-        "Genus >= 2: first form", "Genus >= 2: second form",
+        "Genus 0: pole face", "Genus >= 2: first form", "Genus >= 2: second form",
         "Seam-correct wedge texture coordinates", "Create the layered sphere", "Layer gap",
         "Close holes", "Split non-manifold spots", "Pack the parts' texture coordinates"})
     EXPECT_NE(section.find(label), std::string::npos) << label;

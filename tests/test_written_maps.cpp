@@ -51,7 +51,8 @@ void expect_reported_branching(const nlohmann::json &report, const test::Written
     // Where non-manifold spots were split, the sphere file has its own numbering.
     const int vertex = b.value("sphere_vertex", b["vertex"].get<int>());
     reported.insert(vertex);
-    EXPECT_EQ(b["ramification"], map.local_degree[size_t(vertex)]) << name;
+    EXPECT_EQ(b["local_degree"], map.local_degree[size_t(vertex)]) << name;
+    EXPECT_EQ(b["ramification"], b["local_degree"]) << name << ": the old key, kept one release";
   }
   EXPECT_EQ(reported, std::set<int>(map.branch_vertices.begin(), map.branch_vertices.end()))
       << name;

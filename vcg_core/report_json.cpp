@@ -76,7 +76,8 @@ nlohmann::json parameterization_json(const Parameterization &map) {
     branch_points.push_back({{"vertex", b.vertex},
                              {"position", vector_json(b.position)},
                              {"sphere", vector_json(b.sphere)},
-                             {"ramification", b.local_degree}});
+                             {"local_degree", b.local_degree},
+                             {"ramification", b.local_degree}}); // the old name, for one release
     if (b.sphere_vertex >= 0) branch_points.back()["sphere_vertex"] = b.sphere_vertex;
   }
   nlohmann::json timings = nlohmann::json::object();

@@ -94,7 +94,7 @@ def load():
     return _library
 
 
-def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
+def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1, pole_face=-1,
                  form_pair=(-1, -1), layer_gap=0.0, close_holes=False, split_nonmanifold=False,
                  pack_uv=False, progress=None):
     lib = load()
@@ -105,6 +105,7 @@ def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
     options.uv_kind = uv_kind
     options.mobius = 1 if mobius else 0
     options.origin_vertex = origin_vertex
+    options.pole_face = pole_face
     options.form_pair[0], options.form_pair[1] = form_pair
     options.layer_gap = layer_gap
     options.close_holes = 1 if close_holes else 0

@@ -52,6 +52,9 @@ class MESH_OT_conformal_sphere_map(bpy.types.Operator):
                          description="Centre the map so the area spreads evenly over the sphere")
     origin: IntProperty(name="Genus 1 Pole Vertex", default=-1, min=-1,
                         description="Torus: the vertex at the double pole (-1: automatic)")
+    pole_face: IntProperty(name="Genus 0 Pole Face", default=-1, min=-1,
+                           description="Sphere-like meshes: the triangle (of the mesh's loop "
+                                       "triangles) mapped around the north pole (-1: automatic)")
     form_i: IntProperty(name="Form i", default=-1, min=-1,
                         description="Genus 2 or more: the map is (psi_i + psi_j) / (psi_i - psi_j); "
                                     "-1 and -1: a generic pair mixing all forms")
@@ -114,7 +117,7 @@ class MESH_OT_conformal_sphere_map(bpy.types.Operator):
         try:
             result = library.parameterize(
                 positions, triangles, uv_kind=0 if self.uv_kind == "SPHERICAL" else 1,
-                mobius=self.mobius, origin_vertex=self.origin,
+                mobius=self.mobius, origin_vertex=self.origin, pole_face=self.pole_face,
                 form_pair=(self.form_i, self.form_j), layer_gap=self.layer_gap,
                 close_holes=self.close_holes, split_nonmanifold=self.split_nonmanifold,
                 pack_uv=self.pack_uv and self.uv_kind == "SPHERICAL", progress=progress)
