@@ -96,19 +96,28 @@ TEST(MeshLabPlugin, TorusAndGenusTwoMatchTheCommandLine) {
   expect_same_as_cli(meshlab, test::data_path("eight.off"), 6);
 }
 
+// The example script with one text replaced (it must be there), written as `name` beside the
+// MeshLab copy; returns its path.
+std::string script_with(const MeshLab &meshlab, const std::string &name, const std::string &from,
+                        const std::string &to) {
+  std::ifstream script_stream(script);
+  std::stringstream script_text;
+  script_text << script_stream.rdbuf();
+  std::string text = script_text.str();
+  const size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  std::ofstream(meshlab.path(name)) << text;
+  return meshlab.path(name);
+}
+
 TEST(MeshLabPlugin, HolesAreClosedForTheComputationOrRefused) {
   const MeshLab meshlab;
   std::string log;
   // Close holes off: refused, with the reason in the log, nothing written.
-  std::ifstream script_stream(script);
-  std::stringstream script_text;
-  script_text << script_stream.rdbuf();
-  std::string refusing = script_text.str();
-  const std::string on = "value=\"true\" name=\"closeHoles\"";
-  ASSERT_NE(refusing.find(on), std::string::npos);
-  refusing.replace(refusing.find(on), on.size(), "value=\"false\" name=\"closeHoles\"");
-  const std::string refusing_script = meshlab.path("refusing.mlx");
-  std::ofstream(refusing_script) << refusing;
+  const std::string refusing_script =
+      script_with(meshlab, "refusing.mlx", "value=\"true\" name=\"closeHoles\"",
+                  "value=\"false\" name=\"closeHoles\"");
   EXPECT_NE(meshlab.run("-i " + test::data_path("eight.hole.off") + " -o " + meshlab.path("x.ply") +
                             " -s " + refusing_script,
                         log),
@@ -139,17 +148,14 @@ TEST(MeshLabPlugin, NonManifoldSpotsAreSplitForTheComputation) {
   const std::string input = meshlab.path("cubes.off");
   std::ofstream(input) << test::cubes_sharing_an_edge_off();
   // With the layered sphere: a second layer, with copies of the shared edge's two vertices.
-  std::ifstream script_stream(script);
-  std::stringstream script_text;
-  script_text << script_stream.rdbuf();
-  std::string with_sphere = script_text.str();
-  const std::string off = "value=\"false\" name=\"layeredSphere\"";
-  ASSERT_NE(with_sphere.find(off), std::string::npos);
-  with_sphere.replace(with_sphere.find(off), off.size(), "value=\"true\" name=\"layeredSphere\"");
-  const std::string sphere_script = meshlab.path("sphere.mlx");
-  std::ofstream(sphere_script) << with_sphere;
+  const std::string sphere_script =
+      script_with(meshlab, "sphere.mlx", "value=\"false\" name=\"layeredSphere\"",
+                  "value=\"true\" name=\"layeredSphere\"");
   // Then MeshLab's own "Delete Current Mesh", so the layered sphere is what gets saved.
-  std::string sphere_only = with_sphere;
+  std::ifstream sphere_stream(sphere_script);
+  std::stringstream sphere_text;
+  sphere_text << sphere_stream.rdbuf();
+  std::string sphere_only = sphere_text.str();
   sphere_only.replace(sphere_only.find("</FilterScript>"), 15,
                       " <filter name=\"Delete Current Mesh\"/>\n</FilterScript>");
   const std::string sphere_only_script = meshlab.path("sphere_only.mlx");
