@@ -15,26 +15,6 @@
 namespace meromorph {
 namespace {
 
-// Ring distance from `sources` of every vertex at most `radius` rings away.
-std::map<int, int> ring_distances(const FaceIncidence &in, const std::vector<int> &sources,
-                                  int radius) {
-  std::map<int, int> distance;
-  std::queue<int> queue;
-  for (int v : sources) {
-    distance[v] = 0;
-    queue.push(v);
-  }
-  while (!queue.empty()) {
-    const int v = queue.front();
-    queue.pop();
-    if (distance[v] >= radius) continue;
-    for (int f : in.faces_of_vertex[v])
-      for (int w : in.corners[f])
-        if (distance.emplace(w, distance[v] + 1).second) queue.push(w);
-  }
-  return distance;
-}
-
 // A conformal coordinate on `region` (a disc): the integral of a holomorphic 1-form from
 // `origin` along edges (path independent there: the form is closed).
 std::map<int, Complex> integrated_coordinate(const MeshEdges &edges,

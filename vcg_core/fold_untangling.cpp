@@ -24,27 +24,6 @@ double mean_value_weight(const Mesh &mesh, const std::array<int, 3> &face, int i
   return std::tan(angle / 2);
 }
 
-// The vertices within `rings + 1` rings of `seeds`, with their ring distance.
-std::map<int, int> rings_around(const FaceIncidence &incidence, const std::vector<int> &seeds,
-                                int rings) {
-  std::map<int, int> ring_of;
-  std::vector<int> frontier = seeds;
-  for (int v : frontier)
-    ring_of[v] = 0;
-  for (int r = 1; r <= rings + 1; ++r) {
-    std::vector<int> next;
-    for (int v : frontier)
-      for (int g : incidence.faces_of_vertex[size_t(v)])
-        for (int w : incidence.corners[size_t(g)])
-          if (!ring_of.count(w)) {
-            ring_of[w] = r;
-            next.push_back(w);
-          }
-    frontier = std::move(next);
-  }
-  return ring_of;
-}
-
 // Re-embeds the region within `rings` rings of `seeds` in the gnomonic chart at `centre` (which
 // maps great circles to lines, so a face's orientation on the sphere is its orientation there):
 // its free vertices (not fixed, not on the rim) go to the mean-value-weighted mean of their
@@ -56,7 +35,7 @@ bool reembed(const Mesh &mesh, const FaceIncidence &incidence, const std::vector
              const Eigen::Vector3d &centre) {
   const auto &corners = incidence.corners;
   const auto &faces_of = incidence.faces_of_vertex;
-  const std::map<int, int> ring_of = rings_around(incidence, seeds, rings);
+  const std::map<int, int> ring_of = ring_distances(incidence, seeds, rings + 1);
   auto is_free = [&](int v) {
     const auto at = ring_of.find(v);
     return at != ring_of.end() && at->second <= rings && !is_fixed[size_t(v)];

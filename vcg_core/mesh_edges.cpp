@@ -1,6 +1,7 @@
 #include "mesh_edges.h"
 
 #include <algorithm>
+#include <queue>
 #include <unordered_map>
 
 #include "errors.h"
@@ -63,6 +64,25 @@ FaceIncidence face_incidence(const Mesh &mesh) {
       in.faces_of_vertex[in.corners[f][k]].push_back(int(f));
     }
   return in;
+}
+
+std::map<int, int> ring_distances(const FaceIncidence &in, const std::vector<int> &sources,
+                                  int radius) {
+  std::map<int, int> distance;
+  std::queue<int> queue;
+  for (int v : sources) {
+    distance[v] = 0;
+    queue.push(v);
+  }
+  while (!queue.empty()) {
+    const int v = queue.front();
+    queue.pop();
+    if (distance[v] >= radius) continue;
+    for (int f : in.faces_of_vertex[v])
+      for (int w : in.corners[f])
+        if (distance.emplace(w, distance[v] + 1).second) queue.push(w);
+  }
+  return distance;
 }
 
 } // namespace meromorph

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <map>
 #include <vector>
 
 #include "mesh.h"
@@ -36,5 +37,9 @@ struct FaceIncidence {
 };
 
 FaceIncidence face_incidence(const Mesh &mesh);
+
+// The ring distance from `sources` of every vertex at most `radius` rings away.
+std::map<int, int> ring_distances(const FaceIncidence &in, const std::vector<int> &sources,
+                                  int radius);
 
 } // namespace meromorph
