@@ -305,6 +305,25 @@ int snap_branch_points(const Mesh &mesh, const MeshEdges &edges,
                 best = doubled;
                 best_change = replaced;
               }
+              // And the rings beyond re-embedded between the new star and the rest, where the
+              // moved one-ring folds the faces next to it.
+              for (int rings = 2; rings <= 3 && std::get<0>(best) > 0; ++rings) {
+                const auto around = reembed_around_branch(mesh, in, sphere, v, rings);
+                if (!around) continue;
+                std::vector<std::pair<int, Eigen::Vector3d>> kept;
+                for (const auto &[w, point] : *around) {
+                  kept.push_back({w, sphere[w]});
+                  sphere[w] = point;
+                }
+                const Score wider = score_region(v);
+                if (wider < best) {
+                  best = wider;
+                  best_change = replaced;
+                  best_change.insert(best_change.end(), around->begin(), around->end());
+                }
+                for (const auto &[w, point] : kept)
+                  sphere[w] = point;
+              }
             }
             for (const auto &[w, point] : original)
               sphere[w] = point;

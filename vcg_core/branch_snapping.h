@@ -11,7 +11,9 @@
 //      the values become Q(z + p - z_v) (v gets the critical value c), fading to the measured
 //      values over the next rings. Where doubling v's corners would reach 180 degrees (obtuse
 //      stars), a variant also re-places v's one-ring around c: each neighbour keeps its distance,
-//      its direction follows the doubled corners capped at 170 degrees. Of the vertices nearest p
+//      its direction follows the doubled corners capped at 170 degrees, and, where that folds the
+//      faces beyond the star, with the next one or two rings re-embedded about the critical value
+//      (branch_star.h). Of the vertices nearest p
 //      and these variants, the one that leaves the fewest folded or flat faces wins, if that
 //      improves on leaving the spot alone. A spot holding two critical points is fitted by a cubic
 //      and one of its critical points is placed per pass. A spot whose windings
