@@ -118,11 +118,13 @@ TEST(WrittenMaps, SharedMeshes) {
 TEST(WrittenMaps, NoisyMeshesMapValidly) {
   // Shared meshes with Gaussian noise of 0.2 mean edge lengths on every vertex (obtuse corners
   // everywhere, as scans have). The kitten: a face beside a branch vertex folds until its region
-  // is re-embedded (fold_untangling.h). The eight: every vertex near one critical point has a
-  // corner above 100 degrees, so the star placed there folds the faces beyond it until they are
-  // re-embedded about the branch value (branch_star.h). Judged from the written files.
+  // is re-embedded (fold_untangling.h); the torus: until the rings around that branch vertex's
+  // star are re-embedded about its value (branch_star.h). The eight: every vertex near one critical
+  // point has a corner above 100 degrees, so the star placed there folds the faces beyond it until
+  // they are re-embedded about the branch value (branch_star.h). Judged from the written files.
   test::TempDir dir;
   expect_valid_written_map(dir, test::data_path("kitten.nf20k.noisy.off"), 1);
+  expect_valid_written_map(dir, test::data_path("torus.noisy.off"), 1);
   expect_valid_written_map(dir, test::data_path("eight.noisy.off"), 2);
 }
 

@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include "branch_star.h"
 #include "floater_embedding.h"
 #include "mesh_edges.h"
 #include "sphere_geometry.h"
@@ -119,11 +120,27 @@ int untangle_folds(const Mesh &mesh, std::vector<Eigen::Vector3d> &sphere,
     for (int v : seeds)
       mean += sphere[size_t(v)];
     if (!(mean.norm() > 0)) continue;
-    for (int rings = 1; rings <= largest_ring; ++rings)
-      if (reembed(mesh, incidence, is_fixed, sphere, seeds, rings, mean.normalized())) {
-        ++moved;
-        break;
-      }
+    bool done = false;
+    for (int rings = 1; rings <= largest_ring && !done; ++rings)
+      done = reembed(mesh, incidence, is_fixed, sphere, seeds, rings, mean.normalized());
+    // Beside a branch vertex: the rings around its star re-embedded about its value.
+    for (const auto &[b, d] : ring_distances(incidence, seeds, 2))
+      for (int rings = 2; rings <= largest_ring && !done && is_fixed[size_t(b)]; ++rings)
+        if (const auto around = reembed_around_branch(mesh, incidence, sphere, b, rings)) {
+          std::vector<std::pair<int, Eigen::Vector3d>> before;
+          for (const auto &[w, point] : *around) {
+            before.push_back({w, sphere[size_t(w)]});
+            sphere[size_t(w)] = point;
+          }
+          done = true;
+          for (const auto &[w, point] : *around)
+            for (int g : incidence.faces_of_vertex[size_t(w)])
+              done = done && !folded(g);
+          if (!done)
+            for (const auto &[w, point] : before)
+              sphere[size_t(w)] = point;
+        }
+    moved += done;
   }
   return moved;
 }

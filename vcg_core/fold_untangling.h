@@ -9,7 +9,9 @@
 //      fewer folded faces around it. A face still folded then (an obtuse corner on a noisy mesh,
 //      next to a branch vertex too) has the region within 1 to 5 rings of it re-embedded in the
 //      gnomonic chart at its centre by mean-value weights of the surface (Floater), the region's
-//      rim and the fixed vertices kept, if no face of the region is folded afterwards. Returns
+//      rim and the fixed vertices kept, if no face of the region is folded afterwards; beside a
+//      branch vertex, else, the rings around its star re-embedded about its value
+//      (branch_star.h), if that unfolds them. Returns
 //      how many vertices or regions were moved (reported to the user).
 #pragma once
 
