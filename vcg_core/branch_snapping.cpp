@@ -266,11 +266,16 @@ int snap_branch_points(const Mesh &mesh, const MeshEdges &edges,
                   w == v ? c : chart_at(centre, sphere[w]) + model(z[w] + t * shift) - model(z[w]);
               change.push_back({w, from_chart(centre, value)});
             }
-            for (const auto &[w, point] : change) {
-              original.push_back({w, sphere[w]});
-              sphere[w] = point;
-            }
-            const Score score = score_region(v);
+            // Moves applied (what they replace saved), the spot scored.
+            auto score_moved = [&](const std::vector<std::pair<int, Eigen::Vector3d>> &moves,
+                                   std::vector<std::pair<int, Eigen::Vector3d>> &saved) {
+              for (const auto &[w, point] : moves) {
+                saved.push_back({w, sphere[w]});
+                sphere[w] = point;
+              }
+              return score_region(v);
+            };
+            const Score score = score_moved(change, original);
             if (score < best) {
               best = score;
               best_change = change;
@@ -311,11 +316,7 @@ int snap_branch_points(const Mesh &mesh, const MeshEdges &edges,
                 const auto around = reembed_around_branch(mesh, in, sphere, v, rings);
                 if (!around) continue;
                 std::vector<std::pair<int, Eigen::Vector3d>> kept;
-                for (const auto &[w, point] : *around) {
-                  kept.push_back({w, sphere[w]});
-                  sphere[w] = point;
-                }
-                const Score wider = score_region(v);
+                const Score wider = score_moved(*around, kept);
                 if (wider < best) {
                   best = wider;
                   best_change = replaced;
