@@ -422,38 +422,14 @@ std::string torus_with_a_fin(const test::TempDir &dir) {
   return dir.write("torus_with_a_fin.off", test::off_text(positions, triangles));
 }
 
-TEST(WrittenMaps, NonManifoldSpotsTakenApart) {
-  test::TempDir dir;
-  expect_valid_parts_map(dir, cubes_sharing_an_edge(dir), {"--split-nonmanifold"},
-                         {{0, false}, {0, false}}, true);
-  expect_valid_parts_map(dir, spheres_touching_at_a_vertex(dir), {"--split-nonmanifold"},
-                         {{0, false}, {0, false}}, true);
-  // The fin comes off the torus as a part of its own with a hole (its three edges; closed by a
-  // fan, it covers about half of its sphere).
-  expect_valid_parts_map(dir, torus_with_a_fin(dir), {"--split-nonmanifold", "--close-holes"},
-                         {{1, false}, {0, true, 0.75}}, true);
-  std::ifstream report_stream(dir.path("torus_with_a_fin.off.json"));
-  const nlohmann::json report = nlohmann::json::parse(report_stream);
-  EXPECT_EQ(report["nonmanifold_split"]["edges"].size(), 1u);
-  EXPECT_EQ(report["nonmanifold_split"]["vertices"].size(), 2u);
-  // Without the option each is refused, naming the spot and the option; the files stay unwritten.
-  for (const std::string &input : {cubes_sharing_an_edge(dir), spheres_touching_at_a_vertex(dir)}) {
-    const test::RunResult refused =
-        run_cli({"param", input, "-o", dir.path("refused.ply"), "--quiet"});
-    EXPECT_EQ(refused.exit_code, 3);
-    EXPECT_NE(refused.err.find("--split-nonmanifold"), std::string::npos) << refused.err;
-    EXPECT_NE(refused.err.find("non-manifold"), std::string::npos) << refused.err;
-    EXPECT_FALSE(std::ifstream(dir.path("refused.ply")).good());
-  }
-}
-
-// A copy of a shared mesh with a zero-area face: a cap (the midpoint of an edge joined to its
+// A copy of a mesh file with a zero-area face: a cap (the midpoint of an edge joined to its
 // ends, the faces beside it split) or a needle (a vertex doubled at the same point, joined by two
 // faces of zero area).
-std::string with_zero_area_faces(const test::TempDir &dir, const std::string &name, bool cap) {
+std::string with_zero_area_faces(const test::TempDir &dir, const std::string &path, bool cap) {
   std::vector<std::array<double, 3>> positions;
   std::vector<std::array<int, 3>> triangles;
-  test::arrays_of(test::data_path(name), positions, triangles);
+  test::arrays_of(path, positions, triangles);
+  const std::string name = path.substr(path.rfind('/') + 1);
   const auto [a, b, c] = triangles[0];
   const int added = int(positions.size());
   std::array<double, 3> point = positions[size_t(a)];
@@ -481,6 +457,51 @@ std::string with_zero_area_faces(const test::TempDir &dir, const std::string &na
   return dir.write(name + (cap ? ".cap.off" : ".needle.off"), test::off_text(positions, triangles));
 }
 
+TEST(WrittenMaps, NonManifoldSpotsTakenApart) {
+  test::TempDir dir;
+  expect_valid_parts_map(dir, cubes_sharing_an_edge(dir), {"--split-nonmanifold"},
+                         {{0, false}, {0, false}}, true);
+  expect_valid_parts_map(dir, spheres_touching_at_a_vertex(dir), {"--split-nonmanifold"},
+                         {{0, false}, {0, false}}, true);
+  // Split and with zero-area faces taken out: the sphere file still has the input's faces, in
+  // order, on the split vertices (the zero-area faces' own images are flat: see
+  // ZeroAreaFacesAreKept).
+  for (bool cap : {true, false}) {
+    const std::string input = with_zero_area_faces(dir, spheres_touching_at_a_vertex(dir), cap);
+    const test::RunResult r =
+        run_cli({"param", input, "-o", dir.path("both.ply"), "--sphere",
+                 dir.path("both.sphere.ply"), "--split-nonmanifold", "--quiet"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const test::WrittenMap map = test::read_written_map(dir.path("both.sphere.ply"), 0, 2.5);
+    Mesh original;
+    test::load(input, original);
+    ASSERT_EQ(map.faces, original.FN());
+    EXPECT_GT(map.vertices, original.VN());
+    for (int f = 0; f < map.faces; ++f)
+      for (int k = 0; k < 3; ++k)
+        ASSERT_EQ(map.source_vertex[size_t(map.triangles[size_t(f)][size_t(k)])],
+                  index_of(original, original.face[size_t(f)].cV(k)))
+            << "cap " << cap << ": face " << f;
+  }
+  // The fin comes off the torus as a part of its own with a hole (its three edges; closed by a
+  // fan, it covers about half of its sphere).
+  expect_valid_parts_map(dir, torus_with_a_fin(dir), {"--split-nonmanifold", "--close-holes"},
+                         {{1, false}, {0, true, 0.75}}, true);
+  std::ifstream report_stream(dir.path("torus_with_a_fin.off.json"));
+  const nlohmann::json report = nlohmann::json::parse(report_stream);
+  EXPECT_EQ(report["nonmanifold_split"]["edges"].size(), 1u);
+  EXPECT_EQ(report["nonmanifold_split"]["vertices"].size(), 2u);
+  // Without the option each is refused, naming the spot and the option; the files stay unwritten.
+  for (const std::string &input : {cubes_sharing_an_edge(dir), spheres_touching_at_a_vertex(dir)}) {
+    const test::RunResult refused =
+        run_cli({"param", input, "-o", dir.path("refused.ply"), "--quiet"});
+    EXPECT_EQ(refused.exit_code, 3);
+    EXPECT_NE(refused.err.find("--split-nonmanifold"), std::string::npos) << refused.err;
+    EXPECT_NE(refused.err.find("non-manifold"), std::string::npos) << refused.err;
+    EXPECT_FALSE(std::ifstream(dir.path("refused.ply")).good());
+  }
+}
+
 TEST(WrittenMaps, ZeroAreaFacesAreKept) {
   // Mapped without them, written with them: every input vertex and face is in the files, no
   // face of positive area is folded, and the zero-area faces' images have (near) zero area.
@@ -488,7 +509,7 @@ TEST(WrittenMaps, ZeroAreaFacesAreKept) {
   for (const auto &[name, genus] : std::vector<std::pair<std::string, int>>{
            {"sphere.off", 0}, {"torus.off", 1}, {"eight.off", 2}})
     for (bool cap : {true, false}) {
-      const std::string input = with_zero_area_faces(dir, name, cap);
+      const std::string input = with_zero_area_faces(dir, test::data_path(name), cap);
       const std::string label = input.substr(input.rfind('/') + 1);
       const test::RunResult r = run_cli({"param", input, "-o", dir.path(label + ".uv.ply"),
                                          "--sphere", dir.path(label + ".sphere.ply"), "--report",

@@ -288,13 +288,14 @@ Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptio
   // Non-manifold spots taken apart first: what is left is judged on the split mesh.
   const bool nonmanifold = validation.find(FindingKind::non_manifold_edges) ||
                            validation.find(FindingKind::non_manifold_vertices);
+  const bool split = nonmanifold && options.split_nonmanifold;
   Mesh split_mesh;
   NonmanifoldSplit split_spots;
-  if (nonmanifold && options.split_nonmanifold) {
+  if (split) {
     split_spots = split_nonmanifold(input, split_mesh);
     validation = validate_mesh(split_mesh);
   }
-  const Mesh &whole = nonmanifold && options.split_nonmanifold ? split_mesh : input;
+  const Mesh &whole = split ? split_mesh : input;
   if (const Finding *left = finding_left(validation, options.close_holes)) {
     std::string message = left->message;
     if (left->kind == FindingKind::boundary_loops)
@@ -321,6 +322,14 @@ Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptio
       throw InputError(still->message);
   }
   const Mesh &mesh = flat ? flat_free : whole;
+  // The split copies sit on their originals by construction: of the notes, only the input's own.
+  if (split)
+    validation.notes.erase(std::remove_if(validation.notes.begin(), validation.notes.end(),
+                                          [&](const std::string &note) {
+                                            return std::count(input_notes.begin(),
+                                                              input_notes.end(), note) == 0;
+                                          }),
+                           validation.notes.end());
   Parameterization out = validation.ok() ? parameterize(mesh, options, progress, &validation)
                                          : parameterize_parts(mesh, validation, options, progress);
   if (flat) {
@@ -333,20 +342,11 @@ Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptio
         " flipped) and kept in the outputs, with their corners' texture coordinates; their "
         "images on the sphere have zero area too");
   }
-  if (nonmanifold && options.split_nonmanifold) {
+  if (split) {
     out.nonmanifold_split = {split_spots.split_vertices, split_spots.split_edges,
                              split_spots.added_vertices};
     out.sphere_source_vertex = split_spots.source_vertex;
-    out.sphere_faces = arrays_from_mesh(mesh).triangles;
-    // The copies sit on their originals by construction: only the input's own notes stay.
-    const std::vector<std::string> split_notes = validation.notes;
-    out.notes.erase(
-        std::remove_if(out.notes.begin(), out.notes.end(),
-                       [&](const std::string &note) {
-                         return std::count(split_notes.begin(), split_notes.end(), note) > 0 &&
-                                std::count(input_notes.begin(), input_notes.end(), note) == 0;
-                       }),
-        out.notes.end());
+    out.sphere_faces = arrays_from_mesh(whole).triangles; // the per-vertex arrays are whole's
     out.notes.push_back(
         "non-manifold spots taken apart for the computation: " +
         std::to_string(split_spots.split_vertices.size()) + " vertices split into " +
