@@ -37,16 +37,16 @@ bool repeats_vertex(const std::array<int, 3> &t) {
   return t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
 }
 
-Eigen::Vector3d to_eigen(const Point3 &p) {
-  return {p[0], p[1], p[2]};
+Eigen::Vector3d position(const MeshArrays &mesh, int v) {
+  return mesh.positions[size_t(v)].ToEigenVector<Eigen::Vector3d>();
 }
 
 // Around one edge with more than two faces: for each face, the face it is glued to (-1: none).
 std::vector<int> partners_around_edge(const MeshArrays &mesh, const std::vector<EdgeUse> &uses) {
   const size_t n = uses.size();
   std::vector<int> partner(n, -1);
-  const Eigen::Vector3d a = to_eigen(mesh.positions[size_t(uses[0].low)]);
-  Eigen::Vector3d axis = to_eigen(mesh.positions[size_t(uses[0].high)]) - a;
+  const Eigen::Vector3d a = position(mesh, uses[0].low);
+  Eigen::Vector3d axis = position(mesh, uses[0].high) - a;
   if (!(axis.norm() > 0)) return partner;
   axis.normalize();
   const Eigen::Vector3d u1 = axis.unitOrthogonal(), u2 = axis.cross(u1);
@@ -54,11 +54,9 @@ std::vector<int> partners_around_edge(const MeshArrays &mesh, const std::vector<
   std::vector<int> turn(n); // +1: the face's back (inside) is towards increasing angle
   for (size_t i = 0; i < n; ++i) {
     const auto &t = mesh.triangles[size_t(uses[i].face)];
-    const Eigen::Vector3d p0 = to_eigen(mesh.positions[size_t(t[0])]),
-                          p1 = to_eigen(mesh.positions[size_t(t[1])]),
-                          p2 = to_eigen(mesh.positions[size_t(t[2])]);
-    const int third = t[size_t((uses[i].from + 2) % 3)];
-    const Eigen::Vector3d d = to_eigen(mesh.positions[size_t(third)]) - a;
+    const Eigen::Vector3d p0 = position(mesh, t[0]), p1 = position(mesh, t[1]),
+                          p2 = position(mesh, t[2]);
+    const Eigen::Vector3d d = position(mesh, t[size_t((uses[i].from + 2) % 3)]) - a;
     const Eigen::Vector3d normal = (p1 - p0).cross(p2 - p0);
     const double side = axis.cross(d).dot(normal);
     if (!(std::abs(side) > 0)) return partner; // a flat or degenerate face: leave all apart
@@ -76,8 +74,7 @@ std::vector<int> partners_around_edge(const MeshArrays &mesh, const std::vector<
   };
   for (size_t i = 0; i < n; ++i) {
     const size_t j = neighbour(i);
-    const bool opposite_directions = mesh.triangles[size_t(uses[i].face)][size_t(uses[i].from)] !=
-                                     mesh.triangles[size_t(uses[j].face)][size_t(uses[j].from)];
+    const bool opposite_directions = uses[i].from_vertex(mesh) != uses[j].from_vertex(mesh);
     if (j != i && neighbour(j) == i && opposite_directions) partner[i] = int(j);
   }
   return partner;

@@ -83,15 +83,12 @@ ZeroAreaFix take_out_zero_area_faces(const Mesh &input, Mesh &work_mesh) {
       const std::array<int, 3> t = w.mesh.triangles[f];
       if (!w.alive[f] || touched[size_t(t[0])] || touched[size_t(t[1])] || touched[size_t(t[2])])
         continue;
-      int shortest = 0, longest = 0;
-      for (int k = 1; k < 3; ++k) {
-        const double l = length(w, t[size_t(k)], t[size_t((k + 1) % 3)]);
-        if (l < length(w, t[size_t(shortest)], t[size_t((shortest + 1) % 3)])) shortest = k;
-        if (l > length(w, t[size_t(longest)], t[size_t((longest + 1) % 3)])) longest = k;
-      }
-      const double short_length = length(w, t[size_t(shortest)], t[size_t((shortest + 1) % 3)]),
-                   long_length = length(w, t[size_t(longest)], t[size_t((longest + 1) % 3)]);
-      if (short_length <= needle_ratio * long_length) {
+      std::array<double, 3> side; // side k joins corners k and k + 1
+      for (int k = 0; k < 3; ++k)
+        side[size_t(k)] = length(w, t[size_t(k)], t[size_t((k + 1) % 3)]);
+      const int shortest = int(std::min_element(side.begin(), side.end()) - side.begin()),
+                longest = int(std::max_element(side.begin(), side.end()) - side.begin());
+      if (side[size_t(shortest)] <= needle_ratio * side[size_t(longest)]) {
         // Collapse: the vertices next to both ends must be the edge's two opposite corners only.
         const int a = t[size_t(shortest)], b = t[size_t((shortest + 1) % 3)];
         const int keep = std::min(a, b), gone = std::max(a, b);
