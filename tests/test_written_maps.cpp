@@ -491,6 +491,13 @@ TEST(WrittenMaps, NonManifoldSpotsTakenApart) {
   const nlohmann::json report = nlohmann::json::parse(report_stream);
   EXPECT_EQ(report["nonmanifold_split"]["edges"].size(), 1u);
   EXPECT_EQ(report["nonmanifold_split"]["vertices"].size(), 2u);
+  // The fin taken off without --close-holes: refused, naming the option, and the hole's vertex,
+  // a copy the split made, is said to be one.
+  const test::RunResult open_fin = run_cli({"param", torus_with_a_fin(dir), "-o",
+                                            dir.path("fin.ply"), "--split-nonmanifold", "--quiet"});
+  EXPECT_EQ(open_fin.exit_code, 3);
+  EXPECT_NE(open_fin.err.find("--close-holes"), std::string::npos) << open_fin.err;
+  EXPECT_NE(open_fin.err.find("is a copy of"), std::string::npos) << open_fin.err;
   // Without the option each is refused, naming the spot and the option; the files stay unwritten.
   for (const std::string &input : {cubes_sharing_an_edge(dir), spheres_touching_at_a_vertex(dir)}) {
     const test::RunResult refused =

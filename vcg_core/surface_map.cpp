@@ -307,6 +307,15 @@ Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptio
         left->kind == FindingKind::non_manifold_vertices)
       message += "; or let meromorph take them apart for the computation (--split-nonmanifold; "
                  "MeshLab and Blender: Split Non-Manifold Spots)";
+    // The split mesh numbers its copies after the input's vertices: say whose they are.
+    std::string copies;
+    for (int v : left->vertices)
+      if (split && size_t(v) >= input.vert.size())
+        copies += (copies.empty() ? "" : ", ") + std::to_string(v) + " is a copy of " +
+                  std::to_string(split_spots.source_vertex[size_t(v)]);
+    if (!copies.empty())
+      message += " (vertices from " + std::to_string(input.vert.size()) +
+                 " on are copies made where non-manifold spots were split: " + copies + ")";
     throw InputError(message);
   }
   // Zero-area faces taken out of the computation (they are kept in the outputs).
