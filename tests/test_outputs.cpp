@@ -99,9 +99,9 @@ TEST(Outputs, AllOrNothing) {
 
 TEST(Outputs, AnInvalidMapWritesNothing) {
   TempDir dir;
-  // Limbs 16 times longer than thick: their images shrink below what doubles resolve.
+  // Limbs 20 times longer than thick: their images shrink below what doubles resolve.
   const test::RunResult made = run_cli(
-      {"make", "blob", "--hole", "--tentacles", "4", "--length", "4", "-o", dir.path("g3.ply")});
+      {"make", "blob", "--hole", "--tentacles", "4", "--length", "5.8", "-o", dir.path("g3.ply")});
   ASSERT_EQ(made.exit_code, 0) << made.err;
   const test::RunResult refused =
       run_cli({"param", dir.path("g3.ply"), "-o", dir.path("out.ply"), "--report",

@@ -153,8 +153,9 @@ TEST(Parameterization, ChosenFormPair) {
 }
 
 TEST(Parameterization, GenusZeroWithLongThinPartsFoldsNothing) {
-  // Tentacles of radius 0.12 reaching 2.6 (about 6.7 times longer than thick; peers fold dozens
-  // of faces here) and 4.0 (12.5 times: their tips shrink to about 1e-14 on the sphere).
+  // Tentacles of radius 0.12 out of a ball of radius 1, reaching 2.6 (7.2 times longer than
+  // thick, from the ball's surface; peers fold dozens of faces here) and 4.0 (13 times: their
+  // tips shrink to about 1e-14 on the sphere).
   struct Case {
     int tentacles;
     double length;
@@ -172,23 +173,34 @@ TEST(Parameterization, GenusZeroWithLongThinPartsFoldsNothing) {
 }
 
 TEST(Parameterization, GenusOneWithLongLimbsIsMappedOrRefusedWithTheCause) {
-  // A ball with a hole and four limbs of radius 0.12: reaching 2 (about 8 times longer than
-  // thick) the map is valid; reaching 4 (about 16 times) the limbs' images shrink below what
-  // doubles resolve, and the map is refused, saying so, instead of written broken: exit code 3
-  // and nothing written, unless asked to keep it.
-  Mesh mesh;
-  make_tentacle_blob(mesh, 4, 2.0, 30, true);
-  const Parameterization map = parameterize(mesh);
-  expect_valid_map(mesh, map, 2, "limbs of length 2");
-  EXPECT_TRUE(map.valid);
+  // A ball of radius 1 with a hole and four limbs of radius 0.12 (lengths below: from the ball's
+  // surface to the tip, over the diameter): reaching 4.4 (14.7 times longer than thick, as long
+  // as genus 0 maps, test above) the map is valid; reaching 5.8 (20 times) the limbs' tips shrink
+  // to about e^-40 of the body, which no point on the sphere in doubles resolves, and the map is
+  // refused, saying so, instead of written broken: exit code 3 and nothing written, unless asked
+  // to keep it.
+  for (const double length : {2.0, 4.4}) {
+    Mesh mesh;
+    make_tentacle_blob(mesh, 4, length, 30, true);
+    const Parameterization map = parameterize(mesh);
+    const std::string name = "limbs of length " + std::to_string(length);
+    expect_valid_map(mesh, map, 2, name);
+    EXPECT_TRUE(map.valid) << name;
+    // The double pole sits where the flat metric is largest: never on a limb.
+    const Point3 &origin = mesh.vert[size_t(map.origin_vertex)].cP();
+    EXPECT_LT(origin.Norm(), 1.2) << name;
+  }
 
   test::TempDir dir;
-  const test::RunResult made = test::run_cli(
-      {"make", "blob", "--hole", "--tentacles", "4", "--length", "4", "-o", dir.path("limbs.ply")});
+  const test::RunResult made = test::run_cli({"make", "blob", "--hole", "--tentacles", "4",
+                                              "--length", "5.8", "-o", dir.path("limbs.ply")});
   ASSERT_EQ(made.exit_code, 0) << made.err;
   const test::RunResult refused =
       test::run_cli({"param", dir.path("limbs.ply"), "-o", dir.path("limbs.uv.ply"), "--quiet"});
   EXPECT_EQ(refused.exit_code, 3) << refused.err;
+  EXPECT_NE(refused.err.find("faces shrink below what double precision resolves"),
+            std::string::npos)
+      << refused.err;
   EXPECT_NE(refused.err.find("no valid map on this triangulation"), std::string::npos)
       << refused.err;
   EXPECT_NE(refused.err.find("smaller than double precision resolves"), std::string::npos)

@@ -154,6 +154,25 @@ std::vector<double> widest_flat_corners(const Mesh &mesh, const MeshEdges &edges
   return widest;
 }
 
+std::vector<double> flat_area_ratios(const Mesh &mesh, const MeshEdges &edges,
+                                     const Eigen::VectorXcd &psi) {
+  std::vector<double> flat(mesh.vert.size(), 0.0), surface(mesh.vert.size(), 0.0);
+  for (size_t f = 0; f < mesh.face.size(); ++f) {
+    const Complex first = double(edges.face_signs[f][0]) * psi[edges.face_edges[f][0]];
+    const Complex second = double(edges.face_signs[f][1]) * psi[edges.face_edges[f][1]];
+    const MeshFace &face = mesh.face[f];
+    const double surface_area = ((face.cP(1) - face.cP(0)) ^ (face.cP(2) - face.cP(0))).Norm() / 2;
+    for (int k = 0; k < 3; ++k) {
+      const size_t v = size_t(index_of(mesh, face.cV(k)));
+      flat[v] += std::abs(std::imag(std::conj(first) * second)) / 2;
+      surface[v] += surface_area;
+    }
+  }
+  for (size_t v = 0; v < flat.size(); ++v)
+    flat[v] = surface[v] > 0 ? flat[v] / surface[v] : 0.0;
+  return flat;
+}
+
 Genus1Placement place_half_period_branch_points(const Mesh &mesh, const FaceIncidence &in,
                                                 const Genus1Map &map, const Mobius &centring,
                                                 std::vector<PlaneValue> &values) {

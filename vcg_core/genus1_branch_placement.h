@@ -39,4 +39,9 @@ Genus1Placement place_half_period_branch_points(const Mesh &mesh, const FaceInci
 std::vector<double> widest_flat_corners(const Mesh &mesh, const MeshEdges &edges,
                                         const Eigen::VectorXcd &psi);
 
+// Per vertex: the flat area of its star over its surface area (the square of the conformal
+// scale there; a long thin part's is exponentially small).
+std::vector<double> flat_area_ratios(const Mesh &mesh, const MeshEdges &edges,
+                                     const Eigen::VectorXcd &psi);
+
 } // namespace meromorph

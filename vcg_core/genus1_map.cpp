@@ -14,14 +14,19 @@ namespace meromorph {
 Genus1Map genus1_map(const Mesh &mesh, const MeshEdges &edges, const Eigen::VectorXcd &psi,
                      Complex period_a, Complex period_b, int origin_vertex) {
   const int vertex_count = int(mesh.vert.size());
-  // The double pole doubles the corners at the origin: they must be well below 90 degrees.
+  // The double pole doubles the corners at the origin: they must be well below 90 degrees. And
+  // the pole's neighbourhood covers a large part of the sphere: it goes where the flat metric is
+  // largest (on a long thin part, whose flat image is exponentially small, the rest of the
+  // surface would crowd into a spot that doubles do not resolve).
   if (origin_vertex < 0) {
     const std::vector<double> widest = widest_flat_corners(mesh, edges, psi);
+    const std::vector<double> scale = flat_area_ratios(mesh, edges, psi);
     origin_vertex = int(std::min_element(widest.begin(), widest.end()) - widest.begin());
+    double best_scale = -1;
     for (int v = 0; v < vertex_count; ++v)
-      if (widest[size_t(v)] < 80 * M_PI / 180) {
+      if (widest[size_t(v)] < 80 * M_PI / 180 && scale[size_t(v)] > best_scale) {
+        best_scale = scale[size_t(v)];
         origin_vertex = v;
-        break;
       }
   }
   if (origin_vertex >= vertex_count)

@@ -2,14 +2,15 @@
 //
 // In:  a closed genus-1 mesh, its edges, the normalized holomorphic form psi (per edge) with its
 //      periods (A-period 1, B-period tau), and the origin vertex (where z = 0: a double pole; -1:
-//      the first vertex whose corners are all acute).
+//      automatic, see below).
 // Out: z per vertex by integrating psi along a breadth-first tree from the origin (defined up to
 //      the lattice), F = P(z) per vertex (single-valued: P is doubly periodic) as a sphere point,
 //      the P-function object, and the four branch values: P at the three half periods and infinity.
 //      A piecewise-linear map branches only at vertices: the origin is a vertex, and
-//      genus1_branch_placement.h puts the three others on vertices. The automatic origin is the
-//      first vertex whose corners in the flat coordinate are all below 80 degrees (the double pole
-//      doubles them), else the vertex whose widest corner is narrowest.
+//      genus1_branch_placement.h puts the three others on vertices. The automatic origin is,
+//      of the vertices whose corners in the flat coordinate are all below 80 degrees (the double
+//      pole doubles them), the one where the flat metric is largest against the surface's (never
+//      on a long thin part); else the vertex whose widest corner is narrowest.
 #pragma once
 
 #include <array>

@@ -18,6 +18,7 @@
 #include "genus1_map.h"
 #include "holomorphic_pipeline.h"
 #include "unit_scale.h"
+#include "wording.h"
 
 namespace meromorph {
 namespace {
@@ -52,6 +53,12 @@ std::vector<std::string> invalid_reasons(const ParameterizeOptions &options,
                           ? "1 face is turned over (face " + list_indices(folded) + ")"
                           : std::to_string(folded.size()) + " faces are turned over (faces " +
                                 list_indices(folded) + ")");
+  // Where faces shrink below what doubles resolve, that is the cause of the rest: said first.
+  const size_t collapsed = map.quality.collapsed_face_indices.size();
+  if (!reasons.empty() && collapsed > 0)
+    reasons.insert(reasons.begin(), plural(collapsed, "face shrinks", "faces shrink") +
+                                        " below what double precision resolves (long "
+                                        "thin parts: see below)");
   return reasons;
 }
 
