@@ -422,26 +422,47 @@ std::string torus_with_a_fin(const test::TempDir &dir) {
   return dir.write("torus_with_a_fin.off", test::off_text(positions, triangles));
 }
 
-// A copy of a mesh file with a zero-area face: a cap (the midpoint of an edge joined to its
-// ends, the faces beside it split) or a needle (a vertex doubled at the same point, joined by two
+// Zero-area faces as meshes have them: a cap at a T-junction (the midpoint of an edge joined to
+// its ends, the face beside it split in two), a cap in a fan (the midpoint joined to two points
+// inside the face beside it as well), a needle (a vertex doubled at the same point, joined by two
 // faces of zero area).
-std::string with_zero_area_faces(const test::TempDir &dir, const std::string &path, bool cap) {
+enum class ZeroArea { cap, cap_in_a_fan, needle };
+
+const char *zero_area_name(ZeroArea kind) {
+  return kind == ZeroArea::cap ? "cap" : kind == ZeroArea::cap_in_a_fan ? "fan" : "needle";
+}
+
+// A copy of a mesh file with one zero-area face of the kind (two for a needle), at its first face.
+std::string with_zero_area_faces(const test::TempDir &dir, const std::string &path, ZeroArea kind) {
   std::vector<std::array<double, 3>> positions;
   std::vector<std::array<int, 3>> triangles;
   test::arrays_of(path, positions, triangles);
   const std::string name = path.substr(path.rfind('/') + 1);
   const auto [a, b, c] = triangles[0];
   const int added = int(positions.size());
-  std::array<double, 3> point = positions[size_t(a)];
-  if (cap)
-    for (int k = 0; k < 3; ++k)
-      point[size_t(k)] = (positions[size_t(a)][size_t(k)] + positions[size_t(b)][size_t(k)]) / 2;
-  positions.push_back(point);
-  if (cap) { // (a, m, c), (m, b, c) and the cap (a, b, m) against the face across a-b
+  auto mean = [&](std::initializer_list<int> of) {
+    std::array<double, 3> point{0, 0, 0};
+    for (int v : of)
+      for (int k = 0; k < 3; ++k)
+        point[size_t(k)] += positions[size_t(v)][size_t(k)] / double(of.size());
+    return point;
+  };
+  if (kind == ZeroArea::cap) { // (a, m, c), (m, b, c) and the cap (a, b, m) against the face
+    positions.push_back(mean({a, b}));
     triangles[0] = {a, added, c};
     triangles.push_back({added, b, c});
     triangles.push_back({a, b, added});
+  } else if (kind == ZeroArea::cap_in_a_fan) { // m joined to e1, e2 inside (a, b, c) too
+    positions.push_back(mean({a, b}));
+    const int m = added, e1 = added + 1, e2 = added + 2;
+    positions.push_back(mean({a, m, c}));
+    positions.push_back(mean({m, b, c}));
+    triangles[0] = {a, m, e1};
+    for (const std::array<int, 3> &t : std::vector<std::array<int, 3>>{
+             {m, e2, e1}, {m, b, e2}, {b, c, e2}, {e2, c, e1}, {e1, c, a}, {a, b, m}})
+      triangles.push_back(t);
   } else { // a doubled: (n, b, c), (a, n, c); across a-b: (b, n, o), (n, a, o)
+    positions.push_back(positions[size_t(a)]);
     triangles[0] = {added, b, c};
     triangles.push_back({a, added, c});
     for (size_t f = 1; f + 1 < triangles.size(); ++f)
@@ -454,7 +475,8 @@ std::string with_zero_area_faces(const test::TempDir &dir, const std::string &pa
           break;
         }
   }
-  return dir.write(name + (cap ? ".cap.off" : ".needle.off"), test::off_text(positions, triangles));
+  return dir.write(name + "." + zero_area_name(kind) + ".off",
+                   test::off_text(positions, triangles));
 }
 
 TEST(WrittenMaps, NonManifoldSpotsTakenApart) {
@@ -466,8 +488,8 @@ TEST(WrittenMaps, NonManifoldSpotsTakenApart) {
   // Split and with zero-area faces taken out: the sphere file still has the input's faces, in
   // order, on the split vertices (the zero-area faces' own images are flat: see
   // ZeroAreaFacesAreKept).
-  for (bool cap : {true, false}) {
-    const std::string input = with_zero_area_faces(dir, spheres_touching_at_a_vertex(dir), cap);
+  for (ZeroArea kind : {ZeroArea::cap, ZeroArea::needle}) {
+    const std::string input = with_zero_area_faces(dir, spheres_touching_at_a_vertex(dir), kind);
     const test::RunResult r =
         run_cli({"param", input, "-o", dir.path("both.ply"), "--sphere",
                  dir.path("both.sphere.ply"), "--split-nonmanifold", "--quiet"});
@@ -481,7 +503,7 @@ TEST(WrittenMaps, NonManifoldSpotsTakenApart) {
       for (int k = 0; k < 3; ++k)
         ASSERT_EQ(map.source_vertex[size_t(map.triangles[size_t(f)][size_t(k)])],
                   index_of(original, original.face[size_t(f)].cV(k)))
-            << "cap " << cap << ": face " << f;
+            << zero_area_name(kind) << ": face " << f;
   }
   // The fin comes off the torus as a part of its own with a hole (its three edges; closed by a
   // fan, it covers about half of its sphere).
@@ -510,13 +532,15 @@ TEST(WrittenMaps, NonManifoldSpotsTakenApart) {
 }
 
 TEST(WrittenMaps, ZeroAreaFacesAreKept) {
-  // Mapped without them, written with them: every input vertex and face is in the files, no
-  // face of positive area is folded, and the zero-area faces' images have (near) zero area.
+  // Mapped without them, written with them: every input vertex and face is in the files, and no
+  // face is folded, the zero-area ones included: their images are thin but turned the right way
+  // (a needle's doubled vertex and a cap's middle one moved a little off their neighbours), so
+  // every vertex's one-ring winds once around it at least.
   test::TempDir dir;
   for (const auto &[name, genus] : std::vector<std::pair<std::string, int>>{
            {"sphere.off", 0}, {"torus.off", 1}, {"eight.off", 2}})
-    for (bool cap : {true, false}) {
-      const std::string input = with_zero_area_faces(dir, test::data_path(name), cap);
+    for (ZeroArea kind : {ZeroArea::cap, ZeroArea::cap_in_a_fan, ZeroArea::needle}) {
+      const std::string input = with_zero_area_faces(dir, test::data_path(name), kind);
       const std::string label = input.substr(input.rfind('/') + 1);
       const test::RunResult r = run_cli({"param", input, "-o", dir.path(label + ".uv.ply"),
                                          "--sphere", dir.path(label + ".sphere.ply"), "--report",
@@ -532,9 +556,13 @@ TEST(WrittenMaps, ZeroAreaFacesAreKept) {
       std::set<int> flat;
       for (int f = 0; f < original.FN(); ++f)
         if (has_zero_area(original.face[size_t(f)])) flat.insert(f);
-      EXPECT_EQ(flat.size(), cap ? 1u : 2u) << label;
-      for (int f : map.folded_faces)
-        EXPECT_TRUE(flat.count(f)) << label << ": face " << f << " of positive area is folded";
+      EXPECT_EQ(flat.size(), kind == ZeroArea::needle ? 2u : 1u) << label;
+      EXPECT_TRUE(map.folded_faces.empty())
+          << label << ": " << map.folded_faces.size() << " folded, the first "
+          << map.folded_faces.front()
+          << (flat.count(map.folded_faces.front()) ? " (zero area)" : "");
+      for (int v = 0; v < map.vertices; ++v)
+        EXPECT_GE(map.local_degree[size_t(v)], 1) << label << ": vertex " << v;
       for (int f : flat) {
         const auto &t = map.triangles[size_t(f)];
         Eigen::Vector3d p[3];

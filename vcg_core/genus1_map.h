@@ -7,10 +7,10 @@
 //      the lattice), F = P(z) per vertex (single-valued: P is doubly periodic) as a sphere point,
 //      the P-function object, and the four branch values: P at the three half periods and infinity.
 //      A piecewise-linear map branches only at vertices: the origin is a vertex, and
-//      genus1_branch_placement.h puts the three others on vertices. The automatic origin is,
-//      of the vertices whose corners in the flat coordinate are all below 80 degrees (the double
-//      pole doubles them), the one where the flat metric is largest against the surface's (never
-//      on a long thin part); else the vertex whose widest corner is narrowest.
+//      genus1_branch_placement.h puts the three others on vertices. The automatic origin is
+//      where the flat metric is large (never on a long thin part) and the origin and the three
+//      half periods from it fall at or near vertices with narrow corners (the branching doubles
+//      them): see genus1_map.cpp.
 #pragma once
 
 #include <array>
@@ -32,6 +32,11 @@ struct Genus1Map {
   std::array<PlaneValue, 4> branch_values;
   int origin_vertex = -1;
 };
+
+// Vertices where the double pole may go, best first (at most 8; see genus1_map.cpp).
+std::vector<int> genus1_origin_candidates(const Mesh &mesh, const MeshEdges &edges,
+                                          const Eigen::VectorXcd &psi,
+                                          const WeierstrassP &p_function);
 
 Genus1Map genus1_map(const Mesh &mesh, const MeshEdges &edges, const Eigen::VectorXcd &psi,
                      Complex period_a, Complex period_b, int origin_vertex);

@@ -1,6 +1,7 @@
 #include "parameterization.h"
 
 #include <chrono>
+#include <functional>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -96,6 +97,81 @@ std::string invalid_map_advice(const Mesh &input, const Mesh &mesh,
   return join_phrases(causes);
 }
 
+// Faces whose written image is turned over (sphere_geometry.h).
+int folded_face_count(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere) {
+  int count = 0;
+  for (const MeshFace &face : mesh.face)
+    count += folded_image(sphere[size_t(index_of(mesh, face.cV(0)))],
+                          sphere[size_t(index_of(mesh, face.cV(1)))],
+                          sphere[size_t(index_of(mesh, face.cV(2)))]);
+  return count;
+}
+
+// The map as it will be written, and how it got there.
+struct WrittenSphere {
+  std::vector<Eigen::Vector3d> sphere;
+  MobiusCentering mobius;
+  bool mobius_applied = false;
+  int snapped_branch_points = 0, untangled_vertices = 0;
+  Branching branching;
+  int origin_vertex = -1; // genus 1
+};
+
+// From the meromorphic function's values to the map as written: centred (genus 0 and 1; genus >= 2
+// comes centred with its pair), genus 1's half periods put on vertices, folds untangled, centred
+// once more where vertices moved, and its branching measured.
+void finish_on_sphere(const Mesh &mesh, const ParameterizeOptions &options,
+                      const std::vector<double> &areas, const Genus1Map *torus_map, int euler,
+                      std::vector<PlaneValue> values, WrittenSphere &out, const Progress &progress,
+                      const std::function<void(const std::string &)> &lap) {
+  if (options.mobius && euler >= 0) { // genus 0 and 1
+    progress.report(0.7, "Moebius normalisation");
+    out.mobius = center_on_sphere(values, areas);
+    out.mobius_applied = true;
+    lap("mobius");
+  }
+  if (torus_map) {
+    // A piecewise-linear map branches only at vertices: the half periods go onto vertices,
+    // decided on the centred map as it will be written (genus1_branch_placement.h).
+    const Genus1Placement placed = place_half_period_branch_points(
+        mesh, face_incidence(mesh), *torus_map, out.mobius.transformation, values);
+    out.snapped_branch_points =
+        int(std::count(placed.fold_free.begin(), placed.fold_free.end(), true));
+    lap("branch_placement");
+  }
+  out.sphere.reserve(values.size());
+  for (const PlaneValue &value : values)
+    out.sphere.push_back(to_sphere(value));
+
+  progress.report(0.8, "branch points and layers");
+  // Everything below is measured on the map as written: vertex values, linear on each face.
+  out.branching = analyse_branching(mesh, out.sphere, euler);
+  out.untangled_vertices = untangle_folds(mesh, out.sphere, out.branching.branch_vertices);
+  if (options.mobius && (out.untangled_vertices || out.snapped_branch_points)) {
+    // The vertices moved above shift the centroid a little: centre once more.
+    for (size_t v = 0; v < values.size(); ++v)
+      if (!values[v].infinite && (to_sphere(values[v]) - out.sphere[v]).norm() > 1e-15)
+        values[v] = to_plane_value(out.sphere[v]);
+    const MobiusCentering again = center_on_sphere(values, areas);
+    out.mobius.transformation = again.transformation.after(out.mobius.transformation);
+    out.mobius.centroid_after = again.centroid_after;
+    out.mobius.steps += again.steps;
+    for (size_t v = 0; v < values.size(); ++v)
+      out.sphere[v] = to_sphere(values[v]);
+  }
+  if (out.untangled_vertices || options.mobius)
+    out.branching = analyse_branching(mesh, out.sphere, euler);
+}
+
+void adopt(WrittenSphere &&written, Parameterization &out, Branching &branching) {
+  out.sphere = std::move(written.sphere);
+  out.mobius = written.mobius;
+  out.mobius_applied = written.mobius_applied;
+  out.snapped_branch_points = written.snapped_branch_points;
+  out.untangled_vertices = written.untangled_vertices;
+  if (written.origin_vertex >= 0) out.origin_vertex = written.origin_vertex;
+  branching = std::move(written.branching);
+}
 } // namespace
 
 Parameterization parameterize(const Mesh &input, const ParameterizeOptions &options,
@@ -129,7 +205,7 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
 
   progress.report(0.6, "meromorphic function");
   std::vector<PlaneValue> values;
-  std::optional<Genus1Map> torus_map; // genus 1
+  std::vector<int> origins; // genus 1: where the double pole may go, best first
 
   if (out.genus == 0) {
     // The plain cotangent map is the most conformal; if it folds (negative weights on meshes with
@@ -213,11 +289,11 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
   } else if (out.genus == 1) {
     out.modulus = forms.modulus;
     out.riemann_matrix = forms.riemann_matrix;
-    const Genus1Map map = genus1_map(mesh, forms.edges, forms.normalized[0], Complex(1, 0),
-                                     forms.riemann_matrix(0, 0), options.origin_vertex);
-    values = map.values;
-    out.origin_vertex = map.origin_vertex;
-    torus_map = map;
+    if (options.origin_vertex >= 0)
+      origins = {options.origin_vertex};
+    else
+      origins = genus1_origin_candidates(mesh, forms.edges, forms.normalized[0],
+                                         WeierstrassP(Complex(1, 0), forms.riemann_matrix(0, 0)));
     out.method = "genus 1: Weierstrass P-function of the flat coordinate";
   } else {
     out.riemann_matrix = forms.riemann_matrix;
@@ -301,43 +377,30 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
   }
   lap("meromorphic");
 
-  if (options.mobius && out.genus < 2) {
-    progress.report(0.7, "Moebius normalisation");
-    out.mobius = center_on_sphere(values, areas);
-    out.mobius_applied = true;
-    lap("mobius");
+  Branching branching;
+  if (out.genus != 1) {
+    WrittenSphere written{{}, out.mobius, out.mobius_applied, out.snapped_branch_points, 0, {}};
+    finish_on_sphere(mesh, options, areas, nullptr, out.euler, values, written, progress, lap);
+    adopt(std::move(written), out, branching);
+  } else {
+    // Each origin puts the half periods, where P branches too, elsewhere: where the best-scored
+    // one leaves a fold or a missed branch point, the next is tried (four in all at most). The
+    // first valid map is kept, else the first.
+    std::optional<WrittenSphere> first;
+    for (size_t k = 0; k < std::min<size_t>(4, origins.size()); ++k) {
+      const Genus1Map map = genus1_map(mesh, forms.edges, forms.normalized[0], Complex(1, 0),
+                                       forms.riemann_matrix(0, 0), origins[k]);
+      WrittenSphere written{{}, {}, false, 0, 0, {}};
+      finish_on_sphere(mesh, options, areas, &map, out.euler, map.values, written, progress, lap);
+      written.origin_vertex = map.origin_vertex;
+      out.origin_attempts = int(k) + 1;
+      const bool valid = written.branching.degree == 2 && written.branching.riemann_hurwitz_ok &&
+                         folded_face_count(mesh, written.sphere) == 0;
+      if (valid || k == 0) first = std::move(written);
+      if (valid) break;
+    }
+    adopt(std::move(*first), out, branching);
   }
-  if (torus_map) {
-    // A piecewise-linear map branches only at vertices: the half periods go onto vertices,
-    // decided on the centred map as it will be written (genus1_branch_placement.h).
-    const Genus1Placement placed = place_half_period_branch_points(
-        mesh, face_incidence(mesh), *torus_map, out.mobius.transformation, values);
-    out.snapped_branch_points =
-        int(std::count(placed.fold_free.begin(), placed.fold_free.end(), true));
-    lap("branch_placement");
-  }
-  out.sphere.reserve(values.size());
-  for (const PlaneValue &value : values)
-    out.sphere.push_back(to_sphere(value));
-
-  progress.report(0.8, "branch points and layers");
-  // Everything below is measured on the map as written: vertex values, linear on each face.
-  Branching branching = analyse_branching(mesh, out.sphere, out.euler);
-  out.untangled_vertices = untangle_folds(mesh, out.sphere, branching.branch_vertices);
-  if (options.mobius && (out.untangled_vertices || out.snapped_branch_points)) {
-    // The vertices moved above shift the centroid a little: centre once more.
-    for (size_t v = 0; v < values.size(); ++v)
-      if (!values[v].infinite && (to_sphere(values[v]) - out.sphere[v]).norm() > 1e-15)
-        values[v] = to_plane_value(out.sphere[v]);
-    const MobiusCentering again = center_on_sphere(values, areas);
-    out.mobius.transformation = again.transformation.after(out.mobius.transformation);
-    out.mobius.centroid_after = again.centroid_after;
-    out.mobius.steps += again.steps;
-    for (size_t v = 0; v < values.size(); ++v)
-      out.sphere[v] = to_sphere(values[v]);
-  }
-  if (out.untangled_vertices || options.mobius)
-    branching = analyse_branching(mesh, out.sphere, out.euler);
   out.degree = branching.degree;
   out.area_over_4pi = branching.area_over_4pi;
   out.ramification = branching.ramification;

@@ -103,6 +103,7 @@ struct Parameterization {
   std::array<int, 2> form_pair{-1, -1};
   FormPair form_coefficients; // genus >= 2: a_k, b_k of the pair used (form_pairs.h)
   int pair_attempts = 0;      // genus >= 2: pairs tried until one was generic
+  int origin_attempts = 0;    // genus 1: origins tried until the map was valid
   // Whether the map as written is a valid branched cover: the expected degree (1, 2 or 2g - 2;
   // a chosen pair of forms may share zeros and give less), Riemann-Hurwitz, no face turned
   // over. `invalid` says what fails, with face indices.

@@ -81,8 +81,8 @@ nlohmann::json parameterization_json(const Parameterization &map) {
     if (b.sphere_vertex >= 0) branch_points.back()["sphere_vertex"] = b.sphere_vertex;
   }
   nlohmann::json timings = nlohmann::json::object();
-  for (const auto &[stage, ms] : map.timings_ms)
-    timings[stage] = ms;
+  for (const auto &[stage, ms] : map.timings_ms) // a stage run more than once: its total
+    timings[stage] = timings.value(stage, 0.0) + ms;
   nlohmann::json report = {
       {"genus", map.genus},
       {"euler", map.euler},
@@ -115,7 +115,10 @@ nlohmann::json parameterization_json(const Parameterization &map) {
     report["riemann_matrix"] = complex_matrix_json(map.riemann_matrix);
   if (one_part && map.genus == 0)
     report["genus0"] = {{"pole_face", map.puncture_face}, {"raised_weights", map.raised_weights}};
-  if (one_part && map.genus == 1) report["origin_vertex"] = map.origin_vertex;
+  if (one_part && map.genus == 1) {
+    report["origin_vertex"] = map.origin_vertex;
+    report["origin_attempts"] = map.origin_attempts;
+  }
   report["valid"] = map.valid;
   report["invalid"] = map.invalid;
   if (!map.advice.empty()) report["advice"] = map.advice;

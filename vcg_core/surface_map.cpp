@@ -15,6 +15,7 @@
 #include "validation.h"
 #include "wording.h"
 #include "zero_area_faces.h"
+#include "zero_area_images.h"
 
 namespace meromorph {
 namespace {
@@ -168,6 +169,7 @@ Parameterization parameterize_parts(const Mesh &mesh, const Validation &validati
     out.form_pair = only.form_pair;
     out.form_coefficients = only.form_coefficients;
     out.pair_attempts = only.pair_attempts;
+    out.origin_attempts = only.origin_attempts;
     out.sheets.coverage = only.sheets.coverage;
   } else {
     out.method = "each part on its own (components)";
@@ -204,6 +206,48 @@ Parameterization parameterize_parts(const Mesh &mesh, const Validation &validati
     branch_vertices.push_back(b.vertex);
   out.quality = measure_map_quality(unit, out.sphere, branch_vertices);
   return out;
+}
+
+// The zero-area faces' images oriented (zero_area_images.h), and what follows the moved
+// positions: the layered sphere, the texture coordinates at the vertices and the face corners.
+void orient_put_back_faces(const Mesh &whole, const ZeroAreaFix &fix,
+                           const std::vector<int> &representative,
+                           const ParameterizeOptions &options, Parameterization &map) {
+  const size_t vertex_count = whole.vert.size();
+  std::vector<char> is_copy(vertex_count), is_branch(vertex_count);
+  for (size_t v = 0; v < vertex_count; ++v) {
+    is_copy[v] = representative[size_t(fix.vertex_in_work[v])] != int(v);
+    is_branch[v] = map.branch_flag[v] > 1;
+  }
+  const std::vector<Eigen::Vector3d> before = map.sphere;
+  const std::vector<int> moved =
+      orient_zero_area_images(whole, fix.zero_area_faces, is_copy, is_branch, map.sphere);
+  if (moved.empty()) return;
+  // Packed parts' texture coordinates are scaled into their cells.
+  const size_t parts = std::max<size_t>(1, map.components.size());
+  const double cells = options.pack_uv ? std::ceil(std::sqrt(double(parts) - 0.5)) : 1.0;
+  std::vector<std::array<double, 2>> shift(vertex_count, {0.0, 0.0});
+  for (int v : moved) {
+    const size_t i = size_t(v);
+    map.layered[i] +=
+        (map.sphere[i] - before[i]) * (1.0 + options.layer_gap * map.sheets.vertex_layer[i]);
+    const auto from = texture_coordinate(before[i], options.uv),
+               to = texture_coordinate(map.sphere[i], options.uv);
+    double du = to[0] - from[0];
+    if (options.uv == UvKind::spherical) du -= std::round(du); // across the seam
+    shift[i] = {du / cells, (to[1] - from[1]) / cells};
+    map.uv.vertex[i][0] += shift[i][0];
+    map.uv.vertex[i][1] += shift[i][1];
+  }
+  for (size_t f = 0; f < whole.face.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const auto &d = shift[size_t(index_of(whole, whole.face[f].cV(k)))];
+      map.uv.wedge[f][size_t(k)][0] += d[0];
+      map.uv.wedge[f][size_t(k)][1] += d[1];
+    }
+  map.notes.push_back(plural(moved.size(), "vertex", "vertices") +
+                      " of zero-area faces moved a little on the sphere so that their images, "
+                      "and those of the faces around them, are turned the right way");
 }
 
 // `map`, computed on the mesh without its zero-area faces, on `whole`'s vertices and faces: a
@@ -268,6 +312,7 @@ void with_zero_area_faces(const Mesh &whole, const ZeroAreaFix &fix,
     }
     map.sheets.face_layer[f] = map.sheets.vertex_layer[size_t(index_of(whole, face.cV(0)))];
   }
+  orient_put_back_faces(whole, fix, representative, options, map);
   if (map.puncture_face >= 0)
     for (size_t f = 0; f < face_count; ++f)
       if (fix.face_in_work[f] == map.puncture_face) {
@@ -348,8 +393,7 @@ Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptio
         " zero area: taken out of the computation (" +
         plural(size_t(flat_fix.collapsed_edges), "edge", "edges") + " collapsed, " +
         plural(size_t(flat_fix.flipped_edges), "edge", "edges") +
-        " flipped) and kept in the outputs, with their corners' texture coordinates; their "
-        "images on the sphere have zero area too");
+        " flipped) and kept in the outputs, with their corners' texture coordinates");
   }
   if (split) {
     out.nonmanifold_split = {split_spots.split_vertices, split_spots.split_edges,

@@ -20,19 +20,19 @@ bool at_pole(const Eigen::Vector3d &p) {
 
 } // namespace
 
+std::array<double, 2> texture_coordinate(const Eigen::Vector3d &p, UvKind kind) {
+  if (kind == UvKind::spherical) return spherical(p);
+  Complex w = to_plane(p);
+  if (std::abs(w) > 1e6) w *= 1e6 / std::abs(w);
+  return {w.real(), w.imag()};
+}
+
 TextureCoordinates texture_coordinates(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere,
                                        UvKind kind) {
   TextureCoordinates out;
   out.vertex.reserve(sphere.size());
-  for (const Eigen::Vector3d &p : sphere) {
-    if (kind == UvKind::spherical) {
-      out.vertex.push_back(spherical(p));
-    } else {
-      Complex w = to_plane(p);
-      if (std::abs(w) > 1e6) w *= 1e6 / std::abs(w);
-      out.vertex.push_back({w.real(), w.imag()});
-    }
-  }
+  for (const Eigen::Vector3d &p : sphere)
+    out.vertex.push_back(texture_coordinate(p, kind));
   out.wedge.resize(mesh.face.size());
   out.around_pole.assign(mesh.face.size(), 0);
   for (size_t f = 0; f < mesh.face.size(); ++f) {

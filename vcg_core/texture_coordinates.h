@@ -29,6 +29,9 @@ struct TextureCoordinates {
   std::vector<char> around_pole; // per face
 };
 
+// The texture coordinates of one sphere position (as at a vertex above).
+std::array<double, 2> texture_coordinate(const Eigen::Vector3d &p, UvKind kind);
+
 TextureCoordinates texture_coordinates(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere,
                                        UvKind kind);
 

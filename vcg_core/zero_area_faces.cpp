@@ -88,10 +88,23 @@ ZeroAreaFix take_out_zero_area_faces(const Mesh &input, Mesh &work_mesh) {
         side[size_t(k)] = length(w, t[size_t(k)], t[size_t((k + 1) % 3)]);
       const int shortest = int(std::min_element(side.begin(), side.end()) - side.begin()),
                 longest = int(std::max_element(side.begin(), side.end()) - side.begin());
-      if (side[size_t(shortest)] <= needle_ratio * side[size_t(longest)]) {
+      // A cap's middle vertex with no face but the cap and the two beside it (a T-junction) is
+      // merged into the nearer end of the long side: the face it split comes back whole.
+      const int middle = t[size_t((longest + 2) % 3)];
+      const bool needle = side[size_t(shortest)] <= needle_ratio * side[size_t(longest)];
+      const bool t_junction = !needle && faces_at[size_t(middle)].size() == 3;
+      if (needle || t_junction) {
+        int keep, gone;
+        if (needle) {
+          const int a = t[size_t(shortest)], b = t[size_t((shortest + 1) % 3)];
+          keep = std::min(a, b);
+          gone = std::max(a, b);
+        } else {
+          const int a = t[size_t(longest)], b = t[size_t((longest + 1) % 3)];
+          keep = length(w, middle, a) <= length(w, middle, b) ? a : b;
+          gone = middle;
+        }
         // Collapse: the vertices next to both ends must be the edge's two opposite corners only.
-        const int a = t[size_t(shortest)], b = t[size_t((shortest + 1) % 3)];
-        const int keep = std::min(a, b), gone = std::max(a, b);
         std::set<int> around_keep, around_gone, opposite;
         for (size_t g : faces_at[size_t(keep)])
           for (int u : w.mesh.triangles[g])
@@ -111,10 +124,10 @@ ZeroAreaFix take_out_zero_area_faces(const Mesh &input, Mesh &work_mesh) {
                                     [&](int u) { return u == keep || u == gone; }),
                      common.end());
         if (std::set<int>(common.begin(), common.end()) != opposite)
-          throw InputError(face_name(w, f) + " has zero area (vertices " + std::to_string(a) +
-                           " and " + std::to_string(b) +
-                           " coincide), and merging them would change the surface's topology; "
-                           "remesh there");
+          throw InputError(face_name(w, f) + " has zero area (vertices " + std::to_string(keep) +
+                           " and " + std::to_string(gone) + (needle ? " coincide" : " in line") +
+                           "), and merging them would change the surface's topology; remesh "
+                           "there");
         touch_around(keep);
         touch_around(gone);
         for (size_t g : faces_at[size_t(gone)]) {
