@@ -74,8 +74,8 @@ std::string invalid_map_advice(const Mesh &input, const Mesh &mesh,
     std::ostringstream where;
     where << " (faces " << list_indices(collapsed) << "; the first at " << at[0] << ", " << at[1]
           << ", " << at[2] << ")";
-    causes.push_back(std::to_string(collapsed.size()) +
-                     " faces map to spots smaller than double precision resolves" + where.str() +
+    causes.push_back(plural(collapsed.size(), "face maps", "faces map") +
+                     " to spots smaller than double precision resolves" + where.str() +
                      ": long thin parts shrink exponentially under a conformal map (shorten or "
                      "thicken them, or map them separately)");
   }
@@ -83,8 +83,8 @@ std::string invalid_map_advice(const Mesh &input, const Mesh &mesh,
   for (const MeshFace &face : mesh.face)
     needles += smallest_angle(face) < M_PI / 180;
   if (needles > 0)
-    causes.push_back(std::to_string(needles) +
-                     " faces have an angle below 1 degree: remesh the surface (MeshLab: Filters > "
+    causes.push_back(plural(size_t(needles), "face has", "faces have") +
+                     " an angle below 1 degree: remesh the surface (MeshLab: Filters > "
                      "Remeshing, Simplification and Reconstruction > Remeshing: Isotropic Explicit "
                      "Remeshing; Blender: Remesh modifier) and run again");
   if (map.genus >= 2 && options.form_pair[0] >= 0)

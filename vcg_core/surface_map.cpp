@@ -25,9 +25,9 @@ namespace {
 const Finding *finding_left(const Validation &validation, bool close_holes) {
   const Finding *left = nullptr;
   for (const Finding &finding : validation.findings) {
-    if (finding.kind == FindingKind::several_components ||
-        finding.kind == FindingKind::zero_area_faces ||
-        (close_holes && finding.kind == FindingKind::boundary_loops))
+    const FindingHandling handling = finding_handling(finding);
+    if (handling == FindingHandling::as_it_is ||
+        (close_holes && handling == FindingHandling::close_holes))
       continue;
     if (!finding.repairable) return &finding;
     if (!left) left = &finding;
@@ -322,6 +322,21 @@ void with_zero_area_faces(const Mesh &whole, const ZeroAreaFix &fix,
 }
 
 } // namespace
+
+FindingHandling finding_handling(const Finding &finding) {
+  switch (finding.kind) {
+  case FindingKind::several_components:
+  case FindingKind::zero_area_faces:
+    return FindingHandling::as_it_is;
+  case FindingKind::boundary_loops:
+    return FindingHandling::close_holes;
+  case FindingKind::non_manifold_edges:
+  case FindingKind::non_manifold_vertices:
+    return FindingHandling::split_nonmanifold;
+  default:
+    return finding.repairable ? FindingHandling::repair : FindingHandling::refused;
+  }
+}
 
 Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptions &options,
                                       const Progress &progress) {

@@ -20,11 +20,18 @@
 #include "mesh.h"
 #include "parameterization.h"
 #include "progress.h"
+#include "validation.h"
 
 namespace meromorph {
 
 Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptions &options = {},
                                       const Progress &progress = {});
+
+// What parameterize_surface does with a finding of validation.h: maps the mesh as it is (several
+// parts, zero-area faces), does so when an option asks (close_holes, split_nonmanifold, or the
+// safe repairs of repair.h applied first), or refuses it.
+enum class FindingHandling { as_it_is, close_holes, split_nonmanifold, repair, refused };
+FindingHandling finding_handling(const Finding &finding);
 
 // The layered sphere as a mesh: `map.layered` positions on the input's faces (on the split
 // mesh's vertices and faces when non-manifold spots were taken apart).

@@ -6,6 +6,7 @@
 #include "mesh_reader.h"
 #include "repair.h"
 #include "report_json.h"
+#include "surface_map.h"
 #include "topology.h"
 #include "validation.h"
 
@@ -39,9 +40,43 @@ void print_text(const MeshSource &source, const Topology &topology, const Valida
   if (validation.ok()) {
     std::cout << "  ready: a closed, connected, oriented 2-manifold of genus "
               << (topology.genus ? *topology.genus : -1) << "\n";
-  } else {
-    std::cout << "  cannot be parameterized as it is:\n" << describe_findings(validation);
+    return;
   }
+  // Grouped by what `param` does with them.
+  const std::pair<FindingHandling, const char *> groups[] = {
+      {FindingHandling::as_it_is, "meromorph param maps it as it is:"},
+      {FindingHandling::close_holes, "meromorph param maps it with --close-holes:"},
+      {FindingHandling::split_nonmanifold, "meromorph param maps it with --split-nonmanifold:"},
+      {FindingHandling::repair, "safe repairs fix these: run again with --repair:"},
+      {FindingHandling::refused, "cannot be parameterized as it is:"}};
+  for (const auto &[handling, heading] : groups) {
+    std::string listed;
+    for (const Finding &f : validation.findings)
+      if (finding_handling(f) == handling) listed += "  - " + f.message + "\n";
+    if (!listed.empty()) std::cout << "  " << heading << "\n" << listed;
+  }
+}
+
+const char *handling_name(FindingHandling handling) {
+  switch (handling) {
+  case FindingHandling::as_it_is:
+    return "as it is";
+  case FindingHandling::close_holes:
+    return "--close-holes";
+  case FindingHandling::split_nonmanifold:
+    return "--split-nonmanifold";
+  case FindingHandling::repair:
+    return "--repair";
+  default:
+    return "refused";
+  }
+}
+
+// The first finding that `param` with no options refuses, if any.
+const Finding *refused_as_it_is(const Validation &validation) {
+  for (const Finding &f : validation.findings)
+    if (finding_handling(f) != FindingHandling::as_it_is) return &f;
+  return nullptr;
 }
 
 int run_info(const InfoOptions &options);
@@ -76,9 +111,13 @@ int run_info(const InfoOptions &options) {
   const Topology topology = compute_topology(mesh);
 
   if (options.json) {
+    nlohmann::json findings = findings_json(validation);
+    for (size_t k = 0; k < validation.findings.size(); ++k)
+      findings[k]["param"] = handling_name(finding_handling(validation.findings[k]));
     nlohmann::json report = {{"input", source_json(source)},
                              {"topology", topology_json(topology)},
-                             {"findings", findings_json(validation)},
+                             {"findings", findings},
+                             {"param_maps_it_as_it_is", refused_as_it_is(validation) == nullptr},
                              {"repairs", repairs},
                              {"notes", validation.notes},
                              {"ok", validation.ok()},
@@ -88,11 +127,23 @@ int run_info(const InfoOptions &options) {
   } else {
     print_text(source, topology, validation, repairs);
   }
-  if (!validation.ok()) {
-    const Finding *main_finding = &validation.main_finding();
-    const size_t others = validation.findings.size() - 1;
+  // What param maps as it is (several parts, zero-area faces) is no reason to fail.
+  if (const Finding *first = refused_as_it_is(validation)) {
+    // The first that no repair fixes, as validation.h's main finding.
+    const Finding *main_finding = first;
+    size_t others = 0;
+    for (const Finding &f : validation.findings) {
+      if (finding_handling(f) == FindingHandling::as_it_is) continue;
+      if (!f.repairable && main_finding->repairable) main_finding = &f;
+      ++others;
+    }
+    --others;
     std::cerr << "meromorph: " << options.input
-              << " cannot be parameterized: " << main_finding->message
+              << " cannot be parameterized as it is: " << main_finding->message
+              << (finding_handling(*main_finding) == FindingHandling::refused
+                      ? std::string()
+                      : std::string(" (meromorph param maps it with ") +
+                            handling_name(finding_handling(*main_finding)) + ")")
               << (others ? " (and " + std::to_string(others) +
                                (others == 1 ? " more problem" : " more problems") +
                                "; the full list is on standard output)"
@@ -109,7 +160,10 @@ Command add_info_command(CLI::App &app) {
   auto options = std::make_shared<InfoOptions>();
   CLI::App *info = app.add_subcommand(
       "info", "Print vertices, edges, faces, components, boundary loops, genus and every problem "
-              "that keeps the mesh from being parameterized. Exit code 3 if there is one.");
+              "found, grouped by what meromorph param does with it: maps the mesh as it is "
+              "(several parts, zero-area faces), maps it with an option (--close-holes, "
+              "--split-nonmanifold, --repair), or cannot. Exit code 3 unless param maps it as it "
+              "is (JSON: param_maps_it_as_it_is, and per finding `param`).");
   info->add_option("INPUT", options->input, "mesh file (.ply, .obj, .off, .stl)")->required();
   info->add_flag("--json", options->json, "print a JSON report instead of text");
   info->add_flag("--repair", options->repair,
