@@ -6,13 +6,13 @@
 #include <filesystem>
 #include <functional>
 
-#include "cotan_laplacian.h"
-#include "harmonic_forms.h"
-#include "holomorphic_pipeline.h"
-#include "mesh_edges.h"
-#include "mesh_reader.h"
-#include "mesh_writer.h"
-#include "test_surfaces.h"
+#include "forms/cotan_laplacian.h"
+#include "forms/harmonic_forms.h"
+#include "forms/holomorphic_pipeline.h"
+#include "io/mesh_reader.h"
+#include "io/mesh_writer.h"
+#include "mesh/mesh_edges.h"
+#include "shapes/test_surfaces.h"
 
 using namespace meromorph;
 

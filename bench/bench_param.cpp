@@ -14,8 +14,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "parameterization.h"
-#include "test_surfaces.h"
+#include "maps/parameterization.h"
+#include "shapes/test_surfaces.h"
 
 using namespace meromorph;
 

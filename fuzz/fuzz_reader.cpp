@@ -7,11 +7,11 @@
 #include <string>
 #include <vector>
 
-#include "errors.h"
-#include "format_readers.h"
-#include "repair.h"
-#include "topology.h"
-#include "validation.h"
+#include "common/errors.h"
+#include "io/format_readers.h"
+#include "mesh/repair.h"
+#include "mesh/topology.h"
+#include "mesh/validation.h"
 
 namespace {
 

@@ -3,11 +3,11 @@
 
 #include <gtest/gtest.h>
 
-#include "errors.h"
-#include "mesh_reader.h"
-#include "mesh_writer.h"
+#include "common/errors.h"
+#include "io/mesh_reader.h"
+#include "io/mesh_writer.h"
+#include "shapes/test_surfaces.h"
 #include "test_support.h"
-#include "test_surfaces.h"
 
 namespace meromorph {
 namespace {

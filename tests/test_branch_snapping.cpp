@@ -5,13 +5,13 @@
 // branching satisfies Riemann-Hurwitz.
 #include <gtest/gtest.h>
 
-#include "branch_points.h"
-#include "branch_snapping.h"
-#include "face_vectors.h"
-#include "genus1_map.h"
-#include "holomorphic_pipeline.h"
-#include "mobius_centering.h"
-#include "test_surfaces.h"
+#include "forms/holomorphic_pipeline.h"
+#include "maps/branch_snapping.h"
+#include "maps/genus1_map.h"
+#include "mesh/face_vectors.h"
+#include "shapes/test_surfaces.h"
+#include "sphere/branch_points.h"
+#include "sphere/mobius_centering.h"
 
 namespace meromorph {
 namespace {

@@ -7,12 +7,12 @@
 
 #include <Eigen/Dense>
 
-#include "cotan_laplacian.h"
-#include "errors.h"
-#include "holomorphic_pipeline.h"
-#include "rigid_motion.h"
+#include "common/errors.h"
+#include "forms/cotan_laplacian.h"
+#include "forms/holomorphic_pipeline.h"
+#include "shapes/rigid_motion.h"
+#include "shapes/test_surfaces.h"
 #include "test_support.h"
-#include "test_surfaces.h"
 
 namespace meromorph {
 namespace {

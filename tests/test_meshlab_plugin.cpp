@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "mesh_reader.h"
+#include "io/mesh_reader.h"
 #include "test_support.h"
 
 namespace meromorph {

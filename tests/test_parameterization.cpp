@@ -7,15 +7,15 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "errors.h"
-#include "face_vectors.h"
-#include "genus1_map.h"
-#include "holomorphic_pipeline.h"
-#include "mesh_reader.h"
-#include "mobius_centering.h"
-#include "parameterization.h"
+#include "common/errors.h"
+#include "forms/holomorphic_pipeline.h"
+#include "io/mesh_reader.h"
+#include "maps/genus1_map.h"
+#include "maps/parameterization.h"
+#include "mesh/face_vectors.h"
+#include "shapes/test_surfaces.h"
+#include "sphere/mobius_centering.h"
 #include "test_support.h"
-#include "test_surfaces.h"
 
 namespace meromorph {
 namespace {

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "errors.h"
-#include "mesh_reader.h"
+#include "common/errors.h"
+#include "io/mesh_reader.h"
 #include "test_support.h"
 
 namespace meromorph {

@@ -1,8 +1,8 @@
 // Progress reporting and cancellation.
 #include <gtest/gtest.h>
 
-#include "errors.h"
-#include "progress.h"
+#include "common/errors.h"
+#include "common/progress.h"
 
 namespace meromorph {
 namespace {

@@ -1,13 +1,13 @@
 // Reading every format, polygons, comment lines, and round trips through vcglib's exporters.
 #include <gtest/gtest.h>
 
-#include "errors.h"
-#include "mesh_from_arrays.h"
-#include "mesh_reader.h"
-#include "mesh_writer.h"
+#include "common/errors.h"
+#include "io/mesh_reader.h"
+#include "io/mesh_writer.h"
+#include "mesh/mesh_from_arrays.h"
+#include "mesh/topology.h"
+#include "shapes/test_surfaces.h"
 #include "test_support.h"
-#include "test_surfaces.h"
-#include "topology.h"
 
 namespace meromorph {
 namespace {

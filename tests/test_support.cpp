@@ -13,7 +13,7 @@
 
 #include <wrap/io_trimesh/import_ply.h>
 
-#include "mesh_reader.h"
+#include "io/mesh_reader.h"
 
 namespace meromorph::test {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "mesh.h"
+#include "mesh/mesh.h"
 
 namespace meromorph::test {
 

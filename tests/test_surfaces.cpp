@@ -7,11 +7,11 @@
 
 #include <vcg/complex/algorithms/stat.h>
 
-#include "mesh_from_arrays.h"
-#include "rigid_motion.h"
-#include "test_surfaces.h"
-#include "topology.h"
-#include "validation.h"
+#include "mesh/mesh_from_arrays.h"
+#include "mesh/topology.h"
+#include "mesh/validation.h"
+#include "shapes/rigid_motion.h"
+#include "shapes/test_surfaces.h"
 
 namespace meromorph {
 namespace {

@@ -3,10 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include "mesh/topology.h"
+#include "mesh/validation.h"
+#include "shapes/test_surfaces.h"
 #include "test_support.h"
-#include "test_surfaces.h"
-#include "topology.h"
-#include "validation.h"
 
 namespace meromorph {
 namespace {

@@ -2,10 +2,10 @@
 // code of `meromorph info`, and what --repair does with it.
 #include <gtest/gtest.h>
 
-#include "mesh_reader.h"
-#include "repair.h"
+#include "io/mesh_reader.h"
+#include "mesh/repair.h"
+#include "mesh/validation.h"
 #include "test_support.h"
-#include "validation.h"
 
 namespace meromorph {
 namespace {

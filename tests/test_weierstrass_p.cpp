@@ -1,7 +1,7 @@
 // The Weierstrass P-function against its definition and its differential equation.
 #include <gtest/gtest.h>
 
-#include "weierstrass_p.h"
+#include "maps/weierstrass_p.h"
 
 namespace meromorph {
 namespace {

@@ -12,8 +12,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "mesh/validation.h"
 #include "test_support.h"
-#include "validation.h"
 #include "written_map.h"
 
 namespace meromorph {

@@ -8,11 +8,11 @@
 #include <new>
 #include <string>
 
-#include "errors.h"
-#include "mesh_from_arrays.h"
-#include "parameterization.h"
-#include "report_json.h"
-#include "surface_map.h"
+#include "common/errors.h"
+#include "maps/parameterization.h"
+#include "maps/surface_map.h"
+#include "mesh/mesh_from_arrays.h"
+#include "report/report_json.h"
 
 struct meromorph_result {
   meromorph::Parameterization map;

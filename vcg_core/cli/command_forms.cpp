@@ -5,14 +5,14 @@
 #include <iostream>
 
 #include "commands.h"
-#include "errors.h"
-#include "holomorphic_pipeline.h"
+#include "common/errors.h"
+#include "forms/holomorphic_pipeline.h"
+#include "io/mesh_reader.h"
+#include "io/mesh_writer.h"
+#include "io/staged_outputs.h"
 #include "job_input.h"
-#include "mesh_reader.h"
-#include "mesh_writer.h"
-#include "repair.h"
-#include "report_json.h"
-#include "staged_outputs.h"
+#include "mesh/repair.h"
+#include "report/report_json.h"
 #include "terminal_progress.h"
 
 namespace meromorph::cli {

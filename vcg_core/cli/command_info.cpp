@@ -2,13 +2,13 @@
 #include <iostream>
 
 #include "commands.h"
-#include "errors.h"
-#include "mesh_reader.h"
-#include "repair.h"
-#include "report_json.h"
-#include "surface_map.h"
-#include "topology.h"
-#include "validation.h"
+#include "common/errors.h"
+#include "io/mesh_reader.h"
+#include "maps/surface_map.h"
+#include "mesh/repair.h"
+#include "mesh/topology.h"
+#include "mesh/validation.h"
+#include "report/report_json.h"
 
 namespace meromorph::cli {
 namespace {

@@ -2,11 +2,11 @@
 #include <iostream>
 
 #include "commands.h"
-#include "errors.h"
-#include "mesh_writer.h"
-#include "rigid_motion.h"
-#include "test_surfaces.h"
-#include "topology.h"
+#include "common/errors.h"
+#include "io/mesh_writer.h"
+#include "mesh/topology.h"
+#include "shapes/rigid_motion.h"
+#include "shapes/test_surfaces.h"
 
 namespace meromorph::cli {
 namespace {

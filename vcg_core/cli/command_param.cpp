@@ -9,15 +9,15 @@
 #include <sstream>
 
 #include "commands.h"
-#include "errors.h"
+#include "common/errors.h"
+#include "io/mesh_reader.h"
+#include "io/mesh_writer.h"
+#include "io/staged_outputs.h"
 #include "job_input.h"
-#include "mesh_reader.h"
-#include "mesh_writer.h"
-#include "parameterization.h"
-#include "repair.h"
-#include "report_json.h"
-#include "staged_outputs.h"
-#include "surface_map.h"
+#include "maps/parameterization.h"
+#include "maps/surface_map.h"
+#include "mesh/repair.h"
+#include "report/report_json.h"
 #include "terminal_progress.h"
 
 namespace meromorph::cli {

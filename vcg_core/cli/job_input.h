@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "mesh_reader.h"
-#include "repair.h"
+#include "io/mesh_reader.h"
+#include "mesh/repair.h"
 
 namespace meromorph::cli {
 

@@ -4,7 +4,7 @@
 #include <map>
 
 #include "commands.h"
-#include "errors.h"
+#include "common/errors.h"
 
 int main(int argc, char **argv) {
   using namespace meromorph;

@@ -11,7 +11,7 @@
 
 #include <unistd.h>
 
-#include "progress.h"
+#include "common/progress.h"
 
 namespace meromorph::cli {
 

@@ -1,0 +1,32 @@
+#include "forms/harmonic_forms.h"
+
+namespace meromorph {
+
+Eigen::VectorXd weighted_divergence(int vertex_count, const MeshEdges &edges,
+                                    const std::vector<double> &weights,
+                                    const Eigen::VectorXd &form) {
+  Eigen::VectorXd divergence = Eigen::VectorXd::Zero(vertex_count);
+  for (int e = 0; e < edges.edge_count(); ++e) {
+    divergence[edges.vertices[e][1]] += weights[e] * form[e];
+    divergence[edges.vertices[e][0]] -= weights[e] * form[e];
+  }
+  return divergence;
+}
+
+std::vector<Eigen::VectorXd> harmonic_forms(const std::vector<Eigen::VectorXd> &closed_forms,
+                                            int vertex_count, const MeshEdges &edges,
+                                            const std::vector<double> &weights,
+                                            const LaplacianSolver &solver) {
+  std::vector<Eigen::VectorXd> harmonic;
+  for (const Eigen::VectorXd &omega : closed_forms) {
+    const Eigen::VectorXd potential =
+        solver.solve(weighted_divergence(vertex_count, edges, weights, omega));
+    Eigen::VectorXd h = omega;
+    for (int e = 0; e < edges.edge_count(); ++e)
+      h[e] -= potential[edges.vertices[e][1]] - potential[edges.vertices[e][0]];
+    harmonic.push_back(std::move(h));
+  }
+  return harmonic;
+}
+
+} // namespace meromorph

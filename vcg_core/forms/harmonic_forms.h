@@ -1,0 +1,27 @@
+// Harmonic 1-forms: the closed forms' co-closed representatives.
+//
+// In:  closed 1-forms omega_j, the mesh's oriented edges, cotangent weights, a factored Laplacian.
+// Out: h_j = omega_j - d f_j with L f_j = div(omega_j), so that sum_k w_ik h_j(ik) = 0 at every
+//      vertex (co-closed) while h_j stays closed and has omega_j's periods. One solve per form.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "forms/laplacian_solver.h"
+#include "mesh/mesh_edges.h"
+
+namespace meromorph {
+
+// (div form)_k = sum over edges into k of w * form - sum over edges out of k of w * form.
+Eigen::VectorXd weighted_divergence(int vertex_count, const MeshEdges &edges,
+                                    const std::vector<double> &weights,
+                                    const Eigen::VectorXd &form);
+
+std::vector<Eigen::VectorXd> harmonic_forms(const std::vector<Eigen::VectorXd> &closed_forms,
+                                            int vertex_count, const MeshEdges &edges,
+                                            const std::vector<double> &weights,
+                                            const LaplacianSolver &solver);
+
+} // namespace meromorph

@@ -1,0 +1,40 @@
+// Conjugate harmonic forms, the holomorphic basis and its local coefficients.
+//
+// In:  face vectors of the 2g harmonic forms h_j (F x 3 each) and the face geometry.
+// Out: the conjugate coefficients C (2g x 2g) with *h_j ~ sum_k C_jk h_k, by least squares in the
+//      L2 inner product of face vectors (Gram matrix <h_j, h_k> = sum_f area_f <a_j, a_k>), and the
+//      relative residual of that fit; holomorphic forms tau_j = h_j + i sum_k C_jk h_k. And per
+//      face, for a complex form with real face vectors a and imaginary b, the coefficients of
+//      f dz + g dzbar in an orthonormal frame (e1, n x e1): |g| / |f| is the non-holomorphicity.
+#pragma once
+
+#include <complex>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "mesh/face_vectors.h"
+
+namespace meromorph {
+
+struct ConjugateFit {
+  Eigen::MatrixXd coefficients; // C
+  double relative_residual = 0; // max_j |*h_j - sum_k C_jk h_k| / |h_j| in L2
+};
+
+ConjugateFit conjugate_coefficients(const std::vector<Eigen::MatrixX3d> &harmonic_vectors,
+                                    const FaceGeometry &geometry);
+
+// Face vectors of sum_k coefficients[k] * vectors[k].
+Eigen::MatrixX3d combine(const std::vector<Eigen::MatrixX3d> &vectors,
+                         const Eigen::VectorXd &coefficients);
+
+struct LocalCoefficients {
+  std::vector<std::complex<double>> f, g;
+};
+
+LocalCoefficients local_coefficients(const Mesh &mesh, const FaceGeometry &geometry,
+                                     const Eigen::MatrixX3d &real_part,
+                                     const Eigen::MatrixX3d &imaginary_part);
+
+} // namespace meromorph

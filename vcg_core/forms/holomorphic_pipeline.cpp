@@ -1,0 +1,184 @@
+#include "forms/holomorphic_pipeline.h"
+
+#include <chrono>
+
+#include <Eigen/Dense>
+
+#include "common/errors.h"
+#include "forms/cotan_laplacian.h"
+#include "forms/harmonic_forms.h"
+#include "forms/holomorphic_forms.h"
+#include "forms/intrinsic_delaunay.h"
+#include "forms/periods.h"
+#include "mesh/face_vectors.h"
+#include "mesh/unit_scale.h"
+#include "mesh/validation.h"
+
+namespace meromorph {
+namespace {
+
+class StageClock {
+public:
+  explicit StageClock(std::vector<std::pair<std::string, double>> &timings) : timings_(timings) {}
+  void done(const std::string &stage) {
+    const auto now = std::chrono::steady_clock::now();
+    timings_.push_back({stage, std::chrono::duration<double, std::milli>(now - start_).count()});
+    start_ = now;
+  }
+
+private:
+  std::vector<std::pair<std::string, double>> &timings_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+double closedness(const MeshEdges &edges, const Eigen::VectorXd &form) {
+  double worst = 0;
+  for (size_t f = 0; f < edges.face_edges.size(); ++f) {
+    double sum = 0;
+    for (int k = 0; k < 3; ++k)
+      sum += edges.face_signs[f][k] * form[edges.face_edges[f][k]];
+    worst = std::max(worst, std::abs(sum));
+  }
+  return worst;
+}
+
+} // namespace
+
+HolomorphicForms compute_holomorphic_forms(const Mesh &input, SolverKind solver,
+                                           const Progress &progress, const Validation *validated) {
+  const Validation validation = validated ? *validated : validate_mesh(input);
+  if (!validation.ok()) throw InputError(validation.main_finding().message);
+  // Computed at unit scale (unit_scale.h): the forms' values on edges do not depend on it.
+  Mesh unit;
+  const bool copy = !is_at_unit_scale(input);
+  if (copy) copy_at_unit_scale(input, unit_scale_of(input), unit);
+  const Mesh &mesh = copy ? unit : input;
+
+  HolomorphicForms out;
+  out.notes = validation.notes;
+  StageClock clock(out.timings_ms);
+  const int vertex_count = int(mesh.vert.size());
+
+  progress.report(0.0, "edges and cotangent weights");
+  out.edges = build_mesh_edges(mesh);
+  out.weights = cotan_weights(mesh, out.edges);
+  out.genus = (2 - (vertex_count - out.edges.edge_count() + int(mesh.face.size()))) / 2;
+  if (out.genus == 0) {
+    clock.done("laplacian");
+    return out; // no forms: nothing to factor
+  }
+  // The forms live on the intrinsic Delaunay triangulation (non-negative weights), and are taken
+  // back to the mesh's edges at the end.
+  out.intrinsic = std::make_shared<IntrinsicDelaunay>(mesh, out.edges);
+  const MeshEdges &edges = out.intrinsic->edges();
+  const std::vector<double> weights = out.intrinsic->cotan_weights();
+  const Mesh &faces = out.intrinsic->flat_faces();
+  clock.done("laplacian");
+
+  progress.report(0.1, "homology basis");
+  out.homology = tree_cotree(vertex_count, edges);
+  clock.done("homology");
+
+  progress.report(0.2, "factoring the Laplacian");
+  const std::unique_ptr<LaplacianSolver> factored =
+      factor_laplacian(cotan_laplacian(vertex_count, edges, weights), solver);
+  clock.done("factorization");
+
+  progress.report(0.6, "harmonic forms");
+  out.harmonic = harmonic_forms(out.homology.dual_forms, vertex_count, edges, weights, *factored);
+  clock.done("harmonic");
+
+  progress.report(0.8, "holomorphic forms and periods");
+  const FaceGeometry geometry = face_geometry(faces);
+  std::vector<Eigen::MatrixX3d> vectors;
+  for (const Eigen::VectorXd &h : out.harmonic) {
+    vectors.push_back(face_vectors(faces, edges, geometry, h));
+    out.closedness_residual = std::max(out.closedness_residual, closedness(edges, h));
+    const Eigen::VectorXd divergence = weighted_divergence(vertex_count, edges, weights, h);
+    double scale = 0;
+    for (int e = 0; e < edges.edge_count(); ++e)
+      scale = std::max(scale, std::abs(weights[e] * h[e]));
+    out.coclosedness_residual = std::max(
+        out.coclosedness_residual, divergence.tail(vertex_count - 1).cwiseAbs().maxCoeff() / scale);
+  }
+  const ConjugateFit fit = conjugate_coefficients(vectors, geometry);
+  out.conjugate = fit.coefficients;
+  out.conjugate_residual = fit.relative_residual;
+
+  const int n = 2 * out.genus;
+  // Periods of tau_j = h_j + i *h_j along the primal loops.
+  Eigen::MatrixXd real_periods(n, n);
+  for (int j = 0; j < n; ++j)
+    for (int k = 0; k < n; ++k)
+      real_periods(j, k) = integrate(out.harmonic[j], out.homology.primal_loops[k]);
+  out.loop_periods =
+      real_periods.cast<std::complex<double>>() +
+      std::complex<double>(0, 1) * (out.conjugate * real_periods).cast<std::complex<double>>();
+
+  // Coordinates in the omega basis: the loop integrals of omega are +-delta.
+  Eigen::VectorXd loop_sign(n);
+  for (int k = 0; k < n; ++k)
+    loop_sign[k] = integrate(out.homology.dual_forms[k], out.homology.primal_loops[k]);
+
+  out.wedge = wedge_matrix(out.harmonic, edges, &out.wedge_rounding);
+  out.symplectic = symplectic_basis(out.wedge);
+  const Eigen::MatrixXd basis = out.symplectic.cast<double>();
+  const Eigen::MatrixXd basis_inverse = basis.inverse();
+
+  // phi_k = holomorphic form of alpha_k = sum_j P_jk tau_j; its periods along the canonical cycles.
+  const int g = out.genus;
+  out.a_periods.resize(g, g);
+  out.b_periods.resize(g, g);
+  for (int k = 0; k < g; ++k) {
+    Eigen::VectorXcd coordinates = Eigen::VectorXcd::Zero(n);
+    for (int j = 0; j < n; ++j)
+      coordinates += basis(j, k) * out.loop_periods.row(j).transpose().cwiseQuotient(
+                                       loop_sign.cast<std::complex<double>>());
+    const Eigen::VectorXcd periods = basis_inverse.cast<std::complex<double>>() * coordinates;
+    out.a_periods.row(k) = periods.head(g).transpose();
+    out.b_periods.row(k) = periods.tail(g).transpose();
+  }
+  out.riemann_matrix = out.a_periods.inverse() * out.b_periods;
+  if (out.riemann_matrix.imag().trace() < 0) { // the opposite orientation convention: b -> -b
+    out.b_periods = -out.b_periods;
+    out.riemann_matrix = -out.riemann_matrix;
+  }
+  if (g == 1) out.modulus = reduce_modulus(out.riemann_matrix(0, 0));
+
+  // Edge values of phi_k = sum_j P_jk tau_j, then of the normalized psi = A^-1 phi.
+  std::vector<Eigen::VectorXcd> tau;
+  for (int j = 0; j < n; ++j) {
+    Eigen::VectorXd conjugate = Eigen::VectorXd::Zero(edges.edge_count());
+    for (int l = 0; l < n; ++l)
+      conjugate += out.conjugate(j, l) * out.harmonic[l];
+    tau.push_back(out.harmonic[j].cast<std::complex<double>>() +
+                  std::complex<double>(0, 1) * conjugate.cast<std::complex<double>>());
+  }
+  const Eigen::MatrixXcd a_inverse = out.a_periods.inverse();
+  for (int m = 0; m < g; ++m) {
+    Eigen::VectorXcd psi = Eigen::VectorXcd::Zero(edges.edge_count());
+    for (int k = 0; k < g; ++k)
+      for (int j = 0; j < n; ++j)
+        psi += a_inverse(m, k) * basis(j, k) * tau[j];
+    out.normalized.push_back(out.intrinsic->integrate_along_mesh_edges(psi));
+  }
+
+  // Non-holomorphicity of phi_1.
+  Eigen::VectorXd first = basis.col(0);
+  const Eigen::MatrixX3d real_part = combine(vectors, first);
+  const Eigen::MatrixX3d imaginary_part = combine(vectors, out.conjugate.transpose() * first);
+  const LocalCoefficients local = local_coefficients(faces, geometry, real_part, imaginary_part);
+  double weighted = 0, total_area = 0;
+  for (size_t f = 0; f < local.f.size(); ++f) {
+    const double ratio = std::abs(local.g[f]) / std::abs(local.f[f]);
+    weighted += geometry.areas[f] * ratio;
+    total_area += geometry.areas[f];
+    out.non_holomorphicity_max = std::max(out.non_holomorphicity_max, ratio);
+  }
+  out.non_holomorphicity_mean = weighted / total_area;
+  clock.done("holomorphic");
+  progress.report(1.0, "done");
+  return out;
+}
+
+} // namespace meromorph

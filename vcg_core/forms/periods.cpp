@@ -1,0 +1,80 @@
+#include "forms/periods.h"
+
+#include <cmath>
+
+#include "common/errors.h"
+
+namespace meromorph {
+
+Eigen::MatrixXi wedge_matrix(const std::vector<Eigen::VectorXd> &closed_forms,
+                             const MeshEdges &edges, double *largest_rounding) {
+  const long n = long(closed_forms.size());
+  Eigen::MatrixXi wedge = Eigen::MatrixXi::Zero(n, n);
+  double worst = 0;
+  for (long j = 0; j < n; ++j)
+    for (long k = j + 1; k < n; ++k) {
+      double sum = 0;
+      for (size_t f = 0; f < edges.face_edges.size(); ++f) {
+        double a[3], b[3];
+        for (int side = 0; side < 3; ++side) {
+          const int e = edges.face_edges[f][side], sign = edges.face_signs[f][side];
+          a[side] = sign * closed_forms[size_t(j)][e];
+          b[side] = sign * closed_forms[size_t(k)][e];
+        }
+        for (int side = 0; side < 3; ++side)
+          sum += (a[side] * b[(side + 1) % 3] - a[(side + 1) % 3] * b[side]) / 6.0;
+      }
+      const double rounded = std::round(sum);
+      worst = std::max(worst, std::abs(sum - rounded));
+      wedge(j, k) = int(rounded);
+      wedge(k, j) = -int(rounded);
+    }
+  if (largest_rounding) *largest_rounding = worst;
+  if (worst > 1e-3)
+    throw Error(ExitCode::internal_failure,
+                "the intersection numbers are not integers (off by " + std::to_string(worst) + ")");
+  return wedge;
+}
+
+Eigen::MatrixXi symplectic_basis(const Eigen::MatrixXi &wedge) {
+  const long n = wedge.rows(), g = n / 2;
+  std::vector<Eigen::VectorXi> remaining;
+  for (long i = 0; i < n; ++i)
+    remaining.push_back(Eigen::VectorXi::Unit(n, i));
+  auto form = [&](const Eigen::VectorXi &u, const Eigen::VectorXi &v) { return u.dot(wedge * v); };
+  Eigen::MatrixXi basis(n, n);
+  for (long k = 0; k < g; ++k) {
+    size_t ui = 0, vi = 0;
+    bool found = false;
+    for (ui = 0; ui < remaining.size() && !found; ++ui)
+      for (vi = ui + 1; vi < remaining.size() && !found; ++vi)
+        found = std::abs(form(remaining[ui], remaining[vi])) == 1;
+    if (!found)
+      throw Error(ExitCode::internal_failure, "no symplectic pair in the intersection form");
+    --ui;
+    --vi;
+    Eigen::VectorXi u = remaining[ui], v = remaining[vi];
+    if (form(u, v) == -1) v = -v;
+    remaining.erase(remaining.begin() + long(vi));
+    remaining.erase(remaining.begin() + long(ui));
+    for (Eigen::VectorXi &w : remaining)
+      w = w - form(w, v) * u + form(w, u) * v;
+    basis.col(k) = u;
+    basis.col(g + k) = v;
+  }
+  return basis;
+}
+
+std::complex<double> reduce_modulus(std::complex<double> tau) {
+  if (tau.imag() < 0) tau = -tau;
+  for (int step = 0; step < 1000; ++step) {
+    tau -= std::round(tau.real());
+    if (std::norm(tau) < 1.0 - 1e-15)
+      tau = -1.0 / tau;
+    else
+      break;
+  }
+  return tau;
+}
+
+} // namespace meromorph

@@ -1,0 +1,28 @@
+// Reading a mesh file of any supported format into the core's mesh.
+//
+// In:  a path to a .ply, .obj, .off or .stl file.
+// Out: `mesh` holds the file's vertices and triangles in file order (0-based indices; polygons are
+//      triangulated after their predecessors), and the returned `MeshSource` says the format and
+//      what the reader had to do. Nothing is validated here (see validation.h).
+// Errors: ArgumentError (no such file, unsupported extension), InputError (empty, truncated or
+//      malformed file, content that does not match the extension), with the path and line.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "common/progress.h"
+#include "io/mesh_format.h"
+#include "mesh/mesh.h"
+
+namespace meromorph {
+
+struct MeshSource {
+  std::string path;
+  MeshFormat format = MeshFormat::ply;
+  std::vector<std::string> notes;
+};
+
+MeshSource read_mesh(const std::string &path, Mesh &mesh, const Progress &progress = {});
+
+} // namespace meromorph

@@ -1,0 +1,119 @@
+#include "io/mesh_writer.h"
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include <vcg/complex/append.h>
+#include <wrap/io_trimesh/export_obj.h>
+#include <wrap/io_trimesh/export_off.h>
+#include <wrap/io_trimesh/export_ply.h>
+#include <wrap/io_trimesh/export_stl.h>
+
+#include "common/errors.h"
+#include "io/mesh_format.h"
+#include "io/staged_outputs.h"
+
+namespace meromorph {
+
+void refuse_to_overwrite(const std::string &output, const std::vector<std::string> &inputs) {
+  namespace fs = std::filesystem;
+  std::error_code error;
+  for (const std::string &input : inputs) {
+    const bool same =
+        fs::exists(output, error) && fs::exists(input, error)
+            ? fs::equivalent(output, input, error)
+            : fs::weakly_canonical(output, error) == fs::weakly_canonical(input, error);
+    if (same)
+      throw ArgumentError(output + ": this is the input file; meromorph never writes over its "
+                                   "input, choose another output name");
+  }
+}
+
+void save_mesh(const Mesh &mesh, MeshFormat format, const std::string &file,
+               const WriteOptions &options) {
+  Mesh &writable =
+      const_cast<Mesh &>(mesh); // vcglib's exporters take non-const meshes; they only read.
+
+  int mask = 0;
+  if (options.vertex_texcoords) mask |= vcg::tri::io::Mask::IOM_VERTTEXCOORD;
+  if (options.vertex_quality) mask |= vcg::tri::io::Mask::IOM_VERTQUALITY;
+  if (options.wedge_texcoords) mask |= vcg::tri::io::Mask::IOM_WEDGTEXCOORD;
+
+  errno = 0;
+  int code = 0;
+  switch (format) {
+  case MeshFormat::ply: {
+    vcg::tri::io::PlyInfo info;
+    Mesh copy; // named attributes go on a copy: the caller's mesh is not changed
+    const bool extra = !options.vertex_properties.empty() || options.vertex_texcoords;
+    if (extra) vcg::tri::Append<Mesh, Mesh>::MeshCopy(copy, writable);
+    // Every extra property is described here (with names that outlive the save), so nothing is
+    // allocated for the exporter to leak.
+    auto describe = [&](const char *name, int type) {
+      vcg::ply::PropDescriptor descriptor;
+      descriptor.elemname = "vertex";
+      descriptor.propname = name;
+      descriptor.stotype1 = descriptor.memtype1 = type;
+      info.VertDescriptorVec.push_back(descriptor);
+      info.VertAttrNameVec.push_back(name);
+    };
+    if (options.vertex_texcoords) {
+      // vcglib's PLY exporter writes double texture coordinates under a float header; write them
+      // as the float properties texture_u, texture_v (the names MeshLab reads) instead.
+      mask &= ~vcg::tri::io::Mask::IOM_VERTTEXCOORD;
+      for (const char *name : {"texture_u", "texture_v"}) {
+        auto handle = vcg::tri::Allocator<Mesh>::AddPerVertexAttribute<float>(copy, name);
+        for (size_t v = 0; v < copy.vert.size(); ++v)
+          handle[v] = float(name[8] == 'u' ? copy.vert[v].T().U() : copy.vert[v].T().V());
+        describe(name, vcg::ply::T_FLOAT);
+      }
+    }
+    info.mask = mask;
+    for (const VertexProperty &property : options.vertex_properties) {
+      describe(property.name.c_str(), property.byte ? vcg::ply::T_UCHAR : vcg::ply::T_INT);
+      if (property.byte) {
+        auto handle =
+            vcg::tri::Allocator<Mesh>::AddPerVertexAttribute<unsigned char>(copy, property.name);
+        for (size_t v = 0; v < copy.vert.size(); ++v)
+          handle[v] = (unsigned char)property.values.at(v);
+      } else {
+        auto handle = vcg::tri::Allocator<Mesh>::AddPerVertexAttribute<int>(copy, property.name);
+        for (size_t v = 0; v < copy.vert.size(); ++v)
+          handle[v] = property.values.at(v);
+      }
+    }
+    code = vcg::tri::io::ExporterPLY<Mesh>::Save(extra ? copy : writable, file.c_str(),
+                                                 options.binary, info);
+    copy.ClearAttributes();
+    break;
+  }
+  case MeshFormat::obj:
+    code = vcg::tri::io::ExporterOBJ<Mesh>::Save(writable, file.c_str(), mask);
+    break;
+  case MeshFormat::off:
+    code = vcg::tri::io::ExporterOFF<Mesh>::Save(writable, file.c_str(), mask);
+    break;
+  case MeshFormat::stl:
+    code = vcg::tri::io::ExporterSTL<Mesh>::Save(writable, file.c_str(), options.binary);
+    break;
+  }
+  if (code != 0) {
+    const std::string reason =
+        errno ? std::strerror(errno)
+              : std::string(format_name(format)) + " exporter error " + std::to_string(code);
+    std::remove(file.c_str());
+    throw WriteError(file + ": could not be written (" + reason + ")");
+  }
+}
+
+void write_mesh(const Mesh &mesh, const std::string &path, const WriteOptions &options,
+                const std::vector<std::string> &protected_inputs) {
+  const MeshFormat format = format_from_extension(path);
+  StagedOutputs outputs(protected_inputs);
+  save_mesh(mesh, format, outputs.add(path), options);
+  outputs.commit();
+}
+
+} // namespace meromorph

@@ -1,0 +1,454 @@
+// A strict PLY reader of our own (vcglib's importer crashes on lying counts, out-of-range
+// indices and long lists): the header is parsed completely, every count and index is checked
+// against the file before anything is allocated, and every value is read with a bounds check.
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "common/errors.h"
+#include "io/format_readers.h"
+#include "io/polygon_triangulation.h"
+
+namespace meromorph {
+namespace {
+
+enum class Encoding { ascii, binary_little_endian, binary_big_endian };
+enum class ScalarType { int8, uint8, int16, uint16, int32, uint32, float32, float64 };
+
+struct Property {
+  std::string name;
+  bool list = false;
+  ScalarType count_type = ScalarType::uint8; // lists only
+  ScalarType type = ScalarType::float32;     // the value (or the list's items)
+};
+
+struct Element {
+  std::string name;
+  uint64_t count = 0;
+  std::vector<Property> properties;
+  size_t header_line = 0;
+};
+
+struct Header {
+  Encoding encoding = Encoding::ascii;
+  std::vector<Element> elements;
+  size_t data_start = 0; // byte offset of the first byte after "end_header\n"
+  size_t lines = 0;      // header lines, so ASCII data lines can be numbered as in the file
+};
+
+int size_of(ScalarType type) {
+  switch (type) {
+  case ScalarType::int8:
+  case ScalarType::uint8:
+    return 1;
+  case ScalarType::int16:
+  case ScalarType::uint16:
+    return 2;
+  case ScalarType::int32:
+  case ScalarType::uint32:
+  case ScalarType::float32:
+    return 4;
+  case ScalarType::float64:
+    return 8;
+  }
+  return 0;
+}
+
+bool is_integer(ScalarType type) {
+  return type != ScalarType::float32 && type != ScalarType::float64;
+}
+
+bool parse_type(std::string_view name, ScalarType &type) {
+  static const std::pair<const char *, ScalarType> names[] = {
+      {"char", ScalarType::int8},      {"int8", ScalarType::int8},
+      {"uchar", ScalarType::uint8},    {"uint8", ScalarType::uint8},
+      {"short", ScalarType::int16},    {"int16", ScalarType::int16},
+      {"ushort", ScalarType::uint16},  {"uint16", ScalarType::uint16},
+      {"int", ScalarType::int32},      {"int32", ScalarType::int32},
+      {"uint", ScalarType::uint32},    {"uint32", ScalarType::uint32},
+      {"float", ScalarType::float32},  {"float32", ScalarType::float32},
+      {"double", ScalarType::float64}, {"float64", ScalarType::float64}};
+  for (const auto &[text, value] : names)
+    if (name == text) {
+      type = value;
+      return true;
+    }
+  return false;
+}
+
+std::vector<std::string_view> split_words(std::string_view line) {
+  std::vector<std::string_view> words;
+  size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == '\r'))
+      ++i;
+    const size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != '\r')
+      ++i;
+    if (i > start) words.push_back(line.substr(start, i - start));
+  }
+  return words;
+}
+
+// A non-negative decimal count, strictly (no sign, no spaces, no overflow).
+bool parse_count(std::string_view text, uint64_t &value) {
+  if (text.empty() || text.front() < '0' || text.front() > '9') return false;
+  auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  return error == std::errc() && end == text.data() + text.size();
+}
+
+Header parse_header(const std::string &path, const std::string &bytes) {
+  Header header;
+  size_t position = bytes.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0, line_number = 0;
+  auto fail = [&](const std::string &message) -> void {
+    throw InputError(path + ":" + std::to_string(line_number) + ": " + message);
+  };
+  auto next_line = [&](std::string_view &line) {
+    if (position >= bytes.size()) return false;
+    size_t end = bytes.find('\n', position);
+    if (end == std::string::npos) end = bytes.size();
+    line = std::string_view(bytes.data() + position, end - position);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    position = end + 1;
+    ++line_number;
+    return true;
+  };
+  std::string_view line;
+  if (!next_line(line) || line != "ply")
+    throw InputError(path + ": not a PLY file (its first line is not 'ply')");
+  bool format_seen = false, ended = false;
+  while (!ended) {
+    if (!next_line(line))
+      throw InputError(path + ": the file ends inside its PLY header (no 'end_header' line)");
+    const std::vector<std::string_view> words = split_words(line);
+    if (words.empty()) continue;
+    const std::string_view keyword = words[0];
+    if (keyword == "comment" || keyword == "obj_info") continue;
+    if (keyword == "end_header") {
+      ended = true;
+    } else if (keyword == "format") {
+      if (format_seen) fail("a second 'format' line");
+      format_seen = true;
+      if (words.size() != 3 || words[2] != "1.0")
+        fail("expected 'format ascii 1.0' (or binary_little_endian / binary_big_endian)");
+      if (words[1] == "ascii")
+        header.encoding = Encoding::ascii;
+      else if (words[1] == "binary_little_endian")
+        header.encoding = Encoding::binary_little_endian;
+      else if (words[1] == "binary_big_endian")
+        header.encoding = Encoding::binary_big_endian;
+      else
+        fail("unknown PLY format '" + std::string(words[1]) + "'");
+    } else if (keyword == "element") {
+      if (!format_seen) fail("'element' before the 'format' line");
+      Element element;
+      if (words.size() != 3) fail("expected 'element NAME COUNT'");
+      element.name = std::string(words[1]);
+      if (!parse_count(words[2], element.count) || element.count > uint64_t(INT32_MAX))
+        fail("element '" + element.name + "' has the count '" + std::string(words[2]) +
+             "', which is not a whole number from 0 to " + std::to_string(INT32_MAX));
+      for (const Element &other : header.elements)
+        if (other.name == element.name) fail("element '" + element.name + "' is declared twice");
+      element.header_line = line_number;
+      header.elements.push_back(element);
+    } else if (keyword == "property") {
+      if (header.elements.empty()) fail("'property' before any 'element'");
+      Property property;
+      if (words.size() == 5 && words[1] == "list") {
+        property.list = true;
+        if (!parse_type(words[2], property.count_type) || !is_integer(property.count_type))
+          fail("a list's count type must be an integer type, not '" + std::string(words[2]) + "'");
+        if (!parse_type(words[3], property.type))
+          fail("unknown property type '" + std::string(words[3]) + "'");
+        property.name = std::string(words[4]);
+      } else if (words.size() == 3) {
+        if (!parse_type(words[1], property.type))
+          fail("unknown property type '" + std::string(words[1]) + "'");
+        property.name = std::string(words[2]);
+      } else {
+        fail("expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'");
+      }
+      for (const Property &other : header.elements.back().properties)
+        if (other.name == property.name) fail("property '" + property.name + "' is declared twice");
+      header.elements.back().properties.push_back(property);
+    } else {
+      fail("unknown PLY header line '" + std::string(line.substr(0, 60)) + "'");
+    }
+  }
+  if (!format_seen) throw InputError(path + ": the PLY header has no 'format' line");
+  header.data_start = std::min(position, bytes.size());
+  header.lines = line_number;
+  return header;
+}
+
+// Reads the values of the data section one at a time, ASCII or binary, and names where a
+// problem is: the file line (ASCII) or the byte offset (binary).
+class ValueReader {
+public:
+  ValueReader(const std::string &path, const std::string &bytes, const Header &header)
+      : path_(path), bytes_(bytes), encoding_(header.encoding), position_(header.data_start),
+        line_(header.lines + 1) {}
+
+  // The next value as a double; an integer type must hold a whole number in its range.
+  double value(ScalarType type, const std::string &what) {
+    return encoding_ == Encoding::ascii ? ascii_value(type, what) : binary_value(type, what);
+  }
+
+  // The next value as a list count: a whole number from 0 to `maximum`.
+  uint64_t count(ScalarType type, uint64_t maximum, const std::string &what) {
+    const double number = value(type, what);
+    if (number < 0 || number > double(maximum))
+      fail(what + " has the list count " + format(number) + " (allowed: 0 to " +
+           std::to_string(maximum) + ")");
+    return uint64_t(number);
+  }
+
+  [[noreturn]] void fail(const std::string &message) const {
+    if (encoding_ == Encoding::ascii)
+      throw InputError(path_ + ":" + std::to_string(line_) + ": " + message);
+    throw InputError(path_ + ": at byte " + std::to_string(position_) + ": " + message);
+  }
+
+  size_t remaining() const { return bytes_.size() - std::min(position_, bytes_.size()); }
+
+private:
+  static std::string format(double number) {
+    std::string text = std::to_string(number);
+    if (number == std::floor(number) && std::abs(number) < 1e15)
+      text = std::to_string(int64_t(number));
+    return text;
+  }
+
+  double ascii_value(ScalarType type, const std::string &what) {
+    while (position_ < bytes_.size() && std::strchr(" \t\r\n\f\v", bytes_[position_])) {
+      if (bytes_[position_] == '\n') ++line_;
+      ++position_;
+    }
+    if (position_ >= bytes_.size())
+      fail("the file ends inside " + what + " (truncated, or the header's counts are wrong)");
+    const size_t start = position_;
+    while (position_ < bytes_.size() && !std::strchr(" \t\r\n\f\v", bytes_[position_]))
+      ++position_;
+    std::string_view text(bytes_.data() + start, position_ - start);
+    std::string_view digits = text;
+    if (digits.size() > 1 && digits.front() == '+' && digits[1] != '-' && digits[1] != '+')
+      digits.remove_prefix(1);
+    double number = 0;
+    if (is_integer(type)) {
+      int64_t whole = 0;
+      auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), whole);
+      if (error != std::errc() || end != digits.data() + digits.size())
+        fail("'" + std::string(text.substr(0, 40)) + "' in " + what + " is not a whole number");
+      number = double(whole);
+      check_range(type, number, what);
+    } else {
+      auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), number,
+                                          std::chars_format::general);
+      if (error == std::errc::result_out_of_range)
+        fail("'" + std::string(text.substr(0, 40)) + "' in " + what +
+             " is beyond what double precision holds");
+      if (error != std::errc() || end != digits.data() + digits.size())
+        fail("'" + std::string(text.substr(0, 40)) + "' in " + what + " is not a number");
+    }
+    return number;
+  }
+
+  void check_range(ScalarType type, double number, const std::string &what) const {
+    double low = 0, high = 0;
+    switch (type) {
+    case ScalarType::int8:
+      low = -128, high = 127;
+      break;
+    case ScalarType::uint8:
+      high = 255;
+      break;
+    case ScalarType::int16:
+      low = -32768, high = 32767;
+      break;
+    case ScalarType::uint16:
+      high = 65535;
+      break;
+    case ScalarType::int32:
+      low = -2147483648.0, high = 2147483647.0;
+      break;
+    case ScalarType::uint32:
+      high = 4294967295.0;
+      break;
+    default:
+      return;
+    }
+    if (number < low || number > high)
+      fail(format(number) + " in " + what + " does not fit its declared type");
+  }
+
+  double binary_value(ScalarType type, const std::string &what) {
+    const int size = size_of(type);
+    if (remaining() < size_t(size))
+      fail("the file ends inside " + what + " (truncated, or the header's counts are wrong)");
+    unsigned char raw[8];
+    std::memcpy(raw, bytes_.data() + position_, size_t(size));
+    if (encoding_ == Encoding::binary_big_endian)
+      for (int i = 0; i < size / 2; ++i)
+        std::swap(raw[i], raw[size - 1 - i]);
+    position_ += size_t(size);
+    switch (type) {
+    case ScalarType::int8:
+      return double(int8_t(raw[0]));
+    case ScalarType::uint8:
+      return double(raw[0]);
+    case ScalarType::int16: {
+      int16_t v;
+      std::memcpy(&v, raw, 2);
+      return v;
+    }
+    case ScalarType::uint16: {
+      uint16_t v;
+      std::memcpy(&v, raw, 2);
+      return v;
+    }
+    case ScalarType::int32: {
+      int32_t v;
+      std::memcpy(&v, raw, 4);
+      return v;
+    }
+    case ScalarType::uint32: {
+      uint32_t v;
+      std::memcpy(&v, raw, 4);
+      return v;
+    }
+    case ScalarType::float32: {
+      float v;
+      std::memcpy(&v, raw, 4);
+      return v;
+    }
+    case ScalarType::float64: {
+      double v;
+      std::memcpy(&v, raw, 8);
+      return v;
+    }
+    }
+    return 0;
+  }
+
+  const std::string &path_;
+  const std::string &bytes_;
+  Encoding encoding_;
+  size_t position_;
+  size_t line_;
+};
+
+// The fewest bytes one instance of `element` can take: a lower bound that lets lying counts be
+// refused before anything is allocated (ASCII: a digit and a separator per value).
+double smallest_size(const Element &element, Encoding encoding) {
+  double bytes = 0;
+  for (const Property &property : element.properties)
+    bytes += encoding == Encoding::ascii
+                 ? 2.0
+                 : double(size_of(property.list ? property.count_type : property.type));
+  return bytes;
+}
+
+const Property *find_property(const Element &element, std::initializer_list<const char *> names) {
+  for (const Property &property : element.properties)
+    for (const char *name : names)
+      if (property.name == name) return &property;
+  return nullptr;
+}
+
+} // namespace
+
+MeshArrays read_ply(const std::string &path, const std::string &bytes,
+                    std::vector<std::string> &notes) {
+  if (bytes.empty()) throw InputError(path + ": the file is empty");
+  const Header header = parse_header(path, bytes);
+
+  const Element *vertices = nullptr, *faces = nullptr;
+  double smallest = 0;
+  for (const Element &element : header.elements) {
+    if (element.name == "vertex") vertices = &element;
+    if (element.name == "face") faces = &element;
+    smallest += smallest_size(element, header.encoding) * double(element.count);
+  }
+  if (smallest > double(bytes.size() - header.data_start))
+    throw InputError(path + ": the PLY header announces more vertices and faces than a file of " +
+                     std::to_string(bytes.size()) +
+                     " bytes can hold (truncated, or a wrong header)");
+  if (!vertices) throw InputError(path + ": the PLY file has no 'vertex' element");
+  const Property *coordinates[3];
+  for (int k = 0; k < 3; ++k) {
+    const char *name[] = {"x", "y", "z"};
+    coordinates[k] = find_property(*vertices, {name[k]});
+    if (!coordinates[k] || coordinates[k]->list)
+      throw InputError(path + ":" + std::to_string(vertices->header_line) +
+                       ": the vertex element has no scalar property '" + name[k] + "'");
+  }
+  const Property *corner_list = nullptr;
+  if (faces) {
+    corner_list = find_property(*faces, {"vertex_indices", "vertex_index"});
+    if (!corner_list || !corner_list->list || !is_integer(corner_list->type))
+      throw InputError(path + ":" + std::to_string(faces->header_line) +
+                       ": the face element has no integer list 'vertex_indices'");
+  } else {
+    notes.push_back("the PLY file has no face element (a point cloud?)");
+  }
+
+  MeshArrays arrays;
+  arrays.positions.reserve(size_t(vertices->count));
+  if (faces) arrays.triangles.reserve(size_t(faces->count));
+  ValueReader reader(path, bytes, header);
+  const uint64_t vertex_count = vertices->count;
+  // A list can hold no more values than bytes are left in the file.
+  // Faces are triangulated once all positions are known (an element order of faces first is
+  // legal PLY).
+  std::vector<std::vector<int>> polygon_list;
+  if (faces) polygon_list.reserve(size_t(faces->count));
+  std::vector<int> polygon;
+  for (const Element &element : header.elements) {
+    for (uint64_t i = 0; i < element.count; ++i) {
+      const std::string what = element.name + " " + std::to_string(i);
+      Point3 position(0, 0, 0);
+      polygon.clear();
+      for (const Property &property : element.properties) {
+        if (!property.list) {
+          const double number = reader.value(property.type, what);
+          if (&element == vertices)
+            for (int k = 0; k < 3; ++k)
+              if (&property == coordinates[k]) position[k] = number;
+          continue;
+        }
+        const uint64_t length = reader.count(
+            property.count_type,
+            &property == corner_list ? vertex_count : uint64_t(reader.remaining()), what);
+        if (&property == corner_list && length < 3)
+          reader.fail(what + " has " + std::to_string(length) +
+                      (length == 1 ? " corner" : " corners") + "; a face needs at least 3");
+        for (uint64_t k = 0; k < length; ++k) {
+          const double number = reader.value(property.type, what);
+          if (&property != corner_list) continue;
+          if (number < 0 || number >= double(vertex_count))
+            reader.fail(what + " refers to vertex " + std::to_string(int64_t(number)) +
+                        ", but the file has vertices 0.." + std::to_string(vertex_count - 1));
+          polygon.push_back(int(number));
+        }
+      }
+      if (&element == vertices) arrays.positions.push_back(position);
+      if (&element == faces) polygon_list.push_back(polygon);
+    }
+  }
+  size_t polygons = 0;
+  for (const std::vector<int> &corners : polygon_list) {
+    polygons += corners.size() > 3;
+    triangulate_polygon(corners, arrays.positions, arrays.triangles);
+  }
+  if (polygons)
+    notes.push_back("triangulated " + std::to_string(polygons) + " polygonal faces into " +
+                    std::to_string(arrays.triangles.size()) + " triangles in all");
+  return arrays;
+}
+
+} // namespace meromorph

@@ -1,0 +1,124 @@
+#include "maps/branch_star.h"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <map>
+#include <set>
+#include <utility>
+
+#include "maps/floater_embedding.h"
+
+namespace meromorph {
+
+std::vector<int> ordered_ring(const FaceIncidence &in, int vertex) {
+  std::vector<std::pair<int, int>> next; // (a, b) for each face (vertex, a, b)
+  for (int f : in.faces_of_vertex[size_t(vertex)]) {
+    const auto &corners = in.corners[size_t(f)];
+    const int k = int(std::find(corners.begin(), corners.end(), vertex) - corners.begin());
+    next.push_back({corners[size_t((k + 1) % 3)], corners[size_t((k + 2) % 3)]});
+  }
+  if (next.empty()) return {};
+  std::vector<int> ring{next.front().first};
+  while (ring.size() <= next.size()) {
+    auto step = std::find_if(next.begin(), next.end(),
+                             [&](const std::pair<int, int> &n) { return n.first == ring.back(); });
+    if (step == next.end()) return {};
+    if (step->second == ring.front()) break;
+    ring.push_back(step->second);
+  }
+  return ring.size() == next.size() ? ring : std::vector<int>{};
+}
+
+namespace {
+
+// The angle from a to b about the chart's origin, in (-pi, pi].
+double turn(const Eigen::Vector2d &a, const Eigen::Vector2d &b) {
+  return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+}
+
+// Square roots of the chart positions along a closed loop that turns twice around the origin,
+// continuous along it (the first one's root taken at half its angle in (-pi, pi]); false if the
+// loop does not turn twice.
+bool roots_along(const std::vector<int> &loop, std::map<int, Eigen::Vector2d> &chart,
+                 std::map<int, Eigen::Vector2d> &root) {
+  double angle = std::atan2(chart[loop[0]].y(), chart[loop[0]].x());
+  const double start = angle;
+  for (size_t k = 0; k < loop.size(); ++k) {
+    if (k > 0) angle += turn(chart[loop[k - 1]], chart[loop[k]]);
+    const double radius = std::sqrt(chart[loop[k]].norm());
+    root[loop[k]] = radius * Eigen::Vector2d(std::cos(angle / 2), std::sin(angle / 2));
+  }
+  angle += turn(chart[loop.back()], chart[loop.front()]);
+  return std::abs(angle - start - 4 * M_PI) < 1;
+}
+
+} // namespace
+
+std::optional<std::vector<std::pair<int, Eigen::Vector3d>>>
+reembed_around_branch(const Mesh &mesh, const FaceIncidence &in,
+                      const std::vector<Eigen::Vector3d> &sphere, int branch, int rings) {
+  const std::vector<int> ring = ordered_ring(in, branch);
+  if (ring.empty() || rings < 2) return std::nullopt;
+  const std::map<int, int> distance = ring_distances(in, {branch}, rings + 1);
+  const GnomonicChart gnomonic(sphere[size_t(branch)]);
+  std::map<int, Eigen::Vector2d> chart;
+  for (const auto &[v, d] : distance)
+    if (v != branch && !gnomonic.to_chart(sphere[size_t(v)], chart[v])) return std::nullopt;
+  // The outer ring in order: the boundary of the faces within `rings` rings, chained.
+  std::map<int, int> next;
+  std::set<std::pair<int, int>> directed;
+  for (const auto &[v, d] : distance)
+    if (d <= rings)
+      for (int f : in.faces_of_vertex[size_t(v)])
+        for (int k = 0; k < 3; ++k)
+          directed.insert(
+              {in.corners[size_t(f)][size_t(k)], in.corners[size_t(f)][size_t((k + 1) % 3)]});
+  for (const auto &[a, b] : directed)
+    if (!directed.count({b, a}) && !next.insert({a, b}).second) return std::nullopt;
+  if (next.empty()) return std::nullopt;
+  std::vector<int> outer{next.begin()->first};
+  while (outer.size() <= next.size()) {
+    const auto at = next.find(outer.back());
+    if (at == next.end()) return std::nullopt;
+    if (at->second == outer.front()) break;
+    outer.push_back(at->second);
+  }
+  if (outer.size() != next.size()) return std::nullopt; // not one loop
+  std::map<int, Eigen::Vector2d> root;
+  if (!roots_along(ring, chart, root) || !roots_along(outer, chart, root)) return std::nullopt;
+  // The two loops' roots on the same sheet of the square root: along a shortest path from the
+  // one-ring out, the image turns little per edge, so the root continues without a jump.
+  std::vector<int> path{ring[0]};
+  while (distance.at(path.back()) < rings + 1) {
+    int step = -1;
+    for (int f : in.faces_of_vertex[size_t(path.back())])
+      for (int w : in.corners[size_t(f)])
+        if (distance.count(w) && distance.at(w) == distance.at(path.back()) + 1) step = w;
+    if (step < 0) return std::nullopt;
+    path.push_back(step);
+  }
+  double angle = std::atan2(root[ring[0]].y(), root[ring[0]].x()) * 2;
+  for (size_t k = 1; k < path.size(); ++k)
+    angle += turn(chart[path[k - 1]], chart[path[k]]);
+  const Eigen::Vector2d along(std::cos(angle / 2), std::sin(angle / 2));
+  if (root[path.back()].dot(along) < 0)
+    for (int v : outer)
+      root[v] = -root[v];
+  std::vector<int> free;
+  for (const auto &[v, d] : distance)
+    if (d >= 2 && d <= rings) {
+      free.push_back(v);
+      root[v] = Eigen::Vector2d::Zero();
+    }
+  if (free.empty() || !floater_embedding(mesh, in, free, root)) return std::nullopt;
+  std::vector<std::pair<int, Eigen::Vector3d>> placed;
+  for (int v : free) {
+    const Eigen::Vector2d &r = root[v];
+    placed.push_back(
+        {v, gnomonic.to_sphere(Eigen::Vector2d(r.x() * r.x() - r.y() * r.y(), 2 * r.x() * r.y()))});
+  }
+  return placed;
+}
+
+} // namespace meromorph

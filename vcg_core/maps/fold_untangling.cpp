@@ -1,0 +1,148 @@
+#include "maps/fold_untangling.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include "maps/branch_star.h"
+#include "maps/floater_embedding.h"
+#include "mesh/mesh_edges.h"
+#include "sphere/sphere_geometry.h"
+
+namespace meromorph {
+namespace {
+
+constexpr int largest_ring = 5;
+
+// Re-embeds the region within `rings` rings of `seeds` in the gnomonic chart at `centre` (which
+// maps great circles to lines, so a face's orientation on the sphere is its orientation there):
+// its free vertices (not fixed, not on the rim) go to the mean-value-weighted mean of their
+// neighbours (Floater's embedding: no fold when the rim is convex), the rim and fixed vertices
+// stay (a branch vertex on the rim keeps its star). Kept only if no face of the region is folded
+// afterwards.
+bool reembed(const Mesh &mesh, const FaceIncidence &incidence, const std::vector<char> &is_fixed,
+             std::vector<Eigen::Vector3d> &sphere, const std::vector<int> &seeds, int rings,
+             const Eigen::Vector3d &centre) {
+  const auto &corners = incidence.corners;
+  const auto &faces_of = incidence.faces_of_vertex;
+  const std::map<int, int> ring_of = ring_distances(incidence, seeds, rings + 1);
+  auto is_free = [&](int v) {
+    const auto at = ring_of.find(v);
+    return at != ring_of.end() && at->second <= rings && !is_fixed[size_t(v)];
+  };
+  const GnomonicChart gnomonic(centre);
+  std::map<int, Eigen::Vector2d> chart;
+  for (const auto &[v, r] : ring_of)
+    if (!gnomonic.to_chart(sphere[size_t(v)], chart[v])) return false;
+  std::set<int> region_faces;
+  std::vector<int> free;
+  for (const auto &[v, r] : ring_of)
+    if (is_free(v)) {
+      free.push_back(v);
+      for (int g : faces_of[size_t(v)])
+        region_faces.insert(g);
+    }
+  if (free.empty() || !floater_embedding(mesh, incidence, free, chart)) return false;
+  std::vector<std::pair<int, Eigen::Vector3d>> before;
+  for (int v : free) {
+    before.push_back({v, sphere[size_t(v)]});
+    sphere[size_t(v)] = gnomonic.to_sphere(chart[v]);
+  }
+  for (int g : region_faces) {
+    const auto &t = corners[size_t(g)];
+    if (folded_image(sphere[size_t(t[0])], sphere[size_t(t[1])], sphere[size_t(t[2])])) {
+      for (const auto &[v, p] : before)
+        sphere[size_t(v)] = p;
+      return false;
+    }
+  }
+  return true;
+}
+
+} // namespace
+
+int untangle_folds(const Mesh &mesh, std::vector<Eigen::Vector3d> &sphere,
+                   const std::vector<int> &fixed) {
+  const FaceIncidence incidence = face_incidence(mesh);
+  const auto &corners = incidence.corners;
+  const auto &faces_of = incidence.faces_of_vertex;
+  std::vector<char> is_fixed(mesh.vert.size(), 0);
+  for (int v : fixed)
+    is_fixed[v] = 1;
+  auto folded = [&](int f) {
+    return folded_image(sphere[corners[f][0]], sphere[corners[f][1]], sphere[corners[f][2]]);
+  };
+  auto folded_around = [&](int v) {
+    int count = 0;
+    for (int f : faces_of[v])
+      count += folded(f);
+    return count;
+  };
+
+  int moved = 0;
+  for (int pass = 0; pass < 3; ++pass) {
+    bool changed = false;
+    for (size_t f = 0; f < mesh.face.size(); ++f) {
+      if (!folded(int(f))) continue;
+      bool near_fixed = false;
+      for (int v : corners[f])
+        near_fixed |= is_fixed[v] != 0;
+      if (near_fixed) continue;
+      for (int v : corners[f]) {
+        std::set<int> ring;
+        for (int g : faces_of[v])
+          for (int w : corners[g])
+            if (w != v) ring.insert(w);
+        Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+        for (int w : ring)
+          mean += sphere[w];
+        if (mean.norm() == 0) continue;
+        const Eigen::Vector3d original = sphere[v];
+        const int before = folded_around(v);
+        sphere[v] = mean.normalized();
+        if (folded_around(v) < before) {
+          ++moved;
+          changed = true;
+          break;
+        }
+        sphere[v] = original;
+      }
+    }
+    if (!changed) break;
+  }
+  // What is still folded: its region re-embedded, widening until it holds (next to a branch
+  // vertex too: it stays on the rim).
+  for (size_t f = 0; f < mesh.face.size(); ++f) {
+    if (!folded(int(f))) continue;
+    const std::vector<int> seeds(corners[f].begin(), corners[f].end());
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (int v : seeds)
+      mean += sphere[size_t(v)];
+    if (!(mean.norm() > 0)) continue;
+    bool done = false;
+    for (int rings = 1; rings <= largest_ring && !done; ++rings)
+      done = reembed(mesh, incidence, is_fixed, sphere, seeds, rings, mean.normalized());
+    // Beside a branch vertex: the rings around its star re-embedded about its value.
+    for (const auto &[b, d] : ring_distances(incidence, seeds, 2))
+      for (int rings = 2; rings <= largest_ring && !done && is_fixed[size_t(b)]; ++rings)
+        if (const auto around = reembed_around_branch(mesh, incidence, sphere, b, rings)) {
+          std::vector<std::pair<int, Eigen::Vector3d>> before;
+          for (const auto &[w, point] : *around) {
+            before.push_back({w, sphere[size_t(w)]});
+            sphere[size_t(w)] = point;
+          }
+          done = true;
+          for (const auto &[w, point] : *around)
+            for (int g : incidence.faces_of_vertex[size_t(w)])
+              done = done && !folded(g);
+          if (!done)
+            for (const auto &[w, point] : before)
+              sphere[size_t(w)] = point;
+        }
+    moved += done;
+  }
+  return moved;
+}
+
+} // namespace meromorph

@@ -1,0 +1,194 @@
+#include "maps/form_ratio_map.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <Eigen/CholmodSupport>
+#include <Eigen/SparseCore>
+
+#include "forms/holomorphic_forms.h"
+#include "mesh/face_vectors.h"
+#include "mesh/mesh_edges.h"
+#include "sphere/sphere_geometry.h"
+
+namespace meromorph {
+namespace {
+
+std::vector<Complex> holomorphic_coefficient(const Mesh &mesh, const MeshEdges &edges,
+                                             const FaceGeometry &geometry,
+                                             const Eigen::VectorXcd &form) {
+  const Eigen::MatrixX3d real_part = face_vectors(mesh, edges, geometry, form.real());
+  const Eigen::MatrixX3d imaginary_part = face_vectors(mesh, edges, geometry, form.imag());
+  return local_coefficients(mesh, geometry, real_part, imaginary_part).f;
+}
+
+// In one chart of the sphere: values F at the vertices of `region` that fit the face samples
+// `ratio` (F at the centroid = mean of the corners, weighted by the face's share of the area and
+// 1 / (1 + |ratio|^2)^2, the sphere's metric) while keeping the piecewise-linear map conformal:
+// plus `stiffness` times the conformal energy (Dirichlet energy minus signed image area, zero for
+// a similarity on each face). A faint pull towards `guess` keeps every vertex determined.
+std::vector<Complex> solve_chart(const Mesh &mesh, const FaceIncidence &in,
+                                 const FaceGeometry &geometry, const std::vector<char> &region,
+                                 const std::vector<Complex> &ratio,
+                                 const std::vector<char> &ratio_known,
+                                 const std::vector<Complex> &guess) {
+  // Unknowns: the region's vertices only, numbered densely.
+  std::vector<int> id(region.size(), -1);
+  int n = 0;
+  for (size_t v = 0; v < region.size(); ++v)
+    if (region[v]) id[v] = n++;
+  double mean_area = 0;
+  for (double a : geometry.areas)
+    mean_area += a;
+  mean_area /= double(std::max<size_t>(1, geometry.areas.size()));
+  const double stiffness = 1.0; // conformal energy against the data's area-weighted misfit
+  std::vector<Eigen::Triplet<Complex>> entries;
+  entries.reserve(in.corners.size() * 21 + region.size());
+  Eigen::VectorXcd right = Eigen::VectorXcd::Zero(n);
+  double largest = 0;
+  for (size_t f = 0; f < in.corners.size(); ++f) {
+    const auto &corners = in.corners[f];
+    if (!region[corners[0]] || !region[corners[1]] || !region[corners[2]]) continue;
+    const std::array<int, 3> c = {id[corners[0]], id[corners[1]], id[corners[2]]};
+    // The sphere's metric over the face (1 at F = 0): both terms measure the map on the sphere.
+    const double metric = ratio_known[f] ? 1.0 / std::pow(1.0 + std::norm(ratio[f]), 2) : 0.0;
+    if (ratio_known[f]) {
+      const double w = geometry.areas[f] / mean_area * metric / 9.0;
+      largest = std::max(largest, w);
+      for (int a : c) {
+        for (int b : c)
+          entries.emplace_back(a, b, w);
+        right[a] += 3.0 * w * ratio[f];
+      }
+    }
+    const MeshFace &face = mesh.face[f];
+    for (int k = 0; k < 3; ++k) {
+      const int i = c[(k + 1) % 3], j = c[(k + 2) % 3];
+      const Point3 u = face.cP((k + 1) % 3) - face.cP(k), v = face.cP((k + 2) % 3) - face.cP(k);
+      const double cross = (u ^ v).Norm();
+      if (!(cross > 0)) continue;
+      const double weight = stiffness * metric * 0.25 * (u * v) / cross;
+      entries.emplace_back(i, i, weight);
+      entries.emplace_back(j, j, weight);
+      entries.emplace_back(i, j, -weight);
+      entries.emplace_back(j, i, -weight);
+      // minus the signed image area, 1/2 Im(conj(F_a) F_b) along the side a -> b
+      const Complex area = stiffness * metric * Complex(0, -0.25);
+      entries.emplace_back(c[k], c[(k + 1) % 3], -area);
+      entries.emplace_back(c[(k + 1) % 3], c[k], -std::conj(area));
+    }
+  }
+  const double pull = 1e-9 * (largest > 0 ? largest : 1.0);
+  for (size_t v = 0; v < region.size(); ++v)
+    if (id[v] >= 0) {
+      entries.emplace_back(id[v], id[v], pull);
+      right[id[v]] += pull * guess[v];
+    }
+  // The Hermitian system H x = r as the real symmetric one [[Re H, -Im H], [Im H, Re H]]
+  // [Re x; Im x] = [Re r; Im r], factored by CHOLMOD (supernodal).
+  // (CHOLMOD cannot analyse an empty matrix, and Eigen does not check that it could.)
+  std::vector<Complex> values(guess);
+  if (n == 0) return values;
+  for (const Eigen::Triplet<Complex> &t : entries)
+    if (!std::isfinite(t.value().real()) || !std::isfinite(t.value().imag()))
+      return values; // the forms are not resolved here
+  Eigen::SparseMatrix<Complex> hermitian(n, n);
+  hermitian.setFromTriplets(entries.begin(), entries.end());
+  entries = {};
+  // The lower triangle of the real form (CHOLMOD reads only that).
+  std::vector<Eigen::Triplet<double>> real_entries;
+  real_entries.reserve(size_t(hermitian.nonZeros()) * 2);
+  for (int column = 0; column < n; ++column)
+    for (Eigen::SparseMatrix<Complex>::InnerIterator it(hermitian, column); it; ++it) {
+      const int i = int(it.row()), j = column;
+      const double re = it.value().real(), im = it.value().imag();
+      if (i >= j) {
+        real_entries.emplace_back(i, j, re);
+        real_entries.emplace_back(i + n, j + n, re);
+      }
+      if (im != 0) real_entries.emplace_back(i + n, j, im); // Im H below, -Im H above
+    }
+  Eigen::SparseMatrix<double> normal(2 * n, 2 * n);
+  normal.setFromTriplets(real_entries.begin(), real_entries.end());
+  Eigen::VectorXd real_right(2 * n);
+  real_right << right.real(), right.imag();
+  if (!real_right.allFinite()) return values;
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> factored(normal);
+  if (factored.info() != Eigen::Success) return values;
+  const Eigen::VectorXd real_solution = factored.solve(real_right);
+  if (factored.info() != Eigen::Success) return values;
+  Eigen::VectorXcd solution(n);
+  for (int i = 0; i < n; ++i)
+    solution[i] = Complex(real_solution[i], real_solution[i + n]);
+  for (size_t v = 0; v < region.size(); ++v)
+    if (id[v] >= 0 && std::isfinite(solution[id[v]].real()) &&
+        std::isfinite(solution[id[v]].imag()))
+      values[v] = solution[id[v]];
+  return values;
+}
+
+} // namespace
+
+std::vector<PlaneValue> form_ratio_map(const Mesh &mesh, const MeshEdges &edges,
+                                       const Eigen::VectorXcd &numerator,
+                                       const Eigen::VectorXcd &denominator) {
+  const int n = int(mesh.vert.size());
+  const size_t face_count = mesh.face.size();
+  const FaceGeometry geometry = face_geometry(mesh);
+  const FaceIncidence in = face_incidence(mesh);
+  const std::vector<Complex> top = holomorphic_coefficient(mesh, edges, geometry, numerator);
+  const std::vector<Complex> bottom = holomorphic_coefficient(mesh, edges, geometry, denominator);
+  // First guess per vertex: the area-weighted mean of its faces' samples on the sphere.
+  std::vector<Eigen::Vector3d> mean(static_cast<size_t>(n), Eigen::Vector3d::Zero());
+  for (size_t f = 0; f < face_count; ++f) {
+    const bool pole = std::abs(bottom[f]) == 0.0;
+    const Eigen::Vector3d sample =
+        to_sphere(PlaneValue{pole ? Complex() : top[f] / bottom[f], pole});
+    for (int v : in.corners[f])
+      mean[v] += geometry.areas[f] * sample;
+  }
+  std::vector<char> near_zero(static_cast<size_t>(n)), near_pole(static_cast<size_t>(n));
+  std::vector<double> size(static_cast<size_t>(n));
+  std::vector<Complex> guess_f(static_cast<size_t>(n)), guess_g(static_cast<size_t>(n));
+  for (int v = 0; v < n; ++v) {
+    const PlaneValue guess = to_plane_value(mean[v].normalized());
+    size[v] = guess.infinite ? HUGE_VAL : std::abs(guess.w);
+    near_zero[v] = size[v] < 8.0;
+    near_pole[v] = size[v] > 0.125;
+    if (near_zero[v]) guess_f[v] = guess.w;
+    if (near_pole[v] && size[v] > 0 && !guess.infinite) guess_g[v] = 1.0 / guess.w;
+  }
+  std::vector<Complex> ratio_f(face_count), ratio_g(face_count);
+  std::vector<char> known_f(face_count), known_g(face_count);
+  for (size_t f = 0; f < face_count; ++f) {
+    ratio_f[f] = top[f] / bottom[f];
+    ratio_g[f] = bottom[f] / top[f];
+    known_f[f] = std::isfinite(ratio_f[f].real()) && std::isfinite(ratio_f[f].imag());
+    known_g[f] = std::isfinite(ratio_g[f].real()) && std::isfinite(ratio_g[f].imag());
+  }
+  // F where |F| < 8, G = 1 / F where |F| > 1/8; blended on the sphere between 1/2 and 2.
+  const std::vector<Complex> f =
+      solve_chart(mesh, in, geometry, near_zero, ratio_f, known_f, guess_f);
+  const std::vector<Complex> g =
+      solve_chart(mesh, in, geometry, near_pole, ratio_g, known_g, guess_g);
+  std::vector<PlaneValue> values(static_cast<size_t>(n));
+  for (int v = 0; v < n; ++v) {
+    if (!near_pole[v]) {
+      values[v] = PlaneValue{f[v], false};
+      continue;
+    }
+    const Eigen::Vector3d pole_side =
+        std::abs(g[v]) == 0.0 ? Eigen::Vector3d(0, 0, 1) : to_sphere(1.0 / g[v]);
+    if (!near_zero[v]) {
+      values[v] = to_plane_value(pole_side);
+      continue;
+    }
+    const double s = std::clamp(0.5 + std::log2(size[v]) / 2.0, 0.0, 1.0);
+    const double t = s * s * (3 - 2 * s);
+    values[v] = to_plane_value(((1 - t) * to_sphere(f[v]) + t * pole_side).normalized());
+  }
+  return values;
+}
+
+} // namespace meromorph

@@ -1,0 +1,31 @@
+// Genus >= 2: the ratio of two holomorphic 1-forms, a meromorphic function of degree 2g - 2.
+//
+// In:  a mesh, its edges, and the numerator and denominator forms (complex values per edge).
+// Out: the value of F = numerator / denominator at every vertex, a value of the extended plane.
+//      Per face, the ratio of the forms' holomorphic coefficients (f of f dz + g dzbar, which
+//      drops the discrete forms' anti-holomorphic error) is a sample of F at the centroid. The
+//      vertex values are solved for globally, in two charts (F where |F| < 8, 1 / F where
+//      |F| > 1/8, blended on the sphere between 1/2 and 2, well inside both): the samples are
+//      fitted by least squares, weighted by face area in the sphere's metric, together with the
+//      conformal energy of the piecewise-linear map (Dirichlet energy minus signed image area: zero
+//      where a face's image is similar to the face). A per-vertex fit would differentiate the
+//      forms' face-to-face noise, which on needle-ridden triangulations (raw marching cubes, scans)
+//      exceeds what a piecewise-linear map tolerates; the energy keeps the values of neighbouring
+//      vertices consistent, so such meshes map as conformally as remeshed ones.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "mesh/mesh.h"
+#include "mesh/mesh_edges.h"
+#include "sphere/sphere_geometry.h"
+
+namespace meromorph {
+
+std::vector<PlaneValue> form_ratio_map(const Mesh &mesh, const MeshEdges &edges,
+                                       const Eigen::VectorXcd &numerator,
+                                       const Eigen::VectorXcd &denominator);
+
+} // namespace meromorph

@@ -1,0 +1,188 @@
+#include "maps/genus0_correction.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "forms/cotan_laplacian.h"
+
+namespace meromorph {
+namespace {
+
+constexpr double outer_share = 0.1;     // the vertices farthest out, left out of the shear's median
+constexpr double south_cap_share = 0.1; // pinned in the south-pole step
+
+Eigen::Vector3d position(const MeshVertex &vertex) {
+  return Eigen::Vector3d(vertex.cP()[0], vertex.cP()[1], vertex.cP()[2]);
+}
+
+// The Beltrami ratio nu = z_conj(w) / conj(z_w) of the linear map from face f, in its own
+// conformal coordinate w, to the values z at its corners.
+Complex face_shear(const Mesh &mesh, int f, const std::vector<PlaneValue> &values) {
+  const MeshFace &face = mesh.face[size_t(f)];
+  const Eigen::Vector3d p0 = position(*face.cV(0)), d1 = position(*face.cV(1)) - p0,
+                        d2 = position(*face.cV(2)) - p0;
+  const Eigen::Vector3d e1 = d1.normalized();
+  const Eigen::Vector3d e2 = d1.cross(d2).cross(d1).normalized();
+  const Complex w1(d1.dot(e1), 0), w2(d2.dot(e1), d2.dot(e2));
+  const Complex z0 = values[size_t(index_of(mesh, face.cV(0)))].w;
+  const Complex z1 = values[size_t(index_of(mesh, face.cV(1)))].w - z0;
+  const Complex z2 = values[size_t(index_of(mesh, face.cV(2)))].w - z0;
+  // z = a w + b conj(w) on the face: two equations for a and b.
+  const Complex determinant = w1 * std::conj(w2) - w2 * std::conj(w1);
+  const Complex a = (z1 * std::conj(w2) - z2 * std::conj(w1)) / determinant;
+  const Complex b = (w1 * z2 - w2 * z1) / determinant;
+  return b / std::conj(a);
+}
+
+double median(std::vector<double> values) {
+  std::nth_element(values.begin(), values.begin() + long(values.size() / 2), values.end());
+  return values[values.size() / 2];
+}
+
+// The vertices ordered by |z - centre|, nearest first.
+std::vector<int> by_distance_from(const std::vector<PlaneValue> &values, Complex centre) {
+  std::vector<std::pair<double, int>> order;
+  for (size_t v = 0; v < values.size(); ++v)
+    order.push_back({values[v].infinite ? INFINITY : std::abs(values[v].w - centre), int(v)});
+  std::sort(order.begin(), order.end());
+  std::vector<int> out;
+  for (const auto &entry : order)
+    out.push_back(entry.second);
+  return out;
+}
+
+// The harmonic extension of complex values given at `pinned` (the rest ignored) to every other
+// vertex, with one step of iterative refinement (residual summed over edge differences).
+Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian,
+                                    const MeshEdges &edges, const std::vector<double> &weights,
+                                    SolverKind solver, const std::vector<int> &pinned,
+                                    const Eigen::VectorXcd &fixed) {
+  const std::unique_ptr<LaplacianSolver> factored = factor_laplacian(laplacian, solver, pinned);
+  Eigen::VectorXcd out(fixed.size());
+  for (int part = 0; part < 2; ++part) {
+    const Eigen::VectorXd given =
+        part == 0 ? Eigen::VectorXd(fixed.real()) : Eigen::VectorXd(fixed.imag());
+    Eigen::VectorXd x = factored->solve(-(laplacian * given)) + given;
+    x -= factored->solve(laplacian_of_differences(edges, weights, x));
+    if (part == 0)
+      out.real() = x;
+    else
+      out.imag() = x;
+  }
+  return out;
+}
+
+} // namespace
+
+std::vector<int> folded_plane_faces(const Mesh &mesh, const std::vector<PlaneValue> &values) {
+  std::vector<int> folded;
+  for (size_t f = 0; f < mesh.face.size(); ++f) {
+    PlaneValue corner[3];
+    bool inside_unit_disk = true;
+    for (int k = 0; k < 3; ++k) {
+      corner[k] = values[size_t(index_of(mesh, mesh.face[f].cV(k)))];
+      inside_unit_disk &= !corner[k].infinite && std::abs(corner[k].w) < 1;
+    }
+    Complex z[3];
+    bool chart_ok = true;
+    for (int k = 0; k < 3; ++k) {
+      if (inside_unit_disk)
+        z[k] = corner[k].w;
+      else if (corner[k].infinite)
+        z[k] = 0;
+      else if (std::abs(corner[k].w) == 0)
+        chart_ok = false;
+      else
+        z[k] = 1.0 / corner[k].w;
+    }
+    if (!chart_ok) // a face from 0 to beyond the unit circle: only the plane chart holds it
+      for (int k = 0; k < 3; ++k)
+        z[k] = corner[k].w;
+    const double size = std::max(std::abs(z[1] - z[0]), std::abs(z[2] - z[0]));
+    const double distance = std::max({std::abs(z[0]), std::abs(z[1]), std::abs(z[2])});
+    if (size < 1e-12 * distance) continue; // below what doubles resolve
+    if (std::imag(std::conj(z[1] - z[0]) * (z[2] - z[0])) <= 0) folded.push_back(int(f));
+  }
+  return folded;
+}
+
+Genus0Correction correct_genus0_map(const Mesh &mesh, const MeshEdges &edges,
+                                    const std::vector<double> &weights, SolverKind solver,
+                                    int puncture_face, const std::vector<PlaneValue> &pinned_map) {
+  Genus0Correction out;
+  out.values = pinned_map;
+  const size_t n = pinned_map.size();
+  for (const PlaneValue &value : pinned_map)
+    if (value.infinite) return out;
+  const size_t folded_before = folded_plane_faces(mesh, pinned_map).size();
+  auto accept = [&](const std::vector<PlaneValue> &candidate) {
+    if (folded_plane_faces(mesh, candidate).size() > folded_before) return false;
+    out.values = candidate;
+    ++out.steps_taken;
+    return true;
+  };
+
+  // 1. The shear.
+  std::vector<char> outer(n, 0);
+  {
+    const std::vector<int> order = by_distance_from(pinned_map, Complex(0, 0));
+    for (size_t i = n - size_t(double(n) * outer_share); i < n; ++i)
+      outer[size_t(order[i])] = 1;
+  }
+  std::vector<double> nu_real, nu_imag;
+  for (size_t f = 0; f < mesh.face.size(); ++f) {
+    if (int(f) == puncture_face) continue;
+    bool far = false;
+    for (int k = 0; k < 3; ++k)
+      far |= bool(outer[size_t(index_of(mesh, mesh.face[f].cV(k)))]);
+    if (far) continue;
+    const Complex nu = face_shear(mesh, int(f), pinned_map);
+    if (!std::isfinite(nu.real()) || !std::isfinite(nu.imag())) continue;
+    nu_real.push_back(nu.real());
+    nu_imag.push_back(nu.imag());
+  }
+  if (nu_real.empty()) return out;
+  const Complex nu(median(nu_real), median(nu_imag));
+  if (!(std::abs(nu) < 0.5)) return out; // not a small shear: not this model's case
+  std::vector<PlaneValue> unsheared = pinned_map;
+  for (PlaneValue &value : unsheared)
+    value.w -= nu * std::conj(value.w);
+  if (!accept(unsheared)) return out;
+  out.shear = nu;
+
+  const Eigen::SparseMatrix<double> laplacian = cotan_laplacian(int(n), edges, weights);
+  // 2. The south-pole step, in the chart zeta = 1 / (z - z_s).
+  std::vector<double> real, imag;
+  for (const PlaneValue &value : out.values) {
+    real.push_back(value.w.real());
+    imag.push_back(value.w.imag());
+  }
+  const Complex south(median(real), median(imag));
+  {
+    const std::vector<int> order = by_distance_from(out.values, south);
+    const std::vector<int> pinned(
+        order.begin(), order.begin() + long(std::max<double>(3, double(n) * south_cap_share)));
+    Eigen::VectorXcd fixed = Eigen::VectorXcd::Zero(long(n));
+    for (int v : pinned) {
+      const Complex d = out.values[size_t(v)].w - south;
+      fixed[v] = std::abs(d) > 0 ? 1.0 / d : Complex(0, 0);
+    }
+    const Eigen::VectorXcd zeta =
+        harmonic_extension(laplacian, edges, weights, solver, pinned, fixed);
+    std::vector<char> is_pinned(n, 0);
+    for (int v : pinned)
+      is_pinned[size_t(v)] = 1;
+    std::vector<PlaneValue> candidate = out.values;
+    for (size_t v = 0; v < n; ++v) {
+      if (is_pinned[v]) continue;
+      if (std::abs(zeta[long(v)]) == 0)
+        candidate[v] = {Complex(0, 0), true};
+      else
+        candidate[v] = {south + 1.0 / zeta[long(v)], false};
+    }
+    accept(candidate);
+  }
+  return out;
+}
+
+} // namespace meromorph

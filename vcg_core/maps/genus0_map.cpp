@@ -1,0 +1,123 @@
+#include "maps/genus0_map.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "common/errors.h"
+#include "forms/cotan_laplacian.h"
+#include "mesh/face_vectors.h"
+#include "sphere/sphere_geometry.h"
+
+namespace meromorph {
+
+namespace {
+
+// The pole is modelled by 1 / (w - centroid) in the face's own plane: accurate for a small,
+// well-shaped face. Among the faces of about median area, the one with the largest smallest angle.
+int best_shaped_face(const Mesh &mesh, const FaceGeometry &geometry) {
+  std::vector<double> areas = geometry.areas;
+  std::nth_element(areas.begin(), areas.begin() + long(areas.size() / 2), areas.end());
+  const double median = areas[areas.size() / 2];
+  int best = 0;
+  double best_angle = -1;
+  for (size_t f = 0; f < mesh.face.size(); ++f) {
+    if (geometry.areas[f] < 0.5 * median || geometry.areas[f] > 2 * median) continue;
+    const double smallest = smallest_angle(mesh.face[f]);
+    if (smallest > best_angle) {
+      best_angle = smallest;
+      best = int(f);
+    }
+  }
+  return best;
+}
+
+} // namespace
+
+Genus0Map genus0_map(const Mesh &mesh, const MeshEdges &edges, const std::vector<double> &weights,
+                     SolverKind solver, int puncture_face, const std::vector<char> &raise) {
+  constexpr int refinement_steps = 2;
+  Genus0Map out;
+  const FaceGeometry geometry = face_geometry(mesh);
+  if (puncture_face < 0) puncture_face = best_shaped_face(mesh, geometry);
+  if (puncture_face >= int(mesh.face.size()))
+    throw ArgumentError("puncture face " + std::to_string(puncture_face) + " does not exist");
+  out.puncture_face = puncture_face;
+
+  // Strictly positive weights on the chosen edges: a floor relative to the typical weight.
+  std::vector<double> positive = weights;
+  std::vector<double> sorted;
+  for (double w : weights)
+    if (w > 0) sorted.push_back(w);
+  std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
+  const double floor = 1e-3 * sorted[sorted.size() / 2];
+  for (size_t e = 0; e < positive.size(); ++e)
+    if (positive[e] < floor && (raise.empty() || raise[e])) {
+      positive[e] = floor;
+      ++out.raised_weights;
+    }
+  const Eigen::SparseMatrix<double> laplacian =
+      cotan_laplacian(int(mesh.vert.size()), edges, positive);
+
+  // The pole triangle: 1 / (w - c) at the puncture face's corners, in the face's own frame.
+  const MeshFace &face = mesh.face[puncture_face];
+  std::vector<int> corners;
+  Eigen::Vector3d p[3];
+  for (int k = 0; k < 3; ++k) {
+    corners.push_back(index_of(mesh, face.cV(k)));
+    p[k] = Eigen::Vector3d(face.cP(k)[0], face.cP(k)[1], face.cP(k)[2]);
+  }
+  const Eigen::Vector3d centroid = (p[0] + p[1] + p[2]) / 3.0;
+  const Eigen::Vector3d e1 = (p[1] - p[0]).normalized();
+  const Eigen::Vector3d e2 = geometry.normals[puncture_face].cross(e1);
+  const double size = std::sqrt(geometry.areas[puncture_face]);
+  Eigen::VectorXd fixed_u = Eigen::VectorXd::Zero(long(mesh.vert.size()));
+  Eigen::VectorXd fixed_v = fixed_u;
+  for (int k = 0; k < 3; ++k) {
+    const Complex w((p[k] - centroid).dot(e1) / size, (p[k] - centroid).dot(e2) / size);
+    const Complex z = 1.0 / w;
+    fixed_u[corners[k]] = z.real();
+    fixed_v[corners[k]] = z.imag();
+  }
+
+  // Dirichlet problem: L_free z_free = -L_free,pinned z_pinned.
+  const std::unique_ptr<LaplacianSolver> factored = factor_laplacian(laplacian, solver, corners);
+  // Long thin parts crowd into spots far smaller than the map's own scale, where one solve's
+  // error (relative to the whole map) can exceed the faces. Iterative refinement with the
+  // residual summed over edge differences (exact there) makes each spot accurate relative to its
+  // own size, down to the spacing of doubles.
+  auto harmonic_extension = [&](const Eigen::VectorXd &fixed) {
+    Eigen::VectorXd x = factored->solve(-(laplacian * fixed)) + fixed;
+    for (int step = 0; step < refinement_steps; ++step)
+      x -= factored->solve(laplacian_of_differences(edges, positive, x));
+    return x;
+  };
+  const Eigen::VectorXd u = harmonic_extension(fixed_u);
+  const Eigen::VectorXd v = harmonic_extension(fixed_v);
+
+  // Scale so that the median |z| is 1 (a Moebius scaling; centring comes later).
+  std::vector<double> radii(mesh.vert.size());
+  for (size_t i = 0; i < radii.size(); ++i)
+    radii[i] = std::hypot(u[long(i)], v[long(i)]);
+  std::nth_element(radii.begin(), radii.begin() + long(radii.size() / 2), radii.end());
+  const double scale = radii[radii.size() / 2] > 0 ? 1.0 / radii[radii.size() / 2] : 1.0;
+  out.values.reserve(mesh.vert.size());
+  for (size_t i = 0; i < mesh.vert.size(); ++i)
+    out.values.push_back({Complex(u[long(i)], v[long(i)]) * scale, false});
+  // Orientation in the plane: every face but the pole face must turn counter-clockwise.
+  for (size_t f = 0; f < mesh.face.size(); ++f) {
+    if (int(f) == puncture_face) continue;
+    Complex z[3];
+    for (int k = 0; k < 3; ++k)
+      z[k] = out.values[index_of(mesh, mesh.face[f].cV(k))].w;
+    // A face smaller than about 1e-12 of its distance from 0 is below what doubles resolve: no
+    // weight can unfold it (a better pole can; see parameterization.cpp).
+    const double size = std::max(std::abs(z[1] - z[0]), std::abs(z[2] - z[0]));
+    const double distance = std::max({std::abs(z[0]), std::abs(z[1]), std::abs(z[2])});
+    if (size < 1e-12 * distance) continue;
+    if (std::imag(std::conj(z[1] - z[0]) * (z[2] - z[0])) <= 0) out.folded_faces.push_back(int(f));
+  }
+  out.weights = std::move(positive);
+  return out;
+}
+
+} // namespace meromorph

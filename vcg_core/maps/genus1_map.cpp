@@ -1,0 +1,137 @@
+#include "maps/genus1_map.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <queue>
+
+#include "common/errors.h"
+#include "maps/genus1_branch_placement.h"
+#include "mesh/face_vectors.h"
+
+namespace meromorph {
+
+namespace {
+
+// z per vertex: psi integrated along a breadth-first tree from `root` (z = 0 there).
+std::vector<Complex> integrate_from(int root, const std::vector<std::vector<int>> &incident,
+                                    const MeshEdges &edges, const Eigen::VectorXcd &psi) {
+  std::vector<Complex> flat(incident.size(), Complex(0, 0));
+  std::vector<char> reached(incident.size(), 0);
+  std::queue<int> frontier;
+  frontier.push(root);
+  reached[size_t(root)] = 1;
+  while (!frontier.empty()) {
+    const int v = frontier.front();
+    frontier.pop();
+    for (int e : incident[size_t(v)]) {
+      const bool forward = edges.vertices[e][0] == v;
+      const int w = forward ? edges.vertices[e][1] : edges.vertices[e][0];
+      if (reached[size_t(w)]) continue;
+      reached[size_t(w)] = 1;
+      flat[size_t(w)] = flat[size_t(v)] + (forward ? psi[e] : -psi[e]);
+      frontier.push(w);
+    }
+  }
+  return flat;
+}
+
+// The automatic origin. The double pole doubles the corners there: they must be well below 90
+// degrees. The pole's neighbourhood covers a large part of the sphere: it goes where the flat
+// metric is large (on a long thin part, whose flat image is exponentially small, the rest of the
+// surface would crowd into a spot that doubles do not resolve). And the three half periods from
+// it, where P branches too, must fall near vertices with narrow corners. Of the vertices where
+// the flat metric is at least half its 90th percentile, the 8 whose widest corner is narrowest
+// are candidates, ordered by their worst spot (themselves, or the best of the 8 vertices nearest
+// each half period): the narrower its widest corner, the better.
+std::vector<int> origin_candidates(const Mesh &mesh, const MeshEdges &edges,
+                                   const Eigen::VectorXcd &psi, const std::vector<Complex> &flat,
+                                   const WeierstrassP &p_function) {
+  const size_t vertex_count = mesh.vert.size();
+  const std::vector<double> widest = widest_flat_corners(mesh, edges, psi);
+  const std::vector<double> scale = flat_area_ratios(mesh, edges, psi);
+  std::vector<double> sorted = scale;
+  const auto high = sorted.begin() + std::ptrdiff_t(0.9 * double(vertex_count - 1));
+  std::nth_element(sorted.begin(), high, sorted.end());
+  const double enough = 0.5 * *high;
+  std::vector<int> candidates;
+  for (size_t v = 0; v < vertex_count; ++v)
+    if (scale[v] >= enough) candidates.push_back(int(v));
+  const size_t kept = std::min<size_t>(8, candidates.size());
+  std::partial_sort(candidates.begin(), candidates.begin() + std::ptrdiff_t(kept), candidates.end(),
+                    [&](int a, int b) { return widest[size_t(a)] < widest[size_t(b)]; });
+  candidates.resize(kept);
+  // Flat positions in lattice coordinates (z = (a + b tau) w1), for the distances below.
+  const Complex tau = p_function.tau(), w1 = 2.0 * p_function.half_periods()[0];
+  auto lattice_coordinates = [&](const Complex &z) {
+    const Complex u = z / w1;
+    const double b = u.imag() / tau.imag();
+    return std::array<double, 2>{u.real() - b * tau.real(), b};
+  };
+  std::vector<std::array<double, 2>> lattice(vertex_count);
+  for (size_t v = 0; v < vertex_count; ++v)
+    lattice[v] = lattice_coordinates(flat[v]);
+  std::vector<std::pair<double, int>> scored, distance(vertex_count);
+  for (int origin : candidates) {
+    double score = widest[size_t(origin)];
+    for (const Complex &half : p_function.half_periods()) {
+      const auto [ta, tb] = lattice_coordinates(flat[size_t(origin)] + half);
+      for (size_t v = 0; v < vertex_count; ++v) {
+        const double da = lattice[v][0] - ta, db = lattice[v][1] - tb;
+        distance[v] = {std::abs(da - std::round(da) + (db - std::round(db)) * tau), int(v)};
+      }
+      std::nth_element(distance.begin(), distance.begin() + 7, distance.end());
+      double spot = std::numeric_limits<double>::infinity();
+      for (int k = 0; k < 8; ++k)
+        spot = std::min(spot, widest[size_t(distance[size_t(k)].second)]);
+      score = std::max(score, spot);
+    }
+    scored.push_back({score, origin});
+  }
+  std::sort(scored.begin(), scored.end());
+  std::vector<int> ordered;
+  for (const auto &[score, origin] : scored)
+    ordered.push_back(origin);
+  return ordered;
+}
+
+} // namespace
+
+std::vector<int> genus1_origin_candidates(const Mesh &mesh, const MeshEdges &edges,
+                                          const Eigen::VectorXcd &psi,
+                                          const WeierstrassP &p_function) {
+  return origin_candidates(
+      mesh, edges, psi,
+      integrate_from(0, edges_at_vertices(edges, int(mesh.vert.size())), edges, psi), p_function);
+}
+
+Genus1Map genus1_map(const Mesh &mesh, const MeshEdges &edges, const Eigen::VectorXcd &psi,
+                     Complex period_a, Complex period_b, int origin_vertex) {
+  const int vertex_count = int(mesh.vert.size());
+  if (origin_vertex >= vertex_count)
+    throw ArgumentError("origin vertex " + std::to_string(origin_vertex) + " does not exist (0.." +
+                        std::to_string(vertex_count - 1) + ")");
+  Genus1Map out{{}, {}, WeierstrassP(period_a, period_b), {}, -1};
+  const std::vector<std::vector<int>> incident = edges_at_vertices(edges, vertex_count);
+  if (origin_vertex < 0)
+    origin_vertex =
+        origin_candidates(mesh, edges, psi, integrate_from(0, incident, edges, psi), out.p_function)
+            .front();
+  out.flat = integrate_from(origin_vertex, incident, edges, psi);
+
+  out.values.reserve(vertex_count);
+  for (const Complex &z : out.flat) {
+    const bool pole = out.p_function.is_lattice_point(z, 1e-12);
+    out.values.push_back(PlaneValue{pole ? Complex() : out.p_function.value(z), pole});
+  }
+  const auto roots = out.p_function.roots();
+  for (int k = 0; k < 3; ++k)
+    out.branch_values[k] = {roots[k], false};
+
+  out.origin_vertex = origin_vertex;
+  out.branch_values[3] = {Complex(), true};
+  return out;
+}
+
+} // namespace meromorph

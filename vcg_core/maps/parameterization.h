@@ -1,0 +1,139 @@
+// The main job: a conformal map of a closed surface of any genus onto the sphere.
+//
+// In:  a mesh that validation accepts, options, progress (cancellable).
+// Out: `Parameterization`: the map as a unit-sphere position per vertex (genus 0: a degree-1 map;
+//      genus 1: the Weierstrass P-function of the flat coordinate, degree 2; genus g >= 2: the
+//      ratio (omega1 + omega2) / (omega1 - omega2) of two holomorphic forms, by default the first
+//      of a fixed list of generic pairs that the mesh resolves, degree 2g - 2), Moebius-centred
+//      unless asked not to; its degree, branch points with local degrees and the Riemann-Hurwitz
+//      check; layers (sheets) and the layered-sphere positions; texture coordinates per vertex and
+//      per wedge; distortion; modulus or Riemann matrix; timings. Nothing is forced: what is
+//      reported is what was measured.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "common/progress.h"
+#include "forms/laplacian_solver.h"
+#include "maps/form_pairs.h"
+#include "mesh/mesh.h"
+#include "sphere/map_quality.h"
+#include "sphere/mobius_centering.h"
+#include "sphere/sheets.h"
+#include "sphere/sphere_geometry.h"
+#include "sphere/texture_coordinates.h"
+
+namespace meromorph {
+
+struct ParameterizeOptions {
+  UvKind uv = UvKind::spherical;
+  bool mobius = true;
+  int origin_vertex = -1; // genus 1: where z = 0, the double pole of P (-1: automatic)
+  std::array<int, 2> form_pair{-1, -1}; // genus >= 2: (psi_i + psi_j) / (psi_i - psi_j); -1, -1:
+                                        // a generic pair mixing all forms (parameterization.cpp)
+  double layer_gap = 0.0;               // layer k on the sphere of radius 1 + gap * k
+  int puncture_face = -1;               // genus 0: the face at the pole (-1: automatic)
+  SolverKind solver = SolverKind::cholmod;
+  bool close_holes = false; // parameterize_surface: close holes for the computation only
+  // parameterize_surface, several parts, spherical texture coordinates: part k's texture in cell k
+  // of a grid of n x n cells over the unit square (n = ceil(sqrt(parts)), row by row from the
+  // bottom left) instead of each filling the unit square.
+  bool pack_uv = false;
+  // parameterize_surface: take non-manifold vertices and edges apart for the computation
+  // (nonmanifold_split.h) instead of refusing the mesh.
+  bool split_nonmanifold = false;
+};
+
+// What parameterize_surface took apart (nonmanifold_split.h): input vertices that were split,
+// input edges with more than two faces, and how many vertices the split added.
+struct NonmanifoldSplitReport {
+  std::vector<int> vertices;
+  std::vector<std::array<int, 2>> edges;
+  int added_vertices = 0;
+};
+
+// A hole closed for the computation (surface_map.h): its part, loop length in edges, a vertex of
+// it, and the share of the sphere its closing faces cover (the gap it leaves in the outputs).
+struct ClosedHoleReport {
+  int part = 0, edges = 0, vertex = -1;
+  double image_area_over_4pi = 0;
+};
+
+struct BranchPoint {
+  int vertex = -1;
+  Eigen::Vector3d position;
+  Eigen::Vector3d sphere;
+  int local_degree = 1;   // e; the point is a branch point of order e - 1
+  int sphere_vertex = -1; // non-manifold spots split: the vertex in the layered sphere's numbering
+};
+
+struct Parameterization {
+  int genus = 0;
+  int euler = 2;
+  int degree = 0;
+  std::string method;
+  double area_over_4pi = 0;
+  int ramification = 0;
+  bool riemann_hurwitz_ok = false;
+  std::vector<BranchPoint> branch_points;
+  std::optional<Complex> modulus;
+  Eigen::MatrixXcd riemann_matrix;
+  double non_holomorphicity_mean = 0;
+  bool mobius_applied = false;
+  MobiusCentering mobius;
+  MapQuality quality;
+  Sheets sheets;
+  std::vector<Eigen::Vector3d> sphere;  // unit sphere
+  std::vector<Eigen::Vector3d> layered; // radius 1 + gap * layer
+  std::vector<int> branch_flag;         // local degree at branch vertices, 0 elsewhere
+  TextureCoordinates uv;
+  std::vector<std::pair<std::string, double>> timings_ms;
+  // What the method used.
+  int puncture_face = -1, raised_weights = 0, origin_vertex = -1;
+  // Branch points placed on vertices fold-free: genus 1, half periods (genus1_branch_placement.h);
+  // genus >= 2, critical points repaired inside faces (branch_snapping.h).
+  int snapped_branch_points = 0;
+  int untangled_vertices = 0; // sliver corners moved to unfold them (fold_untangling.h)
+  std::array<int, 2> form_pair{-1, -1};
+  FormPair form_coefficients; // genus >= 2: a_k, b_k of the pair used (form_pairs.h)
+  int pair_attempts = 0;      // genus >= 2: pairs tried until one was generic
+  int origin_attempts = 0;    // genus 1: origins tried until the map was valid
+  // Whether the map as written is a valid branched cover: the expected degree (1, 2 or 2g - 2;
+  // a chosen pair of forms may share zeros and give less), Riemann-Hurwitz, no face turned
+  // over. `invalid` says what fails, with face indices.
+  bool valid = false;
+  std::vector<std::string> invalid;
+  // When the map is not valid: the likely causes found on this mesh and what to do, in the words
+  // of a MeshLab or Blender user; empty otherwise.
+  std::string advice;
+  std::vector<std::string> notes; // harmless oddities of the mesh (coincident vertices, ...)
+  // parameterize_surface, when the mesh had several parts or holes were closed: each part's own
+  // map (figures only: its per-vertex arrays are in the ones above, in the input's numbering; its
+  // branch points' vertices are the input's, -1 at a hole's centre), and the holes closed.
+  std::vector<Parameterization> components;
+  std::vector<ClosedHoleReport> holes_closed;
+  std::vector<int> vertex_component; // per vertex: its part (empty: one part); part k's layered
+                                     // sphere is centred at x = k * component_spacing
+  double component_spacing = 0;
+  // parameterize_surface with split_nonmanifold on a non-manifold mesh: the per-vertex arrays
+  // above are per vertex of the split mesh (the input's vertices first, then the copies), whose
+  // faces are `sphere_faces` (the input's, in order, pointing at the copies) and whose vertices
+  // come from `sphere_source_vertex`; branch points name input vertices. Empty otherwise.
+  NonmanifoldSplitReport nonmanifold_split;
+  std::vector<int> sphere_source_vertex;
+  std::vector<std::array<int, 3>> sphere_faces;
+};
+
+struct Validation;
+
+// `validated`: the mesh's validation when the caller has made it (and it found nothing).
+Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &options = {},
+                              const Progress &progress = {}, const Validation *validated = nullptr);
+
+} // namespace meromorph

@@ -1,0 +1,39 @@
+// Closed 1-forms as vectors on faces, and the face geometry they need.
+//
+// In:  a mesh, its oriented edges, and a closed 1-form (one value per edge).
+// Out: per face, the unique vector a in the face's plane with <a, p_j - p_i> = form(ij) on its
+//      three sides (the gradient of the linear function the form integrates to on that face);
+//      face unit normals and areas, corner angles, the area each vertex stands for. The Hodge
+//      star of a face vector is n x a.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "mesh/mesh.h"
+#include "mesh/mesh_edges.h"
+
+namespace meromorph {
+
+struct FaceGeometry {
+  std::vector<Eigen::Vector3d> normals; // unit
+  std::vector<double> areas;
+};
+
+FaceGeometry face_geometry(const Mesh &mesh);
+
+// The angle at corner k of a face, in radians.
+double corner_angle(const MeshFace &face, int k);
+
+// The smallest of a face's three corner angles, in radians.
+double smallest_angle(const MeshFace &face);
+
+// A third of the area of every face around each vertex: the surface area a vertex stands for.
+std::vector<double> vertex_areas(const Mesh &mesh);
+
+// Face vectors, one row per face (F x 3).
+Eigen::MatrixX3d face_vectors(const Mesh &mesh, const MeshEdges &edges,
+                              const FaceGeometry &geometry, const Eigen::VectorXd &form);
+
+} // namespace meromorph

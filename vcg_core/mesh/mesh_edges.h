@@ -1,0 +1,45 @@
+// Oriented edges of a closed, oriented, edge-manifold triangle mesh, for 1-forms.
+//
+// In:  a compact mesh that validation accepted (closed, oriented, manifold).
+// Out: `MeshEdges`: every edge once, oriented from `vertices[e][0]` to `vertices[e][1]`; its left
+//      face (which traverses it in that direction) and right face; for every face its three edges
+//      (edge k joins corners k and k+1) and the sign (+1 when the face traverses the edge in the
+//      edge's direction). A 1-form is a vector of per-edge values in the edges' directions.
+//      Also, for any compact mesh, the incidences the map stages walk: edges at each vertex, and
+//      faces at each vertex with every face's three vertices.
+#pragma once
+
+#include <array>
+#include <map>
+#include <vector>
+
+#include "mesh/mesh.h"
+
+namespace meromorph {
+
+struct MeshEdges {
+  std::vector<std::array<int, 2>> vertices;   // per edge: from, to
+  std::vector<std::array<int, 2>> faces;      // per edge: left, right
+  std::vector<std::array<int, 3>> face_edges; // per face: edge of side k (corner k -> k+1)
+  std::vector<std::array<int, 3>> face_signs; // per face: +1 / -1
+
+  int edge_count() const { return int(vertices.size()); }
+};
+
+MeshEdges build_mesh_edges(const Mesh &mesh);
+
+// For each vertex, the edges that end at it.
+std::vector<std::vector<int>> edges_at_vertices(const MeshEdges &edges, int vertex_count);
+
+struct FaceIncidence {
+  std::vector<std::array<int, 3>> corners;       // per face: its three vertices
+  std::vector<std::vector<int>> faces_of_vertex; // per vertex: the faces around it
+};
+
+FaceIncidence face_incidence(const Mesh &mesh);
+
+// The ring distance from `sources` of every vertex at most `radius` rings away.
+std::map<int, int> ring_distances(const FaceIncidence &in, const std::vector<int> &sources,
+                                  int radius);
+
+} // namespace meromorph

@@ -1,0 +1,183 @@
+#include "mesh/nonmanifold_split.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <tuple>
+
+#include <Eigen/Geometry>
+
+#include "mesh/mesh_from_arrays.h"
+
+namespace meromorph {
+namespace {
+
+struct CornerSets {
+  std::vector<int> parent;
+  explicit CornerSets(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int root(int c) {
+    while (parent[size_t(c)] != c)
+      c = parent[size_t(c)] = parent[size_t(parent[size_t(c)])];
+    return c;
+  }
+  void join(int a, int b) { parent[size_t(root(a))] = root(b); }
+};
+
+struct EdgeUse {
+  int low, high, face, from; // from: the face's corner where the edge starts
+  int from_vertex(const MeshArrays &mesh) const {
+    return mesh.triangles[size_t(face)][size_t(from)];
+  }
+  bool operator<(const EdgeUse &o) const {
+    return std::tie(low, high, face, from) < std::tie(o.low, o.high, o.face, o.from);
+  }
+};
+
+bool repeats_vertex(const std::array<int, 3> &t) {
+  return t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
+}
+
+Eigen::Vector3d position(const MeshArrays &mesh, int v) {
+  return mesh.positions[size_t(v)].ToEigenVector<Eigen::Vector3d>();
+}
+
+// Around one edge with more than two faces: for each face, the face it is glued to (-1: none).
+std::vector<int> partners_around_edge(const MeshArrays &mesh, const std::vector<EdgeUse> &uses) {
+  const size_t n = uses.size();
+  std::vector<int> partner(n, -1);
+  const Eigen::Vector3d a = position(mesh, uses[0].low);
+  Eigen::Vector3d axis = position(mesh, uses[0].high) - a;
+  if (!(axis.norm() > 0)) return partner;
+  axis.normalize();
+  const Eigen::Vector3d u1 = axis.unitOrthogonal(), u2 = axis.cross(u1);
+  std::vector<double> angle(n);
+  std::vector<int> turn(n); // +1: the face's back (inside) is towards increasing angle
+  for (size_t i = 0; i < n; ++i) {
+    const auto &t = mesh.triangles[size_t(uses[i].face)];
+    const Eigen::Vector3d p0 = position(mesh, t[0]), p1 = position(mesh, t[1]),
+                          p2 = position(mesh, t[2]);
+    const Eigen::Vector3d d = position(mesh, t[size_t((uses[i].from + 2) % 3)]) - a;
+    const Eigen::Vector3d normal = (p1 - p0).cross(p2 - p0);
+    const double side = axis.cross(d).dot(normal);
+    if (!(std::abs(side) > 0)) return partner; // a flat or degenerate face: leave all apart
+    angle[i] = std::atan2(d.dot(u2), d.dot(u1));
+    turn[i] = side < 0 ? 1 : -1;
+  }
+  std::vector<size_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](size_t i, size_t j) { return angle[i] < angle[j]; });
+  std::vector<size_t> place(n);
+  for (size_t k = 0; k < n; ++k)
+    place[order[k]] = k;
+  auto neighbour = [&](size_t i) {
+    return order[turn[i] > 0 ? (place[i] + 1) % n : (place[i] + n - 1) % n];
+  };
+  for (size_t i = 0; i < n; ++i) {
+    const size_t j = neighbour(i);
+    const bool opposite_directions = uses[i].from_vertex(mesh) != uses[j].from_vertex(mesh);
+    if (j != i && neighbour(j) == i && opposite_directions) partner[i] = int(j);
+  }
+  return partner;
+}
+
+} // namespace
+
+NonmanifoldSplit split_nonmanifold(const Mesh &input, Mesh &split) {
+  MeshArrays mesh = arrays_from_mesh(input);
+  const size_t vertex_count = mesh.positions.size(), face_count = mesh.triangles.size();
+
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * face_count);
+  for (size_t f = 0; f < face_count; ++f) {
+    const auto &t = mesh.triangles[f];
+    if (repeats_vertex(t)) continue;
+    for (int k = 0; k < 3; ++k) {
+      const int a = t[size_t(k)], b = t[size_t((k + 1) % 3)];
+      uses.push_back({std::min(a, b), std::max(a, b), int(f), k});
+    }
+  }
+  std::sort(uses.begin(), uses.end());
+
+  NonmanifoldSplit out;
+  CornerSets corners(3 * face_count);
+  auto corner_at = [&](const EdgeUse &use, int vertex) {
+    const auto &t = mesh.triangles[size_t(use.face)];
+    const int k = t[0] == vertex ? 0 : t[1] == vertex ? 1 : 2;
+    return 3 * use.face + k;
+  };
+  auto glue = [&](const EdgeUse &one, const EdgeUse &other) {
+    for (int vertex : {one.low, one.high})
+      corners.join(corner_at(one, vertex), corner_at(other, vertex));
+  };
+  // The faces around each edge; edges with two faces glued first, so that around an edge with
+  // more, faces already joined through their fans are known.
+  std::vector<std::vector<EdgeUse>> crowded;
+  for (size_t begin = 0, end; begin < uses.size(); begin = end) {
+    for (end = begin + 1; end < uses.size() && uses[end].low == uses[begin].low &&
+                          uses[end].high == uses[begin].high;
+         ++end) {
+    }
+    if (end - begin == 2) glue(uses[begin], uses[begin + 1]);
+    if (end - begin > 2) crowded.emplace_back(uses.begin() + long(begin), uses.begin() + long(end));
+  }
+  for (const std::vector<EdgeUse> &around : crowded) {
+    out.split_edges.push_back({around[0].low, around[0].high});
+    // Two faces whose fans already meet at an end of the edge must be glued to each other (else
+    // the edge keeps more than two faces); the others are paired by their geometry.
+    const size_t n = around.size();
+    std::vector<std::vector<size_t>> joined(n);
+    for (size_t i = 0; i < n; ++i)
+      for (size_t j = 0; j < n; ++j)
+        if (i != j && (corners.root(corner_at(around[i], around[i].low)) ==
+                           corners.root(corner_at(around[j], around[j].low)) ||
+                       corners.root(corner_at(around[i], around[i].high)) ==
+                           corners.root(corner_at(around[j], around[j].high))))
+          joined[i].push_back(j);
+    std::vector<EdgeUse> free;
+    for (size_t i = 0; i < n; ++i) {
+      if (joined[i].empty()) free.push_back(around[i]);
+      const size_t j = joined[i].empty() ? i : joined[i][0];
+      if (joined[i].size() == 1 && joined[j].size() == 1 && i < j &&
+          around[i].from_vertex(mesh) != around[j].from_vertex(mesh))
+        glue(around[i], around[j]);
+    }
+    if (free.size() < 2) continue;
+    const std::vector<int> partner = partners_around_edge(mesh, free);
+    for (size_t i = 0; i < free.size(); ++i)
+      if (partner[i] > int(i)) glue(free[i], free[size_t(partner[i])]);
+  }
+
+  // One vertex per set of glued corners: the input's index for the fan of its first face.
+  std::vector<int> vertex_of_set(3 * face_count, -1);
+  std::vector<char> claimed(vertex_count, 0), was_split(vertex_count, 0);
+  out.source_vertex.resize(vertex_count);
+  std::iota(out.source_vertex.begin(), out.source_vertex.end(), 0);
+  std::vector<std::array<int, 3>> triangles = mesh.triangles;
+  for (size_t f = 0; f < face_count; ++f) {
+    if (repeats_vertex(mesh.triangles[f])) continue;
+    for (int k = 0; k < 3; ++k) {
+      const int vertex = mesh.triangles[f][size_t(k)];
+      int &assigned = vertex_of_set[size_t(corners.root(int(3 * f) + k))];
+      if (assigned < 0) {
+        if (!claimed[size_t(vertex)]) {
+          claimed[size_t(vertex)] = 1;
+          assigned = vertex;
+        } else {
+          assigned = int(mesh.positions.size());
+          mesh.positions.push_back(mesh.positions[size_t(vertex)]);
+          out.source_vertex.push_back(vertex);
+          was_split[size_t(vertex)] = 1;
+        }
+      }
+      triangles[f][size_t(k)] = assigned;
+    }
+  }
+  for (size_t v = 0; v < vertex_count; ++v)
+    if (was_split[v]) out.split_vertices.push_back(int(v));
+  out.added_vertices = int(mesh.positions.size() - vertex_count);
+  mesh.triangles = std::move(triangles);
+  mesh_from_arrays(mesh, split);
+  return out;
+}
+
+} // namespace meromorph

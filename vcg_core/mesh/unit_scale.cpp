@@ -1,0 +1,52 @@
+#include "mesh/unit_scale.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "mesh/mesh_from_arrays.h"
+
+namespace meromorph {
+
+Point3 UnitScale::apply(const Point3 &position) const {
+  Point3 out;
+  // Halve before subtracting: x - c cannot overflow even for coordinates near the largest double.
+  for (int k = 0; k < 3; ++k)
+    out[k] = std::ldexp(std::ldexp(position[k], -1) - std::ldexp(centre[k], -1), exponent + 1);
+  return out;
+}
+
+UnitScale unit_scale_of(const Mesh &mesh) {
+  UnitScale scale;
+  if (mesh.vert.empty()) return scale;
+  Point3 low = mesh.vert[0].cP(), high = low;
+  for (const MeshVertex &vertex : mesh.vert)
+    for (int k = 0; k < 3; ++k) {
+      low[k] = std::min(low[k], vertex.cP()[k]);
+      high[k] = std::max(high[k], vertex.cP()[k]);
+    }
+  double half_extent = 0; // the largest |coordinate - centre|, halved against overflow
+  for (int k = 0; k < 3; ++k) {
+    scale.centre[k] = std::ldexp(low[k], -1) + std::ldexp(high[k], -1);
+    half_extent = std::max(half_extent, std::ldexp(high[k], -2) - std::ldexp(low[k], -2));
+  }
+  if (half_extent > 0 && std::isfinite(half_extent)) {
+    int exponent = 0;
+    std::frexp(half_extent, &exponent); // half_extent = m 2^exponent, m in [0.5, 1)
+    scale.exponent = -(exponent + 1);
+  }
+  return scale;
+}
+
+bool is_at_unit_scale(const Mesh &mesh) {
+  const UnitScale scale = unit_scale_of(mesh);
+  return scale.exponent == 0 && scale.centre.Norm() < 1e-3;
+}
+
+void copy_at_unit_scale(const Mesh &mesh, const UnitScale &scale, Mesh &unit) {
+  MeshArrays arrays = arrays_from_mesh(mesh);
+  for (Point3 &position : arrays.positions)
+    position = scale.apply(position);
+  mesh_from_arrays(arrays, unit);
+}
+
+} // namespace meromorph

@@ -1,0 +1,31 @@
+// Scale-safe geometry: conformal maps depend neither on position nor on scale, so the core
+// computes on a copy of the mesh centred at the origin and scaled by a power of two to unit
+// size. Squared lengths, areas and cotangents then never overflow or underflow, and every
+// tolerance means the same on a mesh in nanometres as in light years.
+//
+// In:  a mesh with finite coordinates (validation refuses any other).
+// Out: `UnitScale` (the centre and the power-of-two factor: unit = (input - centre) * factor,
+//      exact up to one rounding), and the copy with the same vertices and faces in the same order.
+#pragma once
+
+#include "mesh/mesh.h"
+
+namespace meromorph {
+
+struct UnitScale {
+  Point3 centre{0, 0, 0}; // the centre of the bounding box
+  int exponent = 0;       // factor = 2^exponent; the largest |coordinate - centre| is in [0.5, 1)
+  // The unit-scale position of an input position (safe up to the largest doubles).
+  Point3 apply(const Point3 &position) const;
+};
+
+UnitScale unit_scale_of(const Mesh &mesh);
+
+// True when `mesh` is already centred and of unit size (a copy would change nothing that
+// matters).
+bool is_at_unit_scale(const Mesh &mesh);
+
+// `unit` becomes the vertices of `mesh` moved by `scale`, with the same faces in the same order.
+void copy_at_unit_scale(const Mesh &mesh, const UnitScale &scale, Mesh &unit);
+
+} // namespace meromorph

@@ -1,0 +1,171 @@
+#include "report/report_json.h"
+
+namespace meromorph {
+
+nlohmann::json topology_json(const Topology &topology) {
+  nlohmann::json loops = nlohmann::json::array();
+  for (const BoundaryLoop &loop : topology.boundary_loops)
+    loops.push_back({{"vertex", loop.first_vertex}, {"edges", loop.length}});
+  return {
+      {"vertices", topology.vertices},
+      {"edges", topology.edges},
+      {"faces", topology.faces},
+      {"components", topology.component_faces.size()},
+      {"component_faces", topology.component_faces},
+      {"boundary_loops", loops},
+      {"non_manifold_edges", topology.non_manifold_edges},
+      {"euler", topology.euler},
+      {"orientable", topology.orientable},
+      {"genus", topology.genus ? nlohmann::json(*topology.genus) : nlohmann::json(nullptr)},
+  };
+}
+
+nlohmann::json findings_json(const Validation &validation) {
+  nlohmann::json findings = nlohmann::json::array();
+  for (const Finding &f : validation.findings) {
+    nlohmann::json edges = nlohmann::json::array();
+    for (const auto &edge : f.edges)
+      edges.push_back({edge[0], edge[1]});
+    findings.push_back({{"code", finding_code(f.kind)},
+                        {"message", f.message},
+                        {"repairable", f.repairable},
+                        {"vertices", f.vertices},
+                        {"edges", edges},
+                        {"faces", f.faces},
+                        {"sizes", f.sizes}});
+  }
+  return findings;
+}
+
+nlohmann::json source_json(const MeshSource &source) {
+  return {{"path", source.path}, {"format", format_name(source.format)}, {"notes", source.notes}};
+}
+
+nlohmann::json complex_matrix_json(const Eigen::MatrixXcd &matrix) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (long i = 0; i < matrix.rows(); ++i) {
+    nlohmann::json row = nlohmann::json::array();
+    for (long j = 0; j < matrix.cols(); ++j)
+      row.push_back({matrix(i, j).real(), matrix(i, j).imag()});
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+namespace {
+
+nlohmann::json statistics_json(const QualityStatistics &s) {
+  return {{"faces", s.faces},
+          {"quasi_conformal_mean", s.quasi_conformal_mean},
+          {"quasi_conformal_p95", s.quasi_conformal_p95},
+          {"quasi_conformal_max", s.quasi_conformal_max},
+          {"angle_error_mean_degrees", s.angle_error_mean_degrees},
+          {"folded_faces", s.folded_faces},
+          {"collapsed_faces", s.collapsed_faces}};
+}
+
+nlohmann::json vector_json(const Eigen::Vector3d &v) {
+  return {v[0], v[1], v[2]};
+}
+
+} // namespace
+
+nlohmann::json parameterization_json(const Parameterization &map) {
+  nlohmann::json branch_points = nlohmann::json::array();
+  for (const BranchPoint &b : map.branch_points) {
+    branch_points.push_back({{"vertex", b.vertex},
+                             {"position", vector_json(b.position)},
+                             {"sphere", vector_json(b.sphere)},
+                             {"local_degree", b.local_degree},
+                             {"ramification", b.local_degree}}); // the old name, for one release
+    if (b.sphere_vertex >= 0) branch_points.back()["sphere_vertex"] = b.sphere_vertex;
+  }
+  nlohmann::json timings = nlohmann::json::object();
+  for (const auto &[stage, ms] : map.timings_ms) // a stage run more than once: its total
+    timings[stage] = timings.value(stage, 0.0) + ms;
+  nlohmann::json report = {
+      {"genus", map.genus},
+      {"euler", map.euler},
+      {"degree", map.degree},
+      {"image_area_over_4pi", map.area_over_4pi},
+      {"method", map.method},
+      {"branch_points", branch_points},
+      {"ramification_total", map.ramification},
+      {"snapped_branch_points", map.snapped_branch_points},
+      {"untangled_vertices", map.untangled_vertices},
+      {"riemann_hurwitz_ok", map.riemann_hurwitz_ok},
+      {"layers",
+       {{"count", map.sheets.count},
+        {"coverage", map.sheets.coverage},
+        {"cut_faces", map.sheets.cut_faces}}},
+      {"mobius",
+       {{"applied", map.mobius_applied},
+        {"centroid_before", vector_json(map.mobius.centroid_before)},
+        {"centroid_after", vector_json(map.mobius.centroid_after)},
+        {"newton_steps", map.mobius.steps}}},
+      {"distortion",
+       {{"overall", statistics_json(map.quality.overall)},
+        {"away_from_branch_points", statistics_json(map.quality.away_from_branch_points)}}},
+      {"non_holomorphicity_mean", map.non_holomorphicity_mean},
+      {"timings_ms", timings}};
+  // With several parts the genus-specific figures are the parts' (in `components`).
+  const bool one_part = map.components.size() <= 1;
+  if (map.modulus) report["modulus"] = {map.modulus->real(), map.modulus->imag()};
+  if (one_part && map.genus >= 2)
+    report["riemann_matrix"] = complex_matrix_json(map.riemann_matrix);
+  if (one_part && map.genus == 0)
+    report["genus0"] = {{"pole_face", map.puncture_face}, {"raised_weights", map.raised_weights}};
+  if (one_part && map.genus == 1) {
+    report["origin_vertex"] = map.origin_vertex;
+    report["origin_attempts"] = map.origin_attempts;
+  }
+  report["valid"] = map.valid;
+  report["invalid"] = map.invalid;
+  if (!map.advice.empty()) report["advice"] = map.advice;
+  report["notes"] = map.notes;
+  if (!map.components.empty()) {
+    nlohmann::json components = nlohmann::json::array();
+    for (const Parameterization &part : map.components) {
+      nlohmann::json entry = parameterization_json(part);
+      entry["faces"] = part.quality.overall.faces;
+      entry.erase("timings_ms");
+      components.push_back(entry);
+    }
+    report["components"] = components;
+    report["component_spacing"] = map.component_spacing;
+    nlohmann::json holes = nlohmann::json::array();
+    for (const ClosedHoleReport &hole : map.holes_closed)
+      holes.push_back({{"part", hole.part},
+                       {"edges", hole.edges},
+                       {"vertex", hole.vertex},
+                       {"sphere_area_over_4pi", hole.image_area_over_4pi}});
+    report["holes_closed"] = holes;
+  }
+  if (!map.sphere_source_vertex.empty()) {
+    nlohmann::json edges = nlohmann::json::array();
+    for (const auto &edge : map.nonmanifold_split.edges)
+      edges.push_back({edge[0], edge[1]});
+    report["nonmanifold_split"] = {{"vertices", map.nonmanifold_split.vertices},
+                                   {"edges", edges},
+                                   {"added_vertices", map.nonmanifold_split.added_vertices}};
+  }
+  if (one_part && map.genus >= 2) {
+    report["form_pair"] = map.form_pair;
+    auto coefficients = [](const Eigen::VectorXcd &c) {
+      nlohmann::json list = nlohmann::json::array();
+      for (const auto &value : c)
+        list.push_back({value.real(), value.imag()});
+      return list;
+    };
+    report["form_coefficients"] = {{"a", coefficients(map.form_coefficients.first)},
+                                   {"b", coefficients(map.form_coefficients.second)}};
+    report["pair_attempts"] = map.pair_attempts;
+  }
+  return report;
+}
+
+std::string json_text(const nlohmann::json &report) {
+  return report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+} // namespace meromorph

@@ -1,0 +1,34 @@
+// JSON views of the core's results, shared by the CLI reports and the C ABI.
+//
+// In:  a Topology, a Validation, a MeshSource, a Parameterization.
+// Out: nlohmann::json objects with the field names documented in the README (`info --json`), and
+//      their text.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "io/mesh_reader.h"
+#include "maps/parameterization.h"
+#include "mesh/topology.h"
+#include "mesh/validation.h"
+
+namespace meromorph {
+
+nlohmann::json topology_json(const Topology &topology);
+nlohmann::json findings_json(const Validation &validation);
+nlohmann::json source_json(const MeshSource &source);
+
+// The REPORT.json of `meromorph param` (design.md section 3), without input, repairs and version.
+nlohmann::json parameterization_json(const Parameterization &map);
+
+// The text of a report, indented by 2. Bytes that are not UTF-8 (a file name, or file content
+// quoted in a message) are replaced by U+FFFD rather than failing.
+std::string json_text(const nlohmann::json &report);
+
+// [[re, im], ...] rows of a complex matrix.
+nlohmann::json complex_matrix_json(const Eigen::MatrixXcd &matrix);
+
+} // namespace meromorph

@@ -1,0 +1,130 @@
+#include "sphere/mobius_centering.h"
+
+#include <algorithm>
+
+#include <Eigen/Dense>
+
+namespace meromorph {
+namespace {
+
+Eigen::Vector3d translate(const Eigen::Vector3d &x, const Eigen::Vector3d &c) {
+  const Eigen::Vector3d d = x - c;
+  const double d2 = d.squaredNorm();
+  if (d2 < 1e-300) return -c.normalized(); // the point at c goes to the antipode of c's direction
+  return ((1 - c.squaredNorm()) * d / d2 - c).normalized();
+}
+
+Eigen::Vector3d translated_centroid(const std::vector<Eigen::Vector3d> &points,
+                                    const std::vector<double> &weights, const Eigen::Vector3d &c) {
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  double total = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    sum += weights[i] * translate(points[i], c);
+    total += weights[i];
+  }
+  return sum / total;
+}
+
+} // namespace
+
+Eigen::Vector3d centroid(const std::vector<Eigen::Vector3d> &points,
+                         const std::vector<double> &weights) {
+  return translated_centroid(points, weights, Eigen::Vector3d::Zero());
+}
+
+namespace {
+
+std::vector<Eigen::Vector3d> project(const std::vector<PlaneValue> &values) {
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(values.size());
+  for (const PlaneValue &v : values)
+    points.push_back(to_sphere(v));
+  return points;
+}
+
+// The plane form of the ball translation by c: fitted through three points of the 26 cube
+// directions whose points and images stay farthest from infinity (a strong translation pushes
+// nearly everything towards one spot, which may be the north pole).
+Mobius translation_matrix(const Eigen::Vector3d &c) {
+  std::vector<std::pair<double, Eigen::Vector3d>> samples;
+  for (int x = -1; x <= 1; ++x)
+    for (int y = -1; y <= 1; ++y)
+      for (int z = -1; z <= 1; ++z)
+        if (x || y || z) {
+          const Eigen::Vector3d p = Eigen::Vector3d(x, y, z).normalized();
+          samples.push_back({std::max(p.z(), translate(p, c).z()), p});
+        }
+  std::sort(samples.begin(), samples.end(),
+            [](const auto &a, const auto &b) { return a.first < b.first; });
+  Complex from[3], to[3];
+  int found = 0;
+  for (const auto &[height, p] : samples) {
+    if (height > 0.999) break;
+    const Complex w = to_plane(p), image = to_plane(translate(p, c));
+    bool apart = true;
+    for (int k = 0; k < found; ++k)
+      apart &= std::abs(w - from[k]) > 1e-3 && std::abs(image - to[k]) > 1e-9;
+    if (!apart) continue;
+    from[found] = w;
+    to[found] = image;
+    if (++found == 3) break;
+  }
+  if (found < 3) return Mobius{};
+  return Mobius::through(from, to);
+}
+
+} // namespace
+
+MobiusCentering center_on_sphere(std::vector<PlaneValue> &values,
+                                 const std::vector<double> &weights) {
+  MobiusCentering out;
+  const std::vector<PlaneValue> original = values;
+  std::vector<Eigen::Vector3d> points = project(values);
+  out.centroid_before = centroid(points, weights);
+  Eigen::Vector3d current = out.centroid_before;
+  for (; out.steps < 100 && current.norm() > 1e-12; ++out.steps) {
+    // Newton step on c -> centroid after translating by c, Jacobian by central differences.
+    Eigen::Matrix3d jacobian;
+    const double h = 1e-6;
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d step = h * Eigen::Vector3d::Unit(k);
+      jacobian.col(k) = (translated_centroid(points, weights, step) -
+                         translated_centroid(points, weights, -step)) /
+                        (2 * h);
+    }
+    Eigen::Vector3d newton = -jacobian.fullPivLu().solve(current);
+    if (!newton.allFinite()) newton = Eigen::Vector3d::Zero();
+    if (newton.norm() > 0.95) newton *= 0.95 / newton.norm();
+    // Far from centred (mass crowded at one spot), Newton's model is poor: also try pushing
+    // straight away from the centroid by steps of several sizes, and keep the best.
+    std::vector<Eigen::Vector3d> candidates;
+    for (double scale = 1.0; scale > 1e-6; scale *= 0.5)
+      candidates.push_back(scale * newton);
+    for (double size : {0.99, 0.95, 0.9, 0.8, 0.6, 0.4, 0.2, 0.1})
+      candidates.push_back(size * current.normalized());
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    double best = current.norm();
+    for (const Eigen::Vector3d &candidate : candidates) {
+      const double norm = translated_centroid(points, weights, candidate).norm();
+      if (norm < best) {
+        best = norm;
+        c = candidate;
+      }
+    }
+    if (c.norm() == 0) break;
+    out.transformation = translation_matrix(c).after(out.transformation);
+    for (size_t i = 0; i < values.size(); ++i)
+      values[i] = out.transformation.apply(original[i]);
+    points = project(values);
+    const Eigen::Vector3d next = centroid(points, weights);
+    if (next.norm() >= current.norm()) {
+      current = next;
+      break;
+    }
+    current = next;
+  }
+  out.centroid_after = current;
+  return out;
+}
+
+} // namespace meromorph

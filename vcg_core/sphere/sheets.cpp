@@ -1,0 +1,277 @@
+#include "sphere/sheets.h"
+
+#include <algorithm>
+#include <array>
+#include <numeric>
+#include <queue>
+
+#include "sphere/branch_points.h"
+#include "sphere/sphere_geometry.h"
+
+namespace meromorph {
+namespace {
+
+using Vector = Eigen::Vector3d;
+
+constexpr double unsure_edge_length = 1e-6;
+
+// Is x on the minor great-circle arc from a to b?
+bool on_arc(const Vector &x, const Vector &a, const Vector &b) {
+  const Vector n = a.cross(b);
+  return a.cross(x).dot(n) >= 0 && x.cross(b).dot(n) >= 0 && x.dot(a + b) > 0;
+}
+
+bool arcs_cross(const Vector &a1, const Vector &a2, const Vector &b1, const Vector &b2) {
+  const Vector p = a1.cross(a2).cross(b1.cross(b2));
+  if (p.norm() < 1e-300) return false;
+  const Vector unit = p.normalized();
+  for (const Vector &x : {unit, Vector(-unit)})
+    if (on_arc(x, a1, a2) && on_arc(x, b1, b2)) return true;
+  return false;
+}
+
+// Is x inside the (small, positively oriented) spherical triangle a, b, c?
+bool inside(const Vector &x, const Vector &a, const Vector &b, const Vector &c) {
+  return a.cross(b).dot(x) >= 0 && b.cross(c).dot(x) >= 0 && c.cross(a).dot(x) >= 0 &&
+         x.dot(a + b + c) > 0;
+}
+
+} // namespace
+
+namespace {
+
+// A tree on the sphere through every branch value: its nodes and its arcs (pairs of node indices).
+struct CutTree {
+  std::vector<Vector> nodes;
+  std::vector<std::array<int, 2>> arcs;
+};
+
+// The minimum spanning tree of the branch values: the shortest tree, so the fewest faces cut.
+CutTree minimum_spanning_tree(const std::vector<Vector> &values) {
+  CutTree tree{values, {}};
+  const size_t n = values.size();
+  std::vector<char> joined(n, 0);
+  std::vector<double> distance(n, 1e300);
+  std::vector<int> parent(n, -1);
+  distance[0] = 0;
+  for (size_t step = 0; step < n; ++step) {
+    size_t next = n;
+    for (size_t i = 0; i < n; ++i)
+      if (!joined[i] && (next == n || distance[i] < distance[next])) next = i;
+    joined[next] = 1;
+    if (parent[next] >= 0) tree.arcs.push_back({parent[next], int(next)});
+    for (size_t i = 0; i < n; ++i) {
+      const double d = (values[i] - values[next]).norm();
+      if (!joined[i] && d < distance[i]) {
+        distance[i] = d;
+        parent[i] = int(next);
+      }
+    }
+  }
+  return tree;
+}
+
+// Directions of a grid over the sphere, farthest from every branch value first.
+std::vector<Vector> directions_away_from(const std::vector<Vector> &values) {
+  std::vector<std::pair<double, Vector>> directions;
+  for (int i = -2; i <= 2; ++i)
+    for (int j = -2; j <= 2; ++j)
+      for (int k = -2; k <= 2; ++k) {
+        if (!i && !j && !k) continue;
+        const Vector candidate = Vector(i + 0.123, j + 0.0456, k + 0.0789).normalized();
+        double nearest = 2;
+        for (const Vector &b : values)
+          nearest = std::min(nearest, 1 - candidate.dot(b));
+        directions.push_back({-nearest, candidate});
+      }
+  std::sort(directions.begin(), directions.end(),
+            [](const auto &a, const auto &b) { return a.first < b.first; });
+  std::vector<Vector> sorted;
+  for (const auto &[distance, direction] : directions)
+    sorted.push_back(direction);
+  return sorted;
+}
+
+// A star: every branch value joined to `star`.
+CutTree star_tree(const std::vector<Vector> &values, const Vector &star) {
+  CutTree tree{values, {}};
+  tree.nodes.push_back(star);
+  for (size_t i = 0; i < values.size(); ++i)
+    tree.arcs.push_back({int(i), int(values.size())});
+  return tree;
+}
+
+// Layers of a degree-d map (d >= 2) cut along `tree`.
+Sheets label_with_cuts(const Mesh &mesh, const MeshEdges &edges, const std::vector<Vector> &sphere,
+                       const std::vector<int> &branch_vertices, int degree,
+                       const std::vector<double> &areas, const CutTree &tree) {
+  Sheets out;
+  const int face_count = int(mesh.face.size());
+  out.vertex_layer.assign(mesh.vert.size(), 0);
+  auto corner = [&](int f, int k) -> const Vector & {
+    return sphere[index_of(mesh, mesh.face[f].cV(k))];
+  };
+  const std::vector<Vector> &nodes = tree.nodes;
+  const std::vector<std::array<int, 2>> &arcs = tree.arcs;
+
+  // Two faces lie on the same sheet where the image of their shared edge crosses no cut. Faces at
+  // a branch vertex are set apart (cuts start at their corner, and a branch point doubles their
+  // angles there: the image of the opposite side can span half a turn, too much for a minor arc),
+  // faces whose image holds a node of the tree (a branch value: where flat faces next to a branch
+  // vertex leave a gap, a cut starts inside another face; or a star's centre), and folded faces
+  // (they have no side). Faces whose image meets a cut are counted (`cut_faces`).
+  std::vector<char> at_branch_vertex(mesh.vert.size(), 0);
+  for (int v : branch_vertices)
+    at_branch_vertex[v] = 1;
+  // A vertex whose image lies on a cut (symmetric meshes map whole rows of vertices onto the arcs
+  // between branch values) leaves it to rounding which side its edges are on: those are cut.
+  std::vector<char> on_cut(mesh.vert.size(), 0);
+  for (size_t v = 0; v < mesh.vert.size(); ++v)
+    for (const auto &arc : arcs) {
+      const Vector &p = nodes[size_t(arc[0])], &q = nodes[size_t(arc[1])];
+      const Vector normal = p.cross(q);
+      const double length = normal.norm();
+      if (length > 0 && std::abs(sphere[v].dot(normal)) < 1e-12 * length && on_arc(sphere[v], p, q))
+        on_cut[v] = 1;
+    }
+  // `crossing`: the edge's image crosses a cut, or may (it starts on one); `edge_cut` adds the
+  // edges of the faces set apart.
+  std::vector<char> crossing(edges.vertices.size(), 0);
+  for (size_t e = 0; e < edges.vertices.size(); ++e) {
+    const int i = edges.vertices[e][0], j = edges.vertices[e][1];
+    crossing[e] = at_branch_vertex[i] || at_branch_vertex[j] || on_cut[i] || on_cut[j];
+    for (const auto &arc : arcs)
+      crossing[e] = crossing[e] ||
+                    arcs_cross(sphere[i], sphere[j], nodes[size_t(arc[0])], nodes[size_t(arc[1])]);
+  }
+  // Edges whose image is too short for the crossing test to be sure of its side (where long thin
+  // parts crowd, cross products of such nearby points are mostly rounding) are cut too, so that a
+  // sheet cannot leak into another through them.
+  std::vector<char> edge_cut = crossing;
+  for (size_t e = 0; e < edges.vertices.size(); ++e)
+    if ((sphere[size_t(edges.vertices[e][0])] - sphere[size_t(edges.vertices[e][1])]).norm() <
+        unsure_edge_length)
+      edge_cut[e] = 1;
+  for (int f = 0; f < face_count; ++f) {
+    bool at_branch = false;
+    for (int k = 0; k < 3; ++k)
+      at_branch = at_branch || at_branch_vertex[index_of(mesh, mesh.face[f].cV(k))];
+    const Vector &a = corner(f, 0), &b = corner(f, 1), &c = corner(f, 2);
+    bool holds_value = false;
+    for (const Vector &node : nodes)
+      holds_value = holds_value || inside(node, a, b, c);
+    if (at_branch || holds_value || folded_image(a, b, c))
+      for (int e : edges.face_edges[f])
+        edge_cut[e] = 1;
+  }
+  for (int f = 0; f < face_count; ++f) {
+    const auto &sides = edges.face_edges[f];
+    out.cut_faces += edge_cut[sides[0]] || edge_cut[sides[1]] || edge_cut[sides[2]];
+  }
+
+  // Components of faces joined across uncut edges.
+  std::vector<int> component(face_count, -1);
+  std::vector<double> component_area;
+  for (int seed = 0; seed < face_count; ++seed) {
+    if (component[seed] >= 0) continue;
+    const int id = int(component_area.size());
+    component_area.push_back(0);
+    std::queue<int> queue;
+    queue.push(seed);
+    component[seed] = id;
+    while (!queue.empty()) {
+      const int f = queue.front();
+      queue.pop();
+      component_area[id] += areas[f];
+      for (int e : edges.face_edges[f]) {
+        const int g = edges.faces[e][0] == f ? edges.faces[e][1] : edges.faces[e][0];
+        if (!edge_cut[e] && component[g] < 0) {
+          component[g] = id;
+          queue.push(g);
+        }
+      }
+    }
+  }
+  // The largest components are the sheets; the rest (and the cut faces) join a neighbour.
+  std::vector<int> order(component_area.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return component_area[a] > component_area[b]; });
+  out.count = std::min<int>(degree, int(order.size()));
+  std::vector<int> layer_of(component_area.size(), -1);
+  for (int i = 0; i < out.count; ++i)
+    layer_of[order[i]] = i;
+  std::queue<int> frontier;
+  std::vector<int> face_layer(face_count, -1);
+  for (int f = 0; f < face_count; ++f)
+    if (component[f] >= 0 && layer_of[component[f]] >= 0) face_layer[f] = layer_of[component[f]];
+  // The faces set apart join their sheets across edges whose image crosses no cut first, so that a
+  // strip between two close cuts goes to the sheet it continues; what is left, across any edge.
+  for (const bool across_cuts : {false, true}) {
+    for (int f = 0; f < face_count; ++f)
+      if (face_layer[f] >= 0) frontier.push(f);
+    while (!frontier.empty()) {
+      const int f = frontier.front();
+      frontier.pop();
+      for (int e : edges.face_edges[f]) {
+        const int g = edges.faces[e][0] == f ? edges.faces[e][1] : edges.faces[e][0];
+        if (face_layer[g] < 0 && (across_cuts || !crossing[e])) {
+          face_layer[g] = face_layer[f];
+          frontier.push(g);
+        }
+      }
+    }
+  }
+  out.face_layer = face_layer;
+  out.coverage.assign(out.count, 0.0);
+  for (int f = 0; f < face_count; ++f)
+    out.coverage[face_layer[f]] += areas[f] / (4 * M_PI);
+
+  // A vertex takes the layer most of its faces have.
+  std::vector<std::vector<int>> votes(mesh.vert.size(), std::vector<int>(out.count, 0));
+  for (int f = 0; f < face_count; ++f)
+    for (int k = 0; k < 3; ++k)
+      ++votes[index_of(mesh, mesh.face[f].cV(k))][face_layer[f]];
+  for (size_t v = 0; v < mesh.vert.size(); ++v)
+    out.vertex_layer[v] =
+        int(std::max_element(votes[v].begin(), votes[v].end()) - votes[v].begin());
+  return out;
+}
+
+} // namespace
+
+Sheets label_sheets(const Mesh &mesh, const MeshEdges &edges, const std::vector<Vector> &sphere,
+                    const std::vector<int> &branch_vertices, int degree) {
+  const std::vector<double> areas = face_solid_angles(mesh, sphere);
+  if (degree <= 1 || branch_vertices.empty()) {
+    Sheets out;
+    out.count = 1;
+    out.face_layer.assign(mesh.face.size(), 0);
+    out.vertex_layer.assign(mesh.vert.size(), 0);
+    out.coverage = {std::accumulate(areas.begin(), areas.end(), 0.0) / (4 * M_PI)};
+    return out;
+  }
+  // Cut along the shortest tree; where its layers do not each cover the sphere once (a sheet that
+  // comes out in two pieces, seen with nearly equal branch values), along stars from the six
+  // directions farthest from every branch value as well, and keep the best.
+  std::vector<Vector> values;
+  for (int v : branch_vertices)
+    values.push_back(sphere[v]);
+  auto worst = [](const Sheets &sheets) {
+    double deviation = 0;
+    for (double c : sheets.coverage)
+      deviation = std::max(deviation, std::abs(c - 1));
+    return deviation;
+  };
+  Sheets sheets = label_with_cuts(mesh, edges, sphere, branch_vertices, degree, areas,
+                                  minimum_spanning_tree(values));
+  const std::vector<Vector> directions = directions_away_from(values);
+  for (size_t rank = 0; rank < 6 && worst(sheets) > 0.02; ++rank) {
+    Sheets star = label_with_cuts(mesh, edges, sphere, branch_vertices, degree, areas,
+                                  star_tree(values, directions[rank]));
+    if (worst(star) < worst(sheets)) sheets = std::move(star);
+  }
+  return sheets;
+}
+
+} // namespace meromorph
