@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 
 #include "common/errors.h"
+#include "common/stage_clock.h"
 #include "forms/cotan_laplacian.h"
 #include "forms/harmonic_forms.h"
 #include "forms/holomorphic_forms.h"
@@ -16,20 +17,6 @@
 
 namespace meromorph {
 namespace {
-
-class StageClock {
-public:
-  explicit StageClock(std::vector<std::pair<std::string, double>> &timings) : timings_(timings) {}
-  void done(const std::string &stage) {
-    const auto now = std::chrono::steady_clock::now();
-    timings_.push_back({stage, std::chrono::duration<double, std::milli>(now - start_).count()});
-    start_ = now;
-  }
-
-private:
-  std::vector<std::pair<std::string, double>> &timings_;
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
 
 double closedness(const MeshEdges &edges, const Eigen::VectorXd &form) {
   double worst = 0;

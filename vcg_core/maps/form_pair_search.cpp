@@ -1,0 +1,91 @@
+#include "maps/form_pair_search.h"
+
+#include <algorithm>
+#include <optional>
+#include <tuple>
+
+#include "common/errors.h"
+#include "maps/branch_snapping.h"
+#include "maps/form_ratio_map.h"
+#include "sphere/branch_points.h"
+
+namespace meromorph {
+
+PairSearch search_form_pairs(const Mesh &mesh, const HolomorphicForms &forms,
+                             std::array<int, 2> form_pair, bool mobius,
+                             const std::vector<double> &areas, const Progress &progress) {
+  const int euler = 2 - 2 * forms.genus;
+  PairSearch out;
+  const auto [i, j] = form_pair;
+  std::vector<FormPair> pairs;
+  if (i < 0 && j < 0) {
+    pairs = generic_form_pairs(forms.genus);
+  } else {
+    if (i < 0 || j < 0 || i >= forms.genus || j >= forms.genus || i == j)
+      throw ArgumentError("the form pair must be two different indices between 0 and " +
+                          std::to_string(forms.genus - 1) + " (or -1, -1 for the generic pair)");
+    FormPair pair{Eigen::VectorXcd::Zero(forms.genus), Eigen::VectorXcd::Zero(forms.genus)};
+    pair.first[i] = pair.second[j] = 1.0;
+    pairs.push_back(pair);
+  }
+  // A pair is generic when the measured degree is 2g - 2 and Riemann-Hurwitz holds. Where a
+  // mesh is too coarse to resolve a pair's map (its image crowds where both forms live on the
+  // same handle), the next pair of the fixed list is tried; the best one is kept.
+  struct Attempt {
+    bool generic;
+    int deficit; // |chi - (2 d - ramification)|
+    std::vector<PlaneValue> values;
+    MobiusCentering centring;
+    int snapped;
+    int crowded = 0; // faces whose image spans more than a chord of 1 (a quarter of the sphere)
+  };
+  std::optional<Attempt> best;
+  for (size_t attempt = 0; attempt < pairs.size(); ++attempt) {
+    progress.report(0.6 + 0.1 * double(attempt) / double(pairs.size()), "meromorphic function");
+    Eigen::VectorXcd omega1 = Eigen::VectorXcd::Zero(forms.edges.edge_count());
+    Eigen::VectorXcd omega2 = omega1;
+    for (int k = 0; k < forms.genus; ++k) {
+      omega1 += pairs[attempt].first[k] * forms.normalized[k];
+      omega2 += pairs[attempt].second[k] * forms.normalized[k];
+    }
+    const Eigen::VectorXcd numerator = omega1 + omega2, denominator = omega1 - omega2;
+    Attempt result{false, 0, form_ratio_map(mesh, forms.edges, numerator, denominator), {}, 0};
+    if (mobius) result.centring = center_on_sphere(result.values, areas);
+    for (int pass = 0; pass < 4; ++pass) {
+      const int repaired =
+          snap_branch_points(mesh, forms.edges, {&numerator, &denominator}, result.values);
+      result.snapped += repaired;
+      if (!repaired) break;
+    }
+    std::vector<Eigen::Vector3d> sphere;
+    for (const PlaneValue &value : result.values)
+      sphere.push_back(to_sphere(value));
+    const Branching measured = analyse_branching(mesh, sphere, euler);
+    result.generic = measured.riemann_hurwitz_ok && measured.degree == 2 * forms.genus - 2;
+    result.deficit = std::abs(euler - (2 * measured.degree - measured.ramification));
+    for (const MeshFace &face : mesh.face) {
+      const Eigen::Vector3d &a = sphere[index_of(mesh, face.cV(0))],
+                            &b = sphere[index_of(mesh, face.cV(1))],
+                            &c = sphere[index_of(mesh, face.cV(2))];
+      result.crowded += std::max({(a - b).norm(), (b - c).norm(), (c - a).norm()}) > 1.0;
+    }
+    auto rank = [](const Attempt &a) { return std::make_tuple(!a.generic, a.deficit, a.crowded); };
+    if (!best || rank(result) < rank(*best)) {
+      best = std::move(result);
+      out.coefficients = pairs[attempt];
+    }
+    out.attempts = int(attempt) + 1;
+    // Where a zero and a pole of the ratio fall within a face or two, a face's image spans a
+    // good part of the sphere (and its texture with it); another generic pair puts them
+    // elsewhere. For genus 2 every generic pair gives the same map up to a Moebius
+    // transformation: no other pair helps there. Three pairs at most for that: on surfaces
+    // whose handles crowd everywhere, every pair does.
+    if (best->generic && (best->crowded == 0 || forms.genus == 2 || attempt >= 2)) break;
+  }
+  out.values = std::move(best->values);
+  out.centring = best->centring;
+  out.snapped_branch_points = best->snapped;
+  return out;
+}
+
+} // namespace meromorph

@@ -1,0 +1,39 @@
+// Genus >= 2: the meromorphic function as a ratio of two holomorphic forms, over the pairs tried.
+//
+// In:  a closed mesh of genus g >= 2 (unit scale), its holomorphic forms (holomorphic_pipeline.h),
+//      the pair asked for (-1, -1: the fixed list of generic pairs, form_pairs.h), whether to
+//      centre, the surface area per vertex (the centring's weights), progress.
+// Out: for each pair, f = (omega1 + omega2) / (omega1 - omega2) per vertex (form_ratio_map.h),
+//      centred, its critical points snapped onto vertices (branch_snapping.h, up to four passes),
+//      ranked by whether it is generic (degree 2g - 2 and Riemann-Hurwitz), its Riemann-Hurwitz
+//      deficit and its crowded faces (an image chord above 1); the best is kept. The next pair is
+//      tried only where the best is not generic, or crowds (not for genus 2, where every generic
+//      pair gives the same map up to a Moebius transformation; three pairs at most for that).
+//      Throws ArgumentError for a pair that is not two different form indices.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "common/progress.h"
+#include "forms/holomorphic_pipeline.h"
+#include "maps/form_pairs.h"
+#include "mesh/mesh.h"
+#include "sphere/mobius_centering.h"
+#include "sphere/sphere_geometry.h"
+
+namespace meromorph {
+
+struct PairSearch {
+  std::vector<PlaneValue> values;
+  MobiusCentering centring;
+  int snapped_branch_points = 0;
+  FormPair coefficients;
+  int attempts = 0;
+};
+
+PairSearch search_form_pairs(const Mesh &mesh, const HolomorphicForms &forms,
+                             std::array<int, 2> form_pair, bool mobius,
+                             const std::vector<double> &areas, const Progress &progress);
+
+} // namespace meromorph

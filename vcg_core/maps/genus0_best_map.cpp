@@ -1,0 +1,101 @@
+#include "maps/genus0_best_map.h"
+
+#include <set>
+
+#include "maps/genus0_correction.h"
+#include "maps/genus0_map.h"
+#include "mesh/face_vectors.h"
+#include "sphere/mobius_centering.h"
+
+namespace meromorph {
+namespace {
+
+// Faces whose image is below double resolution (sphere_geometry.h).
+int collapsed_faces(const Mesh &mesh, const std::vector<PlaneValue> &values) {
+  int count = 0;
+  for (const MeshFace &face : mesh.face)
+    count += collapsed_image(to_sphere(values[size_t(index_of(mesh, face.cV(0)))]),
+                             to_sphere(values[size_t(index_of(mesh, face.cV(1)))]),
+                             to_sphere(values[size_t(index_of(mesh, face.cV(2)))]));
+  return count;
+}
+
+} // namespace
+
+Genus0Result best_genus0_map(const Mesh &mesh, const MeshEdges &edges,
+                             const std::vector<double> &weights, SolverKind solver,
+                             int pole_face_asked, const std::vector<double> &areas) {
+  // The plain cotangent map is the most conformal; if it folds (negative weights on meshes with
+  // many obtuse triangles), the map with strictly positive weights cannot.
+  // Weights are raised only near folds (two rings), round by round; all of them at the end.
+  auto solve = [&](int pole_face) {
+    std::vector<char> raise(edges.edge_count(), 0);
+    Genus0Map attempt = genus0_map(mesh, edges, weights, solver, pole_face, raise);
+    for (int round = 0; round < 4 && !attempt.folded_faces.empty(); ++round) {
+      std::set<int> near;
+      for (int f : attempt.folded_faces)
+        for (int k = 0; k < 3; ++k)
+          near.insert(index_of(mesh, mesh.face[f].cV(k)));
+      for (int ring = 0; ring < 2; ++ring) {
+        std::set<int> grown = near;
+        for (int e = 0; e < edges.edge_count(); ++e)
+          if (near.count(edges.vertices[e][0]) || near.count(edges.vertices[e][1])) {
+            grown.insert(edges.vertices[e][0]);
+            grown.insert(edges.vertices[e][1]);
+          }
+        near = grown;
+      }
+      for (int e = 0; e < edges.edge_count(); ++e)
+        if (near.count(edges.vertices[e][0]) && near.count(edges.vertices[e][1])) raise[e] = 1;
+      attempt = genus0_map(mesh, edges, weights, solver, pole_face, raise);
+    }
+    if (!attempt.folded_faces.empty())
+      attempt = genus0_map(mesh, edges, weights, solver, pole_face, {});
+    return attempt;
+  };
+  // The pinned-pole map, its shear removed and its pole region solved again
+  // (genus0_correction.h).
+  auto solve_and_correct = [&](int pole_face) {
+    Genus0Map map = solve(pole_face);
+    map.values =
+        correct_genus0_map(mesh, edges, map.weights, solver, map.puncture_face, map.values).values;
+    return map;
+  };
+  Genus0Map map = solve_and_correct(pole_face_asked);
+  if (pole_face_asked < 0) {
+    // Parts far from the pole crowd into a tiny spot, where rounding can fold or collapse
+    // faces. Then solve again with the pole at the face that the centred map puts on the north
+    // pole: the new map is nearly centred, so nothing is crowded.
+    std::vector<PlaneValue> centred = map.values;
+    const bool centred_ok = center_on_sphere(centred, areas).centroid_after.norm() < 1e-9;
+    const int collapsed = collapsed_faces(mesh, centred);
+    if (!centred_ok || collapsed > 0 || !folded_plane_faces(mesh, centred).empty()) {
+      // Any face the centred map puts near the north pole will do; the best-shaped of those
+      // models the pole most accurately.
+      int pole_face = -1;
+      double best_angle = -1;
+      for (size_t f = 0; f < mesh.face.size(); ++f) {
+        bool near_north = true;
+        for (int k = 0; k < 3; ++k)
+          near_north &= to_sphere(centred[index_of(mesh, mesh.face[f].cV(k))]).z() > 0.9;
+        if (!near_north) continue;
+        const double angle = smallest_angle(mesh.face[f]);
+        if (angle > best_angle) {
+          best_angle = angle;
+          pole_face = int(f);
+        }
+      }
+      if (pole_face >= 0) {
+        // Where long thin parts shrink below what doubles resolve, a pole in the wrong place
+        // loses more of them: keep the first solution if the second collapses more faces.
+        Genus0Map again = solve_and_correct(pole_face);
+        std::vector<PlaneValue> centred_again = again.values;
+        center_on_sphere(centred_again, areas);
+        if (collapsed_faces(mesh, centred_again) <= collapsed) map = std::move(again);
+      }
+    }
+  }
+  return {map.values, map.puncture_face, map.raised_weights};
+}
+
+} // namespace meromorph

@@ -1,0 +1,72 @@
+#include "maps/map_validity.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "common/errors.h"
+#include "common/wording.h"
+#include "mesh/face_vectors.h"
+
+namespace meromorph {
+
+std::vector<std::string> invalid_reasons(const ParameterizeOptions &options,
+                                         const Parameterization &map) {
+  std::vector<std::string> reasons;
+  const int expected = map.genus == 0 ? 1 : map.genus == 1 ? 2 : 2 * map.genus - 2;
+  const bool chosen_pair = map.genus >= 2 && options.form_pair[0] >= 0;
+  if (chosen_pair ? (map.degree < 1 || map.degree > expected) : map.degree != expected)
+    reasons.push_back("the map covers the sphere " + std::to_string(map.degree) +
+                      " times instead of " + std::to_string(expected));
+  if (!map.riemann_hurwitz_ok)
+    reasons.push_back(
+        "Riemann-Hurwitz does not hold (chi = " + std::to_string(map.euler) +
+        ", 2 * degree - ramification = " + std::to_string(2 * map.degree - map.ramification) +
+        "): branch points were missed or are wrong");
+  const std::vector<int> &folded = map.quality.folded_face_indices;
+  if (!folded.empty())
+    reasons.push_back(folded.size() == 1
+                          ? "1 face is turned over (face " + list_indices(folded) + ")"
+                          : std::to_string(folded.size()) + " faces are turned over (faces " +
+                                list_indices(folded) + ")");
+  // Where faces shrink below what doubles resolve, that is the cause of the rest: said first.
+  const size_t collapsed = map.quality.collapsed_face_indices.size();
+  if (!reasons.empty() && collapsed > 0)
+    reasons.insert(reasons.begin(), plural(collapsed, "face shrinks", "faces shrink") +
+                                        " below what double precision resolves (long "
+                                        "thin parts: see below)");
+  return reasons;
+}
+
+std::string invalid_map_advice(const Mesh &input, const Mesh &mesh,
+                               const ParameterizeOptions &options, const Parameterization &map) {
+  std::vector<std::string> causes;
+  const std::vector<int> &collapsed = map.quality.collapsed_face_indices;
+  if (!collapsed.empty()) {
+    const Point3 &at = input.face[size_t(collapsed.front())].cP(0);
+    std::ostringstream where;
+    where << " (faces " << list_indices(collapsed) << "; the first at " << at[0] << ", " << at[1]
+          << ", " << at[2] << ")";
+    causes.push_back(plural(collapsed.size(), "face maps", "faces map") +
+                     " to spots smaller than double precision resolves" + where.str() +
+                     ": long thin parts shrink exponentially under a conformal map (shorten or "
+                     "thicken them, or map them separately)");
+  }
+  int needles = 0;
+  for (const MeshFace &face : mesh.face)
+    needles += smallest_angle(face) < M_PI / 180;
+  if (needles > 0)
+    causes.push_back(plural(size_t(needles), "face has", "faces have") +
+                     " an angle below 1 degree: remesh the surface (MeshLab: Filters > "
+                     "Remeshing, Simplification and Reconstruction > Remeshing: Isotropic Explicit "
+                     "Remeshing; Blender: Remesh modifier) and run again");
+  if (map.genus >= 2 && options.form_pair[0] >= 0)
+    causes.push_back("the chosen form pair may be nearly 0 / 0 on parts of this surface: use the "
+                     "default generic pair (--forms -1,-1)");
+  if (causes.empty())
+    causes.push_back("the mesh may be too coarse near the branch points: refine it (MeshLab: "
+                     "Filters > Remeshing, Simplification and Reconstruction > Subdivision "
+                     "Surfaces: Midpoint; Blender: Subdivide) and run again");
+  return join_phrases(causes);
+}
+
+} // namespace meromorph

@@ -1,0 +1,85 @@
+#include "maps/written_map.h"
+
+#include <algorithm>
+#include <optional>
+
+#include "maps/fold_untangling.h"
+#include "maps/genus1_branch_placement.h"
+
+namespace meromorph {
+namespace {
+
+// Faces whose written image is turned over (sphere_geometry.h).
+int folded_face_count(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere) {
+  int count = 0;
+  for (const MeshFace &face : mesh.face)
+    count += folded_image(sphere[size_t(index_of(mesh, face.cV(0)))],
+                          sphere[size_t(index_of(mesh, face.cV(1)))],
+                          sphere[size_t(index_of(mesh, face.cV(2)))]);
+  return count;
+}
+
+} // namespace
+
+void finish_on_sphere(const Mesh &mesh, bool mobius, const std::vector<double> &areas,
+                      const Genus1Map *torus_map, int euler, std::vector<PlaneValue> values,
+                      WrittenSphere &out, const Progress &progress, StageClock &clock) {
+  if (mobius && euler >= 0) { // genus 0 and 1
+    progress.report(0.7, "Moebius normalisation");
+    out.mobius = center_on_sphere(values, areas);
+    out.mobius_applied = true;
+    clock.done("mobius");
+  }
+  if (torus_map) {
+    // A piecewise-linear map branches only at vertices: the half periods go onto vertices,
+    // decided on the centred map as it will be written (genus1_branch_placement.h).
+    const Genus1Placement placed = place_half_period_branch_points(
+        mesh, face_incidence(mesh), *torus_map, out.mobius.transformation, values);
+    out.snapped_branch_points =
+        int(std::count(placed.fold_free.begin(), placed.fold_free.end(), true));
+    clock.done("branch_placement");
+  }
+  out.sphere.reserve(values.size());
+  for (const PlaneValue &value : values)
+    out.sphere.push_back(to_sphere(value));
+
+  progress.report(0.8, "branch points and layers");
+  // Everything below is measured on the map as written: vertex values, linear on each face.
+  out.branching = analyse_branching(mesh, out.sphere, euler);
+  out.untangled_vertices = untangle_folds(mesh, out.sphere, out.branching.branch_vertices);
+  if (mobius && (out.untangled_vertices || out.snapped_branch_points)) {
+    // The vertices moved above shift the centroid a little: centre once more.
+    for (size_t v = 0; v < values.size(); ++v)
+      if (!values[v].infinite && (to_sphere(values[v]) - out.sphere[v]).norm() > 1e-15)
+        values[v] = to_plane_value(out.sphere[v]);
+    const MobiusCentering again = center_on_sphere(values, areas);
+    out.mobius.transformation = again.transformation.after(out.mobius.transformation);
+    out.mobius.centroid_after = again.centroid_after;
+    out.mobius.steps += again.steps;
+    for (size_t v = 0; v < values.size(); ++v)
+      out.sphere[v] = to_sphere(values[v]);
+  }
+  if (out.untangled_vertices || mobius) out.branching = analyse_branching(mesh, out.sphere, euler);
+}
+
+WrittenSphere written_genus1_map(const Mesh &mesh, const HolomorphicForms &forms,
+                                 const std::vector<int> &origins, bool mobius,
+                                 const std::vector<double> &areas, const Progress &progress,
+                                 StageClock &clock) {
+  std::optional<WrittenSphere> first;
+  for (size_t k = 0; k < std::min<size_t>(4, origins.size()); ++k) {
+    const Genus1Map map = genus1_map(mesh, forms.edges, forms.normalized[0], Complex(1, 0),
+                                     forms.riemann_matrix(0, 0), origins[k]);
+    WrittenSphere written;
+    finish_on_sphere(mesh, mobius, areas, &map, 0, map.values, written, progress, clock);
+    written.origin_vertex = map.origin_vertex;
+    const bool valid = written.branching.degree == 2 && written.branching.riemann_hurwitz_ok &&
+                       folded_face_count(mesh, written.sphere) == 0;
+    if (valid || k == 0) first = std::move(written);
+    first->origin_attempts = int(k) + 1;
+    if (valid) break;
+  }
+  return std::move(*first);
+}
+
+} // namespace meromorph
