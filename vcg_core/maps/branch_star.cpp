@@ -66,25 +66,17 @@ reembed_around_branch(const Mesh &mesh, const FaceIncidence &in,
   for (const auto &[v, d] : distance)
     if (v != branch && !gnomonic.to_chart(sphere[size_t(v)], chart[v])) return std::nullopt;
   // The outer ring in order: the boundary of the faces within `rings` rings, chained.
-  std::map<int, int> next;
-  std::set<std::pair<int, int>> directed;
+  std::set<int> inner_faces;
   for (const auto &[v, d] : distance)
     if (d <= rings)
-      for (int f : in.faces_of_vertex[size_t(v)])
-        for (int k = 0; k < 3; ++k)
-          directed.insert(
-              {in.corners[size_t(f)][size_t(k)], in.corners[size_t(f)][size_t((k + 1) % 3)]});
-  for (const auto &[a, b] : directed)
-    if (!directed.count({b, a}) && !next.insert({a, b}).second) return std::nullopt;
-  if (next.empty()) return std::nullopt;
-  std::vector<int> outer{next.begin()->first};
-  while (outer.size() <= next.size()) {
-    const auto at = next.find(outer.back());
-    if (at == next.end()) return std::nullopt;
-    if (at->second == outer.front()) break;
-    outer.push_back(at->second);
-  }
-  if (outer.size() != next.size()) return std::nullopt; // not one loop
+      inner_faces.insert(in.faces_of_vertex[size_t(v)].begin(),
+                         in.faces_of_vertex[size_t(v)].end());
+  std::vector<std::array<int, 3>> triangles;
+  for (int f : inner_faces)
+    triangles.push_back(in.corners[size_t(f)]);
+  const BoundaryLoops boundary = chain_boundary(triangles);
+  if (boundary.loops.size() != 1) return std::nullopt; // not one loop
+  const std::vector<int> &outer = boundary.loops.front();
   std::map<int, Eigen::Vector2d> root;
   if (!roots_along(ring, chart, root) || !roots_along(outer, chart, root)) return std::nullopt;
   // The two loops' roots on the same sheet of the square root: along a shortest path from the

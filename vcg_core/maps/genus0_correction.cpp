@@ -12,7 +12,7 @@ constexpr double outer_share = 0.1;     // the vertices farthest out, left out o
 constexpr double south_cap_share = 0.1; // pinned in the south-pole step
 
 Eigen::Vector3d position(const MeshVertex &vertex) {
-  return Eigen::Vector3d(vertex.cP()[0], vertex.cP()[1], vertex.cP()[2]);
+  return vertex.cP().ToEigenVector<Eigen::Vector3d>();
 }
 
 // The Beltrami ratio nu = z_conj(w) / conj(z_w) of the linear map from face f, in its own

@@ -64,7 +64,7 @@ Genus0Map genus0_map(const Mesh &mesh, const MeshEdges &edges, const std::vector
   Eigen::Vector3d p[3];
   for (int k = 0; k < 3; ++k) {
     corners.push_back(index_of(mesh, face.cV(k)));
-    p[k] = Eigen::Vector3d(face.cP(k)[0], face.cP(k)[1], face.cP(k)[2]);
+    p[k] = face.cP(k).ToEigenVector<Eigen::Vector3d>();
   }
   const Eigen::Vector3d centroid = (p[0] + p[1] + p[2]) / 3.0;
   const Eigen::Vector3d e1 = (p[1] - p[0]).normalized();

@@ -39,9 +39,8 @@ void describe_written_map(const Mesh &input, const Mesh &mesh, const MeshEdges &
   out.riemann_hurwitz_ok = branching.riemann_hurwitz_ok;
   out.branch_flag.assign(mesh.vert.size(), 0);
   for (int v : branching.branch_vertices) {
-    const Point3 &p = input.vert[v].cP();
-    out.branch_points.push_back(
-        {v, Eigen::Vector3d(p[0], p[1], p[2]), out.sphere[v], branching.local_degree[v]});
+    out.branch_points.push_back({v, input.vert[v].cP().ToEigenVector<Eigen::Vector3d>(),
+                                 out.sphere[v], branching.local_degree[v]});
     out.branch_flag[v] = branching.local_degree[v];
   }
   out.sheets = label_sheets(mesh, edges, out.sphere, branching.branch_vertices, out.degree);

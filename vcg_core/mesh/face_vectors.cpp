@@ -4,21 +4,14 @@
 #include <cmath>
 
 namespace meromorph {
-namespace {
-
-Eigen::Vector3d to_eigen(const Point3 &p) {
-  return {p[0], p[1], p[2]};
-}
-
-} // namespace
-
 FaceGeometry face_geometry(const Mesh &mesh) {
   FaceGeometry geometry;
   geometry.normals.reserve(mesh.face.size());
   geometry.areas.reserve(mesh.face.size());
   for (const MeshFace &face : mesh.face) {
-    const Eigen::Vector3d p0 = to_eigen(face.cP(0)), p1 = to_eigen(face.cP(1)),
-                          p2 = to_eigen(face.cP(2));
+    const Eigen::Vector3d p0 = face.cP(0).ToEigenVector<Eigen::Vector3d>(),
+                          p1 = face.cP(1).ToEigenVector<Eigen::Vector3d>(),
+                          p2 = face.cP(2).ToEigenVector<Eigen::Vector3d>();
     const Eigen::Vector3d cross = (p1 - p0).cross(p2 - p0);
     geometry.areas.push_back(0.5 * cross.norm());
     geometry.normals.push_back(cross.normalized());
@@ -49,8 +42,9 @@ Eigen::MatrixX3d face_vectors(const Mesh &mesh, const MeshEdges &edges,
   Eigen::MatrixX3d vectors(mesh.face.size(), 3);
   for (size_t f = 0; f < mesh.face.size(); ++f) {
     const MeshFace &face = mesh.face[f];
-    const Eigen::Vector3d p0 = to_eigen(face.cP(0)), p1 = to_eigen(face.cP(1)),
-                          p2 = to_eigen(face.cP(2));
+    const Eigen::Vector3d p0 = face.cP(0).ToEigenVector<Eigen::Vector3d>(),
+                          p1 = face.cP(1).ToEigenVector<Eigen::Vector3d>(),
+                          p2 = face.cP(2).ToEigenVector<Eigen::Vector3d>();
     // Local potential: u0 = 0, u1 = form along side 0, u2 = u1 + form along side 1.
     const double u1 = edges.face_signs[f][0] * form[edges.face_edges[f][0]];
     const double u2 = u1 + edges.face_signs[f][1] * form[edges.face_edges[f][1]];

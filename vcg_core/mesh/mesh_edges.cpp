@@ -1,5 +1,8 @@
 #include "mesh/mesh_edges.h"
 
+#include <map>
+#include <set>
+
 #include <algorithm>
 #include <queue>
 #include <unordered_map>
@@ -83,6 +86,31 @@ std::map<int, int> ring_distances(const FaceIncidence &in, const std::vector<int
         if (distance.emplace(w, distance[v] + 1).second) queue.push(w);
   }
   return distance;
+}
+
+BoundaryLoops chain_boundary(const std::vector<std::array<int, 3>> &triangles) {
+  std::set<std::pair<int, int>> walked;
+  for (const auto &t : triangles)
+    for (int k = 0; k < 3; ++k)
+      walked.insert({t[size_t(k)], t[size_t((k + 1) % 3)]});
+  BoundaryLoops out;
+  std::map<int, int> next; // b of the boundary half-edge that starts at a
+  for (const auto &[a, b] : walked)
+    if (!walked.count({b, a}) && !next.insert({a, b}).second) {
+      out.pinched_vertex = a;
+      return out;
+    }
+  std::set<int> used;
+  for (const auto &[start, ignored] : next) {
+    if (used.count(start)) continue;
+    std::vector<int> loop;
+    for (int v = start; used.insert(v).second; v = next.at(v)) {
+      loop.push_back(v);
+      if (!next.count(next.at(v))) break;
+    }
+    out.loops.push_back(std::move(loop));
+  }
+  return out;
 }
 
 } // namespace meromorph

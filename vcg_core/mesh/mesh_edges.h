@@ -38,6 +38,15 @@ struct FaceIncidence {
 
 FaceIncidence face_incidence(const Mesh &mesh);
 
+// The boundary of a set of oriented triangles: its half-edges a -> b whose reverse no triangle
+// walks, chained into closed loops in the triangles' walking direction. Where two boundary
+// half-edges start at one vertex (holes touching there), no loops and that vertex.
+struct BoundaryLoops {
+  std::vector<std::vector<int>> loops;
+  int pinched_vertex = -1;
+};
+BoundaryLoops chain_boundary(const std::vector<std::array<int, 3>> &triangles);
+
 // The ring distance from `sources` of every vertex at most `radius` rings away.
 std::map<int, int> ring_distances(const FaceIncidence &in, const std::vector<int> &sources,
                                   int radius);

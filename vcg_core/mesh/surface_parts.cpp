@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "common/errors.h"
+#include "mesh/mesh_edges.h"
 
 namespace meromorph {
 namespace {
@@ -153,29 +154,14 @@ SurfaceParts split_into_closed_parts(const Mesh &input, bool close_holes) {
       positions.push_back(input.vert[size_t(v)].cP());
 
     if (close_holes) {
-      // Boundary half-edges a -> b (as their face walks them) whose reverse no face walks.
-      std::map<std::pair<int, int>, int> walked;
-      for (const auto &t : triangles)
-        for (int k = 0; k < 3; ++k)
-          ++walked[{t[k], t[(k + 1) % 3]}];
-      std::map<int, int> next; // along the boundary: b of the half-edge that starts at a
-      for (const auto &[edge, count] : walked)
-        if (!walked.count({edge.second, edge.first})) {
-          if (!next.insert({edge.first, edge.second}).second)
-            throw InputError("a hole's boundary passes vertex " +
-                             std::to_string(part.source_vertex[size_t(edge.first)]) +
-                             " twice (two holes touch there): it cannot be closed; separate "
-                             "them first");
-        }
-      std::vector<char> used(positions.size(), 0);
-      for (const auto &[start, ignored] : next) {
-        if (used[size_t(start)]) continue;
-        std::vector<int> loop;
-        for (int v = start; !used[size_t(v)]; v = next.at(v)) {
-          used[size_t(v)] = 1;
-          loop.push_back(v);
-          if (!next.count(next.at(v))) break;
-        }
+      const BoundaryLoops boundary = chain_boundary(triangles);
+      if (boundary.pinched_vertex >= 0)
+        throw InputError("a hole's boundary passes vertex " +
+                         std::to_string(part.source_vertex[size_t(boundary.pinched_vertex)]) +
+                         " twice (two holes touch there): it cannot be closed; separate them "
+                         "first");
+      for (const std::vector<int> &loop : boundary.loops) {
+        const int start = loop.front();
         ClosedHole hole;
         hole.part = int(p);
         hole.edges = int(loop.size());

@@ -33,7 +33,7 @@ Similarity random_rigid_motion(std::uint64_t seed) {
 void apply_similarity(const Similarity &motion, Mesh &mesh) {
   for (MeshVertex &vertex : mesh.vert) {
     if (vertex.IsD()) continue;
-    const Eigen::Vector3d p(vertex.P()[0], vertex.P()[1], vertex.P()[2]);
+    const Eigen::Vector3d p = vertex.cP().ToEigenVector<Eigen::Vector3d>();
     const Eigen::Vector3d moved = motion.scale * (motion.rotation * p) + motion.translation;
     vertex.P() = Point3(moved[0], moved[1], moved[2]);
   }

@@ -59,8 +59,7 @@ double face_angle_error_degrees(const Mesh &mesh, const std::vector<Eigen::Vecto
                                 int face) {
   Eigen::Vector3d p[3], s[3];
   for (int k = 0; k < 3; ++k) {
-    const Point3 &q = mesh.face[face].cP(k);
-    p[k] = Eigen::Vector3d(q[0], q[1], q[2]);
+    p[k] = mesh.face[face].cP(k).ToEigenVector<Eigen::Vector3d>();
     s[k] = sphere[index_of(mesh, mesh.face[face].cV(k))];
   }
   double error = 0;
@@ -83,7 +82,7 @@ MapQuality measure_map_quality(const Mesh &mesh, const std::vector<Eigen::Vector
     Eigen::Vector3d p[3], s[3];
     bool touches_branch = false;
     for (int k = 0; k < 3; ++k) {
-      p[k] = Eigen::Vector3d(face.cP(k)[0], face.cP(k)[1], face.cP(k)[2]);
+      p[k] = face.cP(k).ToEigenVector<Eigen::Vector3d>();
       const int v = index_of(mesh, face.cV(k));
       s[k] = sphere[v];
       touches_branch |= near_branch[v] != 0;
