@@ -6,11 +6,11 @@
 #include <filesystem>
 #include <functional>
 
-#include "forms/cotan_laplacian.h"
 #include "forms/harmonic_forms.h"
 #include "forms/holomorphic_pipeline.h"
 #include "io/mesh_reader.h"
 #include "io/mesh_writer.h"
+#include "mesh/cotan_laplacian.h"
 #include "mesh/mesh_edges.h"
 #include "shapes/test_surfaces.h"
 

@@ -9,6 +9,7 @@
 #include "maps/branch_snapping.h"
 #include "maps/genus1_map.h"
 #include "mesh/face_vectors.h"
+#include "mesh/prepared_mesh.h"
 #include "shapes/test_surfaces.h"
 #include "sphere/branch_points.h"
 #include "sphere/mobius_centering.h"
@@ -21,12 +22,13 @@ TEST(BranchSnapping, FindsTheCriticalPointsOfPAtTheHalfPeriods) {
     Mesh mesh;
     make_implicit_torus(mesh, 2.0, 1.0, resolution);
     const HolomorphicForms forms = compute_holomorphic_forms(mesh);
-    const Genus1Map map = genus1_map(mesh, forms.edges, forms.normalized[0], Complex(1, 0),
-                                     forms.riemann_matrix(0, 0), -1);
+    const PreparedMesh prepared = prepare_mesh(mesh);
+    const Genus1Map map =
+        genus1_map(prepared, forms.normalized[0], Complex(1, 0), forms.riemann_matrix(0, 0), -1);
     std::vector<PlaneValue> values = map.values;
     center_on_sphere(values, vertex_areas(mesh));
     for (int pass = 0; pass < 4; ++pass)
-      if (!snap_branch_points(mesh, forms.edges, {&forms.normalized[0]}, values)) break;
+      if (!snap_branch_points(prepared, {&forms.normalized[0]}, values)) break;
 
     std::vector<Eigen::Vector3d> sphere;
     for (const PlaneValue &value : values)

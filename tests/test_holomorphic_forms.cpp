@@ -8,8 +8,8 @@
 #include <Eigen/Dense>
 
 #include "common/errors.h"
-#include "forms/cotan_laplacian.h"
 #include "forms/holomorphic_pipeline.h"
+#include "mesh/cotan_laplacian.h"
 #include "shapes/rigid_motion.h"
 #include "shapes/test_surfaces.h"
 #include "test_support.h"

@@ -13,6 +13,7 @@
 #include "maps/genus1_map.h"
 #include "maps/parameterization.h"
 #include "mesh/face_vectors.h"
+#include "mesh/prepared_mesh.h"
 #include "shapes/test_surfaces.h"
 #include "sphere/mobius_centering.h"
 #include "test_support.h"
@@ -253,7 +254,7 @@ TEST(Parameterization, TorusBranchPointsSitAtTheHalfPeriods) {
   const Parameterization map = parameterize(mesh);
   ASSERT_EQ(map.branch_points.size(), 4u);
   const HolomorphicForms forms = compute_holomorphic_forms(mesh);
-  const Genus1Map flat = genus1_map(mesh, forms.edges, forms.normalized[0], Complex(1, 0),
+  const Genus1Map flat = genus1_map(prepare_mesh(mesh), forms.normalized[0], Complex(1, 0),
                                     forms.riemann_matrix(0, 0), map.origin_vertex);
   double longest_edge = 0;
   for (int e = 0; e < forms.edges.edge_count(); ++e)

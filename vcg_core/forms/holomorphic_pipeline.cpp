@@ -6,12 +6,13 @@
 
 #include "common/errors.h"
 #include "common/stage_clock.h"
-#include "forms/cotan_laplacian.h"
 #include "forms/harmonic_forms.h"
 #include "forms/holomorphic_forms.h"
 #include "forms/intrinsic_delaunay.h"
 #include "forms/periods.h"
+#include "mesh/cotan_laplacian.h"
 #include "mesh/face_vectors.h"
+#include "mesh/prepared_mesh.h"
 #include "mesh/unit_scale.h"
 #include "mesh/validation.h"
 
@@ -39,16 +40,26 @@ HolomorphicForms compute_holomorphic_forms(const Mesh &input, SolverKind solver,
   Mesh unit;
   const bool copy = !is_at_unit_scale(input);
   if (copy) copy_at_unit_scale(input, unit_scale_of(input), unit);
-  const Mesh &mesh = copy ? unit : input;
-
-  HolomorphicForms out;
+  const auto start = std::chrono::steady_clock::now();
+  progress.report(0.0, "edges and cotangent weights");
+  const PreparedMesh prepared = prepare_mesh(copy ? unit : input);
+  const double preparing_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  HolomorphicForms out = compute_holomorphic_forms(prepared, solver, progress);
   out.notes = validation.notes;
+  out.timings_ms.front().second += preparing_ms; // "laplacian": edges and weights too
+  return out;
+}
+
+HolomorphicForms compute_holomorphic_forms(const PreparedMesh &prepared, SolverKind solver,
+                                           const Progress &progress) {
+  const Mesh &mesh = prepared.mesh;
+  HolomorphicForms out;
   StageClock clock(out.timings_ms);
   const int vertex_count = int(mesh.vert.size());
 
-  progress.report(0.0, "edges and cotangent weights");
-  out.edges = build_mesh_edges(mesh);
-  out.weights = cotan_weights(mesh, out.edges);
+  out.edges = prepared.edges;
+  out.weights = prepared.weights;
   out.genus = (2 - (vertex_count - out.edges.edge_count() + int(mesh.face.size()))) / 2;
   if (out.genus == 0) {
     clock.done("laplacian");

@@ -54,6 +54,7 @@ struct HolomorphicForms {
 };
 
 struct Validation;
+struct PreparedMesh;
 
 // `validated`: the mesh's validation when the caller has made it (and it found nothing); else
 // the mesh is validated here.
@@ -61,5 +62,9 @@ HolomorphicForms compute_holomorphic_forms(const Mesh &mesh,
                                            SolverKind solver = SolverKind::cholmod,
                                            const Progress &progress = {},
                                            const Validation *validated = nullptr);
+
+// The same on a mesh validated and prepared by the caller, at unit scale (prepared_mesh.h).
+HolomorphicForms compute_holomorphic_forms(const PreparedMesh &prepared, SolverKind solver,
+                                           const Progress &progress);
 
 } // namespace meromorph

@@ -110,13 +110,15 @@ bool double_star(const std::vector<double> &corners, Complex centre_value,
 
 } // namespace
 
-int snap_branch_points(const Mesh &mesh, const MeshEdges &edges,
+int snap_branch_points(const PreparedMesh &prepared,
                        const std::vector<const Eigen::VectorXcd *> &coordinate_forms,
                        std::vector<PlaneValue> &plane_values) {
+  const Mesh &mesh = prepared.mesh;
+  const MeshEdges &edges = prepared.edges;
   constexpr int fit_rings = 2;       // around the spot, where the model is fitted
   constexpr int max_shift_rings = 5; // around the chosen vertex, where the map is changed
-  const FaceIncidence in = face_incidence(mesh);
-  const std::vector<std::vector<int>> edges_at = edges_at_vertices(edges, int(mesh.vert.size()));
+  const FaceIncidence &in = prepared.incidence;
+  const std::vector<std::vector<int>> &edges_at = prepared.edges_at_vertex;
   std::vector<Eigen::Vector3d> sphere;
   for (const PlaneValue &v : plane_values)
     sphere.push_back(to_sphere(v));

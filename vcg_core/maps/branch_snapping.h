@@ -29,12 +29,13 @@
 
 #include "mesh/mesh.h"
 #include "mesh/mesh_edges.h"
+#include "mesh/prepared_mesh.h"
 #include "sphere/branch_points.h"
 #include "sphere/sphere_geometry.h"
 
 namespace meromorph {
 
-int snap_branch_points(const Mesh &mesh, const MeshEdges &edges,
+int snap_branch_points(const PreparedMesh &prepared,
                        const std::vector<const Eigen::VectorXcd *> &coordinate_forms,
                        std::vector<PlaneValue> &values);
 

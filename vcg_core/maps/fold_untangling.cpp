@@ -62,9 +62,10 @@ bool reembed(const Mesh &mesh, const FaceIncidence &incidence, const std::vector
 
 } // namespace
 
-int untangle_folds(const Mesh &mesh, std::vector<Eigen::Vector3d> &sphere,
+int untangle_folds(const PreparedMesh &prepared, std::vector<Eigen::Vector3d> &sphere,
                    const std::vector<int> &fixed) {
-  const FaceIncidence incidence = face_incidence(mesh);
+  const Mesh &mesh = prepared.mesh;
+  const FaceIncidence &incidence = prepared.incidence;
   const auto &corners = incidence.corners;
   const auto &faces_of = incidence.faces_of_vertex;
   std::vector<char> is_fixed(mesh.vert.size(), 0);

@@ -20,10 +20,11 @@
 #include <Eigen/Core>
 
 #include "mesh/mesh.h"
+#include "mesh/prepared_mesh.h"
 
 namespace meromorph {
 
-int untangle_folds(const Mesh &mesh, std::vector<Eigen::Vector3d> &sphere,
+int untangle_folds(const PreparedMesh &prepared, std::vector<Eigen::Vector3d> &sphere,
                    const std::vector<int> &fixed);
 
 } // namespace meromorph

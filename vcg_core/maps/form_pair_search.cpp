@@ -11,9 +11,10 @@
 
 namespace meromorph {
 
-PairSearch search_form_pairs(const Mesh &mesh, const HolomorphicForms &forms,
-                             std::array<int, 2> form_pair, bool mobius,
-                             const std::vector<double> &areas, const Progress &progress) {
+PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForms &forms,
+                             std::array<int, 2> form_pair, bool mobius, const Progress &progress) {
+  const Mesh &mesh = prepared.mesh;
+  const std::vector<double> &areas = prepared.vertex_areas;
   const int euler = 2 - 2 * forms.genus;
   PairSearch out;
   const auto [i, j] = form_pair;
@@ -49,11 +50,10 @@ PairSearch search_form_pairs(const Mesh &mesh, const HolomorphicForms &forms,
       omega2 += pairs[attempt].second[k] * forms.normalized[k];
     }
     const Eigen::VectorXcd numerator = omega1 + omega2, denominator = omega1 - omega2;
-    Attempt result{false, 0, form_ratio_map(mesh, forms.edges, numerator, denominator), {}, 0};
+    Attempt result{false, 0, form_ratio_map(prepared, numerator, denominator), {}, 0};
     if (mobius) result.centring = center_on_sphere(result.values, areas);
     for (int pass = 0; pass < 4; ++pass) {
-      const int repaired =
-          snap_branch_points(mesh, forms.edges, {&numerator, &denominator}, result.values);
+      const int repaired = snap_branch_points(prepared, {&numerator, &denominator}, result.values);
       result.snapped += repaired;
       if (!repaired) break;
     }

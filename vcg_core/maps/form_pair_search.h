@@ -18,7 +18,7 @@
 #include "common/progress.h"
 #include "forms/holomorphic_pipeline.h"
 #include "maps/form_pairs.h"
-#include "mesh/mesh.h"
+#include "mesh/prepared_mesh.h"
 #include "sphere/mobius_centering.h"
 #include "sphere/sphere_geometry.h"
 
@@ -32,8 +32,7 @@ struct PairSearch {
   int attempts = 0;
 };
 
-PairSearch search_form_pairs(const Mesh &mesh, const HolomorphicForms &forms,
-                             std::array<int, 2> form_pair, bool mobius,
-                             const std::vector<double> &areas, const Progress &progress);
+PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForms &forms,
+                             std::array<int, 2> form_pair, bool mobius, const Progress &progress);
 
 } // namespace meromorph

@@ -130,13 +130,15 @@ std::vector<Complex> solve_chart(const Mesh &mesh, const FaceIncidence &in,
 
 } // namespace
 
-std::vector<PlaneValue> form_ratio_map(const Mesh &mesh, const MeshEdges &edges,
+std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
                                        const Eigen::VectorXcd &numerator,
                                        const Eigen::VectorXcd &denominator) {
+  const Mesh &mesh = prepared.mesh;
+  const MeshEdges &edges = prepared.edges;
   const int n = int(mesh.vert.size());
   const size_t face_count = mesh.face.size();
-  const FaceGeometry geometry = face_geometry(mesh);
-  const FaceIncidence in = face_incidence(mesh);
+  const FaceGeometry &geometry = prepared.geometry;
+  const FaceIncidence &in = prepared.incidence;
   const std::vector<Complex> top = holomorphic_coefficient(mesh, edges, geometry, numerator);
   const std::vector<Complex> bottom = holomorphic_coefficient(mesh, edges, geometry, denominator);
   // First guess per vertex: the area-weighted mean of its faces' samples on the sphere.

@@ -20,11 +20,12 @@
 
 #include "mesh/mesh.h"
 #include "mesh/mesh_edges.h"
+#include "mesh/prepared_mesh.h"
 #include "sphere/sphere_geometry.h"
 
 namespace meromorph {
 
-std::vector<PlaneValue> form_ratio_map(const Mesh &mesh, const MeshEdges &edges,
+std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
                                        const Eigen::VectorXcd &numerator,
                                        const Eigen::VectorXcd &denominator);
 

@@ -22,15 +22,16 @@ int collapsed_faces(const Mesh &mesh, const std::vector<PlaneValue> &values) {
 
 } // namespace
 
-Genus0Result best_genus0_map(const Mesh &mesh, const MeshEdges &edges,
-                             const std::vector<double> &weights, SolverKind solver,
-                             int pole_face_asked, const std::vector<double> &areas) {
+Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, int pole_face_asked) {
+  const Mesh &mesh = prepared.mesh;
+  const MeshEdges &edges = prepared.edges;
+  const std::vector<double> &areas = prepared.vertex_areas;
   // The plain cotangent map is the most conformal; if it folds (negative weights on meshes with
   // many obtuse triangles), the map with strictly positive weights cannot.
   // Weights are raised only near folds (two rings), round by round; all of them at the end.
   auto solve = [&](int pole_face) {
     std::vector<char> raise(edges.edge_count(), 0);
-    Genus0Map attempt = genus0_map(mesh, edges, weights, solver, pole_face, raise);
+    Genus0Map attempt = genus0_map(prepared, solver, pole_face, raise);
     for (int round = 0; round < 4 && !attempt.folded_faces.empty(); ++round) {
       std::set<int> near;
       for (int f : attempt.folded_faces)
@@ -47,10 +48,9 @@ Genus0Result best_genus0_map(const Mesh &mesh, const MeshEdges &edges,
       }
       for (int e = 0; e < edges.edge_count(); ++e)
         if (near.count(edges.vertices[e][0]) && near.count(edges.vertices[e][1])) raise[e] = 1;
-      attempt = genus0_map(mesh, edges, weights, solver, pole_face, raise);
+      attempt = genus0_map(prepared, solver, pole_face, raise);
     }
-    if (!attempt.folded_faces.empty())
-      attempt = genus0_map(mesh, edges, weights, solver, pole_face, {});
+    if (!attempt.folded_faces.empty()) attempt = genus0_map(prepared, solver, pole_face, {});
     return attempt;
   };
   // The pinned-pole map, its shear removed and its pole region solved again

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "forms/laplacian_solver.h"
-#include "mesh/mesh.h"
 #include "mesh/mesh_edges.h"
+#include "mesh/prepared_mesh.h"
 #include "sphere/sphere_geometry.h"
 
 namespace meromorph {
@@ -25,8 +25,6 @@ struct Genus0Result {
   int puncture_face = -1, raised_weights = 0;
 };
 
-Genus0Result best_genus0_map(const Mesh &mesh, const MeshEdges &edges,
-                             const std::vector<double> &weights, SolverKind solver, int pole_face,
-                             const std::vector<double> &areas);
+Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, int pole_face);
 
 } // namespace meromorph

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "forms/cotan_laplacian.h"
+#include "mesh/cotan_laplacian.h"
 
 namespace meromorph {
 namespace {

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "common/errors.h"
-#include "forms/cotan_laplacian.h"
+#include "mesh/cotan_laplacian.h"
 #include "mesh/face_vectors.h"
 #include "sphere/sphere_geometry.h"
 
@@ -33,11 +33,14 @@ int best_shaped_face(const Mesh &mesh, const FaceGeometry &geometry) {
 
 } // namespace
 
-Genus0Map genus0_map(const Mesh &mesh, const MeshEdges &edges, const std::vector<double> &weights,
-                     SolverKind solver, int puncture_face, const std::vector<char> &raise) {
+Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int puncture_face,
+                     const std::vector<char> &raise) {
+  const Mesh &mesh = prepared.mesh;
+  const MeshEdges &edges = prepared.edges;
+  const std::vector<double> &weights = prepared.weights;
   constexpr int refinement_steps = 2;
   Genus0Map out;
-  const FaceGeometry geometry = face_geometry(mesh);
+  const FaceGeometry &geometry = prepared.geometry;
   if (puncture_face < 0) puncture_face = best_shaped_face(mesh, geometry);
   if (puncture_face >= int(mesh.face.size()))
     throw ArgumentError("puncture face " + std::to_string(puncture_face) + " does not exist");

@@ -20,6 +20,7 @@
 #include "forms/laplacian_solver.h"
 #include "mesh/mesh.h"
 #include "mesh/mesh_edges.h"
+#include "mesh/prepared_mesh.h"
 #include "sphere/sphere_geometry.h"
 
 namespace meromorph {
@@ -36,8 +37,7 @@ struct Genus0Map {
 // plain cotangent map is the most conformal, but with negative weights it may fold;
 // `folded_faces` lists the faces turned over in the plane, so that a caller can raise the weights
 // around them only, and all of them as the last resort.
-Genus0Map genus0_map(const Mesh &mesh, const MeshEdges &edges, const std::vector<double> &weights,
-                     SolverKind solver, int puncture_face = -1,
+Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int puncture_face = -1,
                      const std::vector<char> &raise = {});
 
 } // namespace meromorph

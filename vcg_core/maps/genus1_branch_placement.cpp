@@ -138,8 +138,9 @@ void reshape_ring(const FaceIncidence &in, const Genus1Map &map, int c, Shifted 
 
 } // namespace
 
-std::vector<double> widest_flat_corners(const Mesh &mesh, const MeshEdges &edges,
-                                        const Eigen::VectorXcd &psi) {
+std::vector<double> widest_flat_corners(const PreparedMesh &prepared, const Eigen::VectorXcd &psi) {
+  const Mesh &mesh = prepared.mesh;
+  const MeshEdges &edges = prepared.edges;
   std::vector<double> widest(mesh.vert.size(), 0.0);
   for (size_t f = 0; f < mesh.face.size(); ++f) {
     Complex side[3]; // side k: from corner k to corner k + 1
@@ -154,18 +155,16 @@ std::vector<double> widest_flat_corners(const Mesh &mesh, const MeshEdges &edges
   return widest;
 }
 
-std::vector<double> flat_area_ratios(const Mesh &mesh, const MeshEdges &edges,
-                                     const Eigen::VectorXcd &psi) {
+std::vector<double> flat_area_ratios(const PreparedMesh &prepared, const Eigen::VectorXcd &psi) {
+  const Mesh &mesh = prepared.mesh;
+  const MeshEdges &edges = prepared.edges;
   std::vector<double> flat(mesh.vert.size(), 0.0), surface(mesh.vert.size(), 0.0);
   for (size_t f = 0; f < mesh.face.size(); ++f) {
     const Complex first = double(edges.face_signs[f][0]) * psi[edges.face_edges[f][0]];
     const Complex second = double(edges.face_signs[f][1]) * psi[edges.face_edges[f][1]];
-    const MeshFace &face = mesh.face[f];
-    const double surface_area = ((face.cP(1) - face.cP(0)) ^ (face.cP(2) - face.cP(0))).Norm() / 2;
-    for (int k = 0; k < 3; ++k) {
-      const size_t v = size_t(index_of(mesh, face.cV(k)));
-      flat[v] += std::abs(std::imag(std::conj(first) * second)) / 2;
-      surface[v] += surface_area;
+    for (int v : prepared.incidence.corners[f]) {
+      flat[size_t(v)] += std::abs(std::imag(std::conj(first) * second)) / 2;
+      surface[size_t(v)] += prepared.geometry.areas[f];
     }
   }
   for (size_t v = 0; v < flat.size(); ++v)
@@ -173,10 +172,10 @@ std::vector<double> flat_area_ratios(const Mesh &mesh, const MeshEdges &edges,
   return flat;
 }
 
-Genus1Placement place_half_period_branch_points(const Mesh &mesh, const FaceIncidence &in,
-                                                const Genus1Map &map, const Mobius &centring,
+Genus1Placement place_half_period_branch_points(const PreparedMesh &prepared, const Genus1Map &map,
+                                                const Mobius &centring,
                                                 std::vector<PlaneValue> &values) {
-  (void)mesh;
+  const FaceIncidence &in = prepared.incidence;
   Genus1Placement out;
   std::vector<Eigen::Vector3d> sphere(values.size());
   for (size_t v = 0; v < values.size(); ++v)

@@ -21,6 +21,7 @@
 #include "maps/genus1_map.h"
 #include "mesh/mesh.h"
 #include "mesh/mesh_edges.h"
+#include "mesh/prepared_mesh.h"
 
 namespace meromorph {
 
@@ -30,18 +31,16 @@ struct Genus1Placement {
   int candidates_tried = 0;
 };
 
-Genus1Placement place_half_period_branch_points(const Mesh &mesh, const FaceIncidence &incidence,
-                                                const Genus1Map &map, const Mobius &centring,
+Genus1Placement place_half_period_branch_points(const PreparedMesh &prepared, const Genus1Map &map,
+                                                const Mobius &centring,
                                                 std::vector<PlaneValue> &values);
 
 // Per vertex: its widest corner, in radians, measured in the flat coordinate (face sides
 // d = sign * psi[edge]).
-std::vector<double> widest_flat_corners(const Mesh &mesh, const MeshEdges &edges,
-                                        const Eigen::VectorXcd &psi);
+std::vector<double> widest_flat_corners(const PreparedMesh &prepared, const Eigen::VectorXcd &psi);
 
 // Per vertex: the flat area of its star over its surface area (the square of the conformal
 // scale there; a long thin part's is exponentially small).
-std::vector<double> flat_area_ratios(const Mesh &mesh, const MeshEdges &edges,
-                                     const Eigen::VectorXcd &psi);
+std::vector<double> flat_area_ratios(const PreparedMesh &prepared, const Eigen::VectorXcd &psi);
 
 } // namespace meromorph

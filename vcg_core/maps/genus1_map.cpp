@@ -45,12 +45,12 @@ std::vector<Complex> integrate_from(int root, const std::vector<std::vector<int>
 // the flat metric is at least half its 90th percentile, the 8 whose widest corner is narrowest
 // are candidates, ordered by their worst spot (themselves, or the best of the 8 vertices nearest
 // each half period): the narrower its widest corner, the better.
-std::vector<int> origin_candidates(const Mesh &mesh, const MeshEdges &edges,
-                                   const Eigen::VectorXcd &psi, const std::vector<Complex> &flat,
+std::vector<int> origin_candidates(const PreparedMesh &prepared, const Eigen::VectorXcd &psi,
+                                   const std::vector<Complex> &flat,
                                    const WeierstrassP &p_function) {
-  const size_t vertex_count = mesh.vert.size();
-  const std::vector<double> widest = widest_flat_corners(mesh, edges, psi);
-  const std::vector<double> scale = flat_area_ratios(mesh, edges, psi);
+  const size_t vertex_count = prepared.mesh.vert.size();
+  const std::vector<double> widest = widest_flat_corners(prepared, psi);
+  const std::vector<double> scale = flat_area_ratios(prepared, psi);
   std::vector<double> sorted = scale;
   const auto high = sorted.begin() + std::ptrdiff_t(0.9 * double(vertex_count - 1));
   std::nth_element(sorted.begin(), high, sorted.end());
@@ -98,25 +98,24 @@ std::vector<int> origin_candidates(const Mesh &mesh, const MeshEdges &edges,
 
 } // namespace
 
-std::vector<int> genus1_origin_candidates(const Mesh &mesh, const MeshEdges &edges,
-                                          const Eigen::VectorXcd &psi,
+std::vector<int> genus1_origin_candidates(const PreparedMesh &prepared, const Eigen::VectorXcd &psi,
                                           const WeierstrassP &p_function) {
   return origin_candidates(
-      mesh, edges, psi,
-      integrate_from(0, edges_at_vertices(edges, int(mesh.vert.size())), edges, psi), p_function);
+      prepared, psi, integrate_from(0, prepared.edges_at_vertex, prepared.edges, psi), p_function);
 }
 
-Genus1Map genus1_map(const Mesh &mesh, const MeshEdges &edges, const Eigen::VectorXcd &psi,
-                     Complex period_a, Complex period_b, int origin_vertex) {
-  const int vertex_count = int(mesh.vert.size());
+Genus1Map genus1_map(const PreparedMesh &prepared, const Eigen::VectorXcd &psi, Complex period_a,
+                     Complex period_b, int origin_vertex) {
+  const int vertex_count = int(prepared.mesh.vert.size());
+  const MeshEdges &edges = prepared.edges;
   if (origin_vertex >= vertex_count)
     throw ArgumentError("origin vertex " + std::to_string(origin_vertex) + " does not exist (0.." +
                         std::to_string(vertex_count - 1) + ")");
   Genus1Map out{{}, {}, WeierstrassP(period_a, period_b), {}, -1};
-  const std::vector<std::vector<int>> incident = edges_at_vertices(edges, vertex_count);
+  const std::vector<std::vector<int>> &incident = prepared.edges_at_vertex;
   if (origin_vertex < 0)
     origin_vertex =
-        origin_candidates(mesh, edges, psi, integrate_from(0, incident, edges, psi), out.p_function)
+        origin_candidates(prepared, psi, integrate_from(0, incident, edges, psi), out.p_function)
             .front();
   out.flat = integrate_from(origin_vertex, incident, edges, psi);
 

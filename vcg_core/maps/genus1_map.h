@@ -21,6 +21,7 @@
 #include "maps/weierstrass_p.h"
 #include "mesh/mesh.h"
 #include "mesh/mesh_edges.h"
+#include "mesh/prepared_mesh.h"
 #include "sphere/sphere_geometry.h"
 
 namespace meromorph {
@@ -34,11 +35,10 @@ struct Genus1Map {
 };
 
 // Vertices where the double pole may go, best first (at most 8; see genus1_map.cpp).
-std::vector<int> genus1_origin_candidates(const Mesh &mesh, const MeshEdges &edges,
-                                          const Eigen::VectorXcd &psi,
+std::vector<int> genus1_origin_candidates(const PreparedMesh &prepared, const Eigen::VectorXcd &psi,
                                           const WeierstrassP &p_function);
 
-Genus1Map genus1_map(const Mesh &mesh, const MeshEdges &edges, const Eigen::VectorXcd &psi,
-                     Complex period_a, Complex period_b, int origin_vertex);
+Genus1Map genus1_map(const PreparedMesh &prepared, const Eigen::VectorXcd &psi, Complex period_a,
+                     Complex period_b, int origin_vertex);
 
 } // namespace meromorph

@@ -10,7 +10,9 @@
 #include "maps/map_validity.h"
 #include "maps/written_map.h"
 #include "mesh/face_vectors.h"
+#include "mesh/prepared_mesh.h"
 #include "mesh/unit_scale.h"
+#include "mesh/validation.h"
 
 namespace meromorph {
 namespace {
@@ -68,29 +70,33 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
   // Everything is computed at unit scale (unit_scale.h); positions reported are the input's.
   Mesh mesh;
   copy_at_unit_scale(input, unit_scale_of(input), mesh);
-  const std::vector<double> areas = vertex_areas(mesh); // the weights of the Moebius centring
+  const Validation validation = validated ? *validated : validate_mesh(mesh);
+  if (!validation.ok()) throw InputError(validation.main_finding().message);
 
   Parameterization out;
-  const HolomorphicForms forms =
-      compute_holomorphic_forms(mesh, options.solver, progress.range(0.0, 0.6), validated);
-  out.timings_ms = forms.timings_ms;
   StageClock clock(out.timings_ms);
+  progress.report(0.0, "edges and cotangent weights");
+  const PreparedMesh prepared = prepare_mesh(mesh); // every stage below reads it
+  clock.done("prepare");
+  const HolomorphicForms forms =
+      compute_holomorphic_forms(prepared, options.solver, progress.range(0.0, 0.6));
+  out.timings_ms.insert(out.timings_ms.end(), forms.timings_ms.begin(), forms.timings_ms.end());
+  clock.restart();
+  out.notes = validation.notes;
   out.genus = forms.genus;
   out.euler = 2 - 2 * out.genus;
   out.non_holomorphicity_mean = forms.non_holomorphicity_mean;
-  out.notes = forms.notes;
 
   progress.report(0.6, "meromorphic function");
   WrittenSphere written;
   if (out.genus == 0) {
-    const Genus0Result map = best_genus0_map(mesh, forms.edges, forms.weights, options.solver,
-                                             options.puncture_face, areas);
+    const Genus0Result map = best_genus0_map(prepared, options.solver, options.puncture_face);
     out.puncture_face = map.puncture_face;
     out.raised_weights = map.raised_weights;
     out.method = "genus 0: harmonic map with a simple pole (strictly positive weights), inverse "
                  "stereographic projection";
     clock.done("meromorphic");
-    finish_on_sphere(mesh, options.mobius, areas, nullptr, out.euler, map.values, written, progress,
+    finish_on_sphere(prepared, options.mobius, nullptr, out.euler, map.values, written, progress,
                      clock);
   } else if (out.genus == 1) {
     out.modulus = forms.modulus;
@@ -98,16 +104,16 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
     const std::vector<int> origins =
         options.origin_vertex >= 0
             ? std::vector<int>{options.origin_vertex}
-            : genus1_origin_candidates(mesh, forms.edges, forms.normalized[0],
+            : genus1_origin_candidates(prepared, forms.normalized[0],
                                        WeierstrassP(Complex(1, 0), forms.riemann_matrix(0, 0)));
     out.method = "genus 1: Weierstrass P-function of the flat coordinate";
     clock.done("meromorphic");
-    written = written_genus1_map(mesh, forms, origins, options.mobius, areas, progress, clock);
+    written = written_genus1_map(prepared, forms, origins, options.mobius, progress, clock);
   } else {
     out.riemann_matrix = forms.riemann_matrix;
     out.form_pair = options.form_pair;
     PairSearch search =
-        search_form_pairs(mesh, forms, options.form_pair, options.mobius, areas, progress);
+        search_form_pairs(prepared, forms, options.form_pair, options.mobius, progress);
     out.form_coefficients = search.coefficients;
     out.pair_attempts = search.attempts;
     out.method = "genus " + std::to_string(out.genus) +
@@ -118,12 +124,12 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
     written.mobius = search.centring;
     written.mobius_applied = options.mobius;
     written.snapped_branch_points = search.snapped_branch_points;
-    finish_on_sphere(mesh, options.mobius, areas, nullptr, out.euler, std::move(search.values),
+    finish_on_sphere(prepared, options.mobius, nullptr, out.euler, std::move(search.values),
                      written, progress, clock);
   }
   Branching branching;
   adopt(std::move(written), out, branching);
-  describe_written_map(input, mesh, forms.edges, options, branching, out, progress, clock);
+  describe_written_map(input, mesh, prepared.edges, options, branching, out, progress, clock);
   progress.report(1.0, "done");
   return out;
 }

@@ -21,9 +21,11 @@ int folded_face_count(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphe
 
 } // namespace
 
-void finish_on_sphere(const Mesh &mesh, bool mobius, const std::vector<double> &areas,
-                      const Genus1Map *torus_map, int euler, std::vector<PlaneValue> values,
-                      WrittenSphere &out, const Progress &progress, StageClock &clock) {
+void finish_on_sphere(const PreparedMesh &prepared, bool mobius, const Genus1Map *torus_map,
+                      int euler, std::vector<PlaneValue> values, WrittenSphere &out,
+                      const Progress &progress, StageClock &clock) {
+  const Mesh &mesh = prepared.mesh;
+  const std::vector<double> &areas = prepared.vertex_areas;
   if (mobius && euler >= 0) { // genus 0 and 1
     progress.report(0.7, "Moebius normalisation");
     out.mobius = center_on_sphere(values, areas);
@@ -33,8 +35,8 @@ void finish_on_sphere(const Mesh &mesh, bool mobius, const std::vector<double> &
   if (torus_map) {
     // A piecewise-linear map branches only at vertices: the half periods go onto vertices,
     // decided on the centred map as it will be written (genus1_branch_placement.h).
-    const Genus1Placement placed = place_half_period_branch_points(
-        mesh, face_incidence(mesh), *torus_map, out.mobius.transformation, values);
+    const Genus1Placement placed =
+        place_half_period_branch_points(prepared, *torus_map, out.mobius.transformation, values);
     out.snapped_branch_points =
         int(std::count(placed.fold_free.begin(), placed.fold_free.end(), true));
     clock.done("branch_placement");
@@ -46,7 +48,7 @@ void finish_on_sphere(const Mesh &mesh, bool mobius, const std::vector<double> &
   progress.report(0.8, "branch points and layers");
   // Everything below is measured on the map as written: vertex values, linear on each face.
   out.branching = analyse_branching(mesh, out.sphere, euler);
-  out.untangled_vertices = untangle_folds(mesh, out.sphere, out.branching.branch_vertices);
+  out.untangled_vertices = untangle_folds(prepared, out.sphere, out.branching.branch_vertices);
   if (mobius && (out.untangled_vertices || out.snapped_branch_points)) {
     // The vertices moved above shift the centroid a little: centre once more.
     for (size_t v = 0; v < values.size(); ++v)
@@ -62,19 +64,18 @@ void finish_on_sphere(const Mesh &mesh, bool mobius, const std::vector<double> &
   if (out.untangled_vertices || mobius) out.branching = analyse_branching(mesh, out.sphere, euler);
 }
 
-WrittenSphere written_genus1_map(const Mesh &mesh, const HolomorphicForms &forms,
+WrittenSphere written_genus1_map(const PreparedMesh &prepared, const HolomorphicForms &forms,
                                  const std::vector<int> &origins, bool mobius,
-                                 const std::vector<double> &areas, const Progress &progress,
-                                 StageClock &clock) {
+                                 const Progress &progress, StageClock &clock) {
   std::optional<WrittenSphere> first;
   for (size_t k = 0; k < std::min<size_t>(4, origins.size()); ++k) {
-    const Genus1Map map = genus1_map(mesh, forms.edges, forms.normalized[0], Complex(1, 0),
+    const Genus1Map map = genus1_map(prepared, forms.normalized[0], Complex(1, 0),
                                      forms.riemann_matrix(0, 0), origins[k]);
     WrittenSphere written;
-    finish_on_sphere(mesh, mobius, areas, &map, 0, map.values, written, progress, clock);
+    finish_on_sphere(prepared, mobius, &map, 0, map.values, written, progress, clock);
     written.origin_vertex = map.origin_vertex;
     const bool valid = written.branching.degree == 2 && written.branching.riemann_hurwitz_ok &&
-                       folded_face_count(mesh, written.sphere) == 0;
+                       folded_face_count(prepared.mesh, written.sphere) == 0;
     if (valid || k == 0) first = std::move(written);
     first->origin_attempts = int(k) + 1;
     if (valid) break;

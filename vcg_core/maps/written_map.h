@@ -21,7 +21,7 @@
 #include "common/stage_clock.h"
 #include "forms/holomorphic_pipeline.h"
 #include "maps/genus1_map.h"
-#include "mesh/mesh.h"
+#include "mesh/prepared_mesh.h"
 #include "sphere/branch_points.h"
 #include "sphere/mobius_centering.h"
 #include "sphere/sphere_geometry.h"
@@ -37,13 +37,12 @@ struct WrittenSphere {
   int origin_vertex = -1, origin_attempts = 0; // genus 1
 };
 
-void finish_on_sphere(const Mesh &mesh, bool mobius, const std::vector<double> &areas,
-                      const Genus1Map *torus_map, int euler, std::vector<PlaneValue> values,
-                      WrittenSphere &out, const Progress &progress, StageClock &clock);
+void finish_on_sphere(const PreparedMesh &prepared, bool mobius, const Genus1Map *torus_map,
+                      int euler, std::vector<PlaneValue> values, WrittenSphere &out,
+                      const Progress &progress, StageClock &clock);
 
-WrittenSphere written_genus1_map(const Mesh &mesh, const HolomorphicForms &forms,
+WrittenSphere written_genus1_map(const PreparedMesh &prepared, const HolomorphicForms &forms,
                                  const std::vector<int> &origins, bool mobius,
-                                 const std::vector<double> &areas, const Progress &progress,
-                                 StageClock &clock);
+                                 const Progress &progress, StageClock &clock);
 
 } // namespace meromorph

@@ -29,7 +29,10 @@ double smallest_angle(const MeshFace &face) {
 }
 
 std::vector<double> vertex_areas(const Mesh &mesh) {
-  const FaceGeometry geometry = face_geometry(mesh);
+  return vertex_areas(mesh, face_geometry(mesh));
+}
+
+std::vector<double> vertex_areas(const Mesh &mesh, const FaceGeometry &geometry) {
   std::vector<double> areas(mesh.vert.size(), 0.0);
   for (size_t f = 0; f < mesh.face.size(); ++f)
     for (int k = 0; k < 3; ++k)

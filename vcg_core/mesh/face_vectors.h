@@ -31,6 +31,7 @@ double smallest_angle(const MeshFace &face);
 
 // A third of the area of every face around each vertex: the surface area a vertex stands for.
 std::vector<double> vertex_areas(const Mesh &mesh);
+std::vector<double> vertex_areas(const Mesh &mesh, const FaceGeometry &geometry);
 
 // Face vectors, one row per face (F x 3).
 Eigen::MatrixX3d face_vectors(const Mesh &mesh, const MeshEdges &edges,

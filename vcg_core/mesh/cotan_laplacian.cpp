@@ -1,4 +1,4 @@
-#include "forms/cotan_laplacian.h"
+#include "mesh/cotan_laplacian.h"
 
 namespace meromorph {
 
