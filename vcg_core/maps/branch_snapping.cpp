@@ -108,235 +108,269 @@ bool double_star(const std::vector<double> &corners, Complex centre_value,
   return true;
 }
 
+using Moves = std::vector<std::pair<int, Eigen::Vector3d>>;
+
+// Folded faces, then flat ones (a corner of 90 degrees or more at a branch vertex is flat after
+// doubling: not a fold), then winding not 2 at the branch vertex, then angle distortion.
+using Score = std::tuple<int, int, int, double>;
+
+// The map around one trouble spot, as it is changed and scored.
+struct Spot {
+  const Mesh &mesh;
+  const FaceIncidence &in;
+  std::vector<Eigen::Vector3d> &sphere;
+  std::vector<int> vertices;
+  std::map<int, int> region; // ring distance from the spot, out to where the map may change
+  std::vector<int> region_faces;
+
+  Score score(int branch_vertex) const {
+    Score score{0, 0, branch_vertex < 0 || vertex_winding(in, sphere, branch_vertex) != 2, 0.0};
+    for (int f : region_faces) {
+      const auto &c = in.corners[size_t(f)];
+      const bool folded = folded_image(sphere[c[0]], sphere[c[1]], sphere[c[2]]);
+      std::get<0>(score) += folded;
+      std::get<1>(score) += !folded && folded_or_flat(in, sphere, f);
+      std::get<3>(score) += face_angle_error_degrees(mesh, sphere, f);
+    }
+    return score;
+  }
+  // Moves applied (what they replace appended to `saved`), the spot scored.
+  Score score_moved(const Moves &moves, Moves &saved, int branch_vertex) {
+    for (const auto &[w, point] : moves) {
+      saved.push_back({w, sphere[size_t(w)]});
+      sphere[size_t(w)] = point;
+    }
+    return score(branch_vertex);
+  }
+  void restore(const Moves &saved) {
+    for (auto at = saved.rbegin(); at != saved.rend(); ++at)
+      sphere[size_t(at->first)] = at->second;
+  }
+};
+
+// How many critical points the spot holds: each folded face around it stands for a turn that its
+// vertices' windings miss (over a closed surface, the sum of e - 1 plus the folded faces is
+// 2d - chi).
+int critical_points_in(const Spot &spot) {
+  int count = 0;
+  std::set<int> spot_faces;
+  for (int v : spot.vertices) {
+    count += vertex_winding(spot.in, spot.sphere, v) - 1;
+    spot_faces.insert(spot.in.faces_of_vertex[size_t(v)].begin(),
+                      spot.in.faces_of_vertex[size_t(v)].end());
+  }
+  for (int f : spot_faces) {
+    const auto &c = spot.in.corners[size_t(f)];
+    count += folded_image(spot.sphere[c[0]], spot.sphere[c[1]], spot.sphere[c[2]]);
+  }
+  return count;
+}
+
+// No critical point: a vertex value strays (next to needle-shaped faces, say); the spot's values
+// smoothed towards their neighbours', kept if that scores better. Returns whether it did.
+bool smooth_stray_values(Spot &spot) {
+  Moves original;
+  for (int v : spot.vertices)
+    original.push_back({v, spot.sphere[size_t(v)]});
+  const Score before = spot.score(-1);
+  for (int round = 0; round < 4; ++round)
+    for (int v : spot.vertices) {
+      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+      for (int f : spot.in.faces_of_vertex[size_t(v)])
+        for (int w : spot.in.corners[size_t(f)])
+          if (w != v) mean += spot.sphere[size_t(w)];
+      spot.sphere[size_t(v)] = mean.normalized();
+    }
+  if (spot.score(-1) < before) return true;
+  spot.restore(original);
+  return false;
+}
+
+// Near a critical point p the map is Q(z) = c + k (z - p)^2 = A + B z + C z^2 in a chart of the
+// sphere centred at the spot's image, z the integral of the coordinate form; a spot that holds
+// two critical points close together gets a cubic instead, whose derivative's two roots are both
+// tried (the next pass takes the other one).
+struct CriticalModel {
+  Eigen::Vector3d centre;
+  Eigen::VectorXcd coefficients; // A, B, C (, D)
+  std::vector<int> fitted;       // the vertices it is fitted on
+  std::vector<Complex> critical_points;
+  Complex operator()(Complex x) const {
+    Complex value = 0;
+    for (long k = coefficients.size() - 1; k >= 0; --k)
+      value = value * x + coefficients[k];
+    return value;
+  }
+};
+
+// The model fitted by least squares on the vertices within `fit_rings` of the spot; false where
+// the fit is not finite.
+bool fit_critical_model(const Spot &spot, const std::map<int, Complex> &z, int critical_points,
+                        int fit_rings, CriticalModel &model) {
+  for (const auto &[v, ring] : spot.region)
+    if (ring <= fit_rings) model.fitted.push_back(v);
+  model.centre = Eigen::Vector3d::Zero();
+  for (int v : model.fitted)
+    model.centre += spot.sphere[size_t(v)];
+  model.centre.normalize();
+  const int terms = critical_points >= 2 ? 4 : 3;
+  Eigen::MatrixXcd design(long(model.fitted.size()), terms);
+  Eigen::VectorXcd image(long(model.fitted.size()));
+  for (size_t i = 0; i < model.fitted.size(); ++i) {
+    Complex power = 1.0;
+    for (int k = 0; k < terms; ++k, power *= z.at(model.fitted[i]))
+      design(long(i), k) = power;
+    image[long(i)] = chart_at(model.centre, spot.sphere[size_t(model.fitted[i])]);
+  }
+  model.coefficients = design.colPivHouseholderQr().solve(image);
+  if (!model.coefficients.allFinite()) return false;
+  const Eigen::VectorXcd &abc = model.coefficients;
+  if (terms == 4 && std::abs(abc[3]) > 0) {
+    const Complex root = std::sqrt(abc[2] * abc[2] - 3.0 * abc[1] * abc[3]);
+    model.critical_points = {(-abc[2] + root) / (3.0 * abc[3]), (-abc[2] - root) / (3.0 * abc[3])};
+  } else if (std::abs(abc[2]) > 0) {
+    model.critical_points = {-abc[1] / (2.0 * abc[2])};
+  }
+  return true;
+}
+
+// The best of the changes tried so far and its score.
+struct BestChange {
+  Score score;
+  Moves moves;
+  void offer(const Score &candidate, const Moves &candidate_moves) {
+    if (candidate < score) {
+      score = candidate;
+      moves = candidate_moves;
+    }
+  }
+};
+
+// Vertex v made the branch point with critical value c: the map composed with the shift
+// z -> z + t (p - z_v), t = 1 - ring / R at the vertices R - 1 rings or less from v (v itself
+// takes c); then the same with v's one-ring re-placed around c (double_star), for stars whose
+// corners would reach 180 degrees or more when doubled; and the rings beyond re-embedded between
+// the new star and the rest, where the moved one-ring folds the faces next to it. Each scored;
+// the spot is left as it was.
+void try_branch_vertex(Spot &spot, const CriticalModel &model, const std::map<int, Complex> &z,
+                       Complex p, int v, int shift_rings, BestChange &best) {
+  const Complex c = model(p);
+  const Complex shift = p - z.at(v);
+  Moves change, original;
+  for (const auto &[w, ring] : ring_distances(spot.in, {v}, shift_rings - 1)) {
+    const double t = 1.0 - double(ring) / shift_rings;
+    const Complex value = w == v ? c
+                                 : chart_at(model.centre, spot.sphere[size_t(w)]) +
+                                       model(z.at(w) + t * shift) - model(z.at(w));
+    change.push_back({w, from_chart(model.centre, value)});
+  }
+  best.offer(spot.score_moved(change, original, v), change);
+
+  // From the neighbour of lowest index: the star's overall turn keeps that one's direction.
+  std::vector<int> ring = ordered_ring(spot.in, v);
+  std::rotate(ring.begin(), std::min_element(ring.begin(), ring.end()), ring.end());
+  std::vector<Complex> ring_values;
+  std::vector<double> corners;
+  const Point3 &at = spot.mesh.vert[size_t(v)].cP();
+  for (size_t k = 0; k < ring.size(); ++k) {
+    ring_values.push_back(chart_at(model.centre, spot.sphere[size_t(ring[k])]));
+    corners.push_back(vcg::Angle(spot.mesh.vert[size_t(ring[k])].cP() - at,
+                                 spot.mesh.vert[size_t(ring[(k + 1) % ring.size()])].cP() - at));
+  }
+  if (double_star(corners, c, ring_values)) {
+    Moves replaced = change, star;
+    for (size_t k = 0; k < ring.size(); ++k)
+      star.push_back({ring[k], from_chart(model.centre, ring_values[k])});
+    replaced.insert(replaced.end(), star.begin(), star.end());
+    best.offer(spot.score_moved(star, original, v), replaced);
+    for (int rings = 2; rings <= 3 && std::get<0>(best.score) > 0; ++rings) {
+      const auto around = reembed_around_branch(spot.mesh, spot.in, spot.sphere, v, rings);
+      if (!around) continue;
+      Moves kept;
+      Moves wider = replaced;
+      wider.insert(wider.end(), around->begin(), around->end());
+      best.offer(spot.score_moved(*around, kept, v), wider);
+      spot.restore(kept);
+    }
+  }
+  spot.restore(original);
+}
+
 } // namespace
 
 int snap_branch_points(const PreparedMesh &prepared,
                        const std::vector<const Eigen::VectorXcd *> &coordinate_forms,
                        std::vector<PlaneValue> &plane_values) {
-  const Mesh &mesh = prepared.mesh;
-  const MeshEdges &edges = prepared.edges;
   constexpr int fit_rings = 2;       // around the spot, where the model is fitted
   constexpr int max_shift_rings = 5; // around the chosen vertex, where the map is changed
   const FaceIncidence &in = prepared.incidence;
-  const std::vector<std::vector<int>> &edges_at = prepared.edges_at_vertex;
   std::vector<Eigen::Vector3d> sphere;
   for (const PlaneValue &v : plane_values)
     sphere.push_back(to_sphere(v));
 
   int repaired = 0;
-  for (const std::vector<int> &spot : trouble_spots(in, sphere)) {
-    if (spot.size() > 64) continue; // not a lone critical point: leave it as measured
-    const std::map<int, int> region = ring_distances(in, spot, fit_rings + max_shift_rings + 1);
-    std::vector<int> region_faces;
-    {
-      std::set<int> faces;
-      for (const auto &[v, ring] : region)
-        faces.insert(in.faces_of_vertex[v].begin(), in.faces_of_vertex[v].end());
-      region_faces.assign(faces.begin(), faces.end());
-    }
-    // Folded faces, then flat ones (a corner of 90 degrees or more at a branch vertex is flat
-    // after doubling: not a fold), then winding not 2 at the branch vertex, then angle distortion.
-    using Score = std::tuple<int, int, int, double>;
-    auto score_region = [&](int branch_vertex) {
-      Score score{0, 0, branch_vertex < 0 || vertex_winding(in, sphere, branch_vertex) != 2, 0.0};
-      for (int f : region_faces) {
-        const auto &c = in.corners[f];
-        const bool folded = folded_image(sphere[c[0]], sphere[c[1]], sphere[c[2]]);
-        std::get<0>(score) += folded;
-        std::get<1>(score) += !folded && folded_or_flat(in, sphere, f);
-        std::get<3>(score) += face_angle_error_degrees(mesh, sphere, f);
-      }
-      return score;
-    };
+  for (const std::vector<int> &vertices : trouble_spots(in, sphere)) {
+    if (vertices.size() > 64) continue; // not a lone critical point: leave it as measured
+    Spot spot{prepared.mesh,
+              in,
+              sphere,
+              vertices,
+              ring_distances(in, vertices, fit_rings + max_shift_rings + 1),
+              {}};
+    std::set<int> faces;
+    for (const auto &[v, ring] : spot.region)
+      faces.insert(in.faces_of_vertex[size_t(v)].begin(), in.faces_of_vertex[size_t(v)].end());
+    spot.region_faces.assign(faces.begin(), faces.end());
 
-    // How many critical points the spot holds: each folded face around it stands for a turn that
-    // its vertices' windings miss (over a closed surface, the sum of e - 1 plus the folded faces
-    // is 2d - chi). None: a vertex value strays (next to needle-shaped faces, say); smooth the
-    // spot's values towards their neighbours' instead.
-    int critical_points = 0;
-    {
-      std::set<int> spot_faces;
-      for (int v : spot) {
-        critical_points += vertex_winding(in, sphere, v) - 1;
-        spot_faces.insert(in.faces_of_vertex[v].begin(), in.faces_of_vertex[v].end());
-      }
-      for (int f : spot_faces) {
-        const auto &c = in.corners[f];
-        critical_points += folded_image(sphere[c[0]], sphere[c[1]], sphere[c[2]]);
-      }
-    }
+    const int critical_points = critical_points_in(spot);
     if (critical_points <= 0) {
-      std::vector<std::pair<int, Eigen::Vector3d>> original;
-      for (int v : spot)
-        original.push_back({v, sphere[v]});
-      const Score before = score_region(-1);
-      for (int round = 0; round < 4; ++round)
-        for (int v : spot) {
-          Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-          for (int f : in.faces_of_vertex[v])
-            for (int w : in.corners[f])
-              if (w != v) mean += sphere[w];
-          sphere[v] = mean.normalized();
-        }
-      if (score_region(-1) < before) {
-        for (int v : spot)
-          plane_values[v] = to_plane_value(sphere[v]);
+      if (smooth_stray_values(spot)) {
+        for (int v : spot.vertices)
+          plane_values[size_t(v)] = to_plane_value(sphere[size_t(v)]);
         ++repaired;
-      } else {
-        for (const auto &[v, point] : original)
-          sphere[v] = point;
       }
       continue;
     }
-
     // The coordinate: the integral of the form that is larger near the spot (far from its zeros).
     const Eigen::VectorXcd *form = coordinate_forms.front();
     double largest = -1;
     for (const Eigen::VectorXcd *candidate : coordinate_forms) {
       double size = 0;
-      for (const auto &[v, ring] : region)
+      for (const auto &[v, ring] : spot.region)
         if (ring <= fit_rings)
-          for (int e : edges_at[v])
+          for (int e : prepared.edges_at_vertex[size_t(v)])
             size += std::abs((*candidate)[e]);
       if (size > largest) {
         largest = size;
         form = candidate;
       }
     }
-    std::map<int, Complex> z = integrated_coordinate(edges, edges_at, *form, spot.front(), region);
-
-    // Near a critical point p the map is Q(z) = c + k (z - p)^2 = A + B z + C z^2: fit A, B, C by
-    // least squares in a chart of the sphere centred at the spot's image, and read off
-    // p = -B / 2C and the critical value c = Q(p). A spot that holds two critical points close
-    // together gets a cubic instead, whose derivative's two roots are both tried (the next pass
-    // takes the other one).
-    std::vector<int> fitted;
-    for (const auto &[v, ring] : region)
-      if (ring <= fit_rings) fitted.push_back(v);
-    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
-    for (int v : fitted)
-      centre += sphere[v];
-    centre.normalize();
-    const int terms = critical_points >= 2 ? 4 : 3;
-    Eigen::MatrixXcd design(long(fitted.size()), terms);
-    Eigen::VectorXcd image(long(fitted.size()));
-    for (size_t i = 0; i < fitted.size(); ++i) {
-      Complex power = 1.0;
-      for (int k = 0; k < terms; ++k, power *= z[fitted[i]])
-        design(long(i), k) = power;
-      image[long(i)] = chart_at(centre, sphere[fitted[i]]);
-    }
-    const Eigen::VectorXcd abc = design.colPivHouseholderQr().solve(image);
-    if (!abc.allFinite()) continue;
-    auto model = [&](Complex x) {
-      Complex value = 0;
-      for (int k = terms - 1; k >= 0; --k)
-        value = value * x + abc[k];
-      return value;
-    };
-    std::vector<Complex> targets;
-    if (terms == 4 && std::abs(abc[3]) > 0) {
-      const Complex root = std::sqrt(abc[2] * abc[2] - 3.0 * abc[1] * abc[3]);
-      targets = {(-abc[2] + root) / (3.0 * abc[3]), (-abc[2] - root) / (3.0 * abc[3])};
-    } else if (std::abs(abc[2]) > 0) {
-      targets = {-abc[1] / (2.0 * abc[2])};
-    }
+    const std::map<int, Complex> z = integrated_coordinate(prepared.edges, prepared.edges_at_vertex,
+                                                           *form, vertices.front(), spot.region);
+    CriticalModel model;
+    if (!fit_critical_model(spot, z, critical_points, fit_rings, model)) continue;
 
     // Candidates: the 6 vertices nearest p, then, if none of them winds twice without folding a
-    // face (a corner of 90 degrees or more at a branch vertex turns its face over), the next 6.
-    // Each is tried with the map composed with the shift z -> z + t (p - z_v), t = 1 - ring / R at
-    // the vertices R - 1 rings or less from v (R = 1: v alone takes c); the fold-free one that
-    // distorts angles least wins (farther candidates distort more, so they come second).
-    Score best = score_region(-1);
-    std::vector<std::pair<int, Eigen::Vector3d>> best_change;
-    for (const Complex p : targets) {
-      const Complex c = model(p);
+    // face (a corner of 90 degrees or more at a branch vertex turns its face over), the next 6,
+    // each with the shift fading over 1 to max_shift_rings rings; the fold-free one that distorts
+    // angles least wins (farther candidates distort more, so they come second).
+    BestChange best{spot.score(-1), {}};
+    for (const Complex p : model.critical_points) {
       std::vector<std::pair<double, int>> by_distance;
-      for (int v : fitted)
-        by_distance.push_back({std::abs(z[v] - p), v});
+      for (int v : model.fitted)
+        by_distance.push_back({std::abs(z.at(v) - p), v});
       std::sort(by_distance.begin(), by_distance.end());
       for (const size_t first : {size_t(0), size_t(6)}) {
-        if (first > 0 && std::get<0>(best) == 0 && std::get<2>(best) == 0) break;
+        if (first > 0 && std::get<0>(best.score) == 0 && std::get<2>(best.score) == 0) break;
         for (int shift_rings = 1; shift_rings <= max_shift_rings; ++shift_rings)
-          for (size_t i = first; i < std::min<size_t>(first + 6, by_distance.size()); ++i) {
-            const int v = by_distance[i].second;
-            const Complex shift = p - z[v];
-            std::vector<std::pair<int, Eigen::Vector3d>> change, original;
-            for (const auto &[w, ring] : ring_distances(in, {v}, shift_rings - 1)) {
-              const double t = 1.0 - double(ring) / shift_rings;
-              const Complex value =
-                  w == v ? c : chart_at(centre, sphere[w]) + model(z[w] + t * shift) - model(z[w]);
-              change.push_back({w, from_chart(centre, value)});
-            }
-            // Moves applied (what they replace saved), the spot scored.
-            auto score_moved = [&](const std::vector<std::pair<int, Eigen::Vector3d>> &moves,
-                                   std::vector<std::pair<int, Eigen::Vector3d>> &saved) {
-              for (const auto &[w, point] : moves) {
-                saved.push_back({w, sphere[w]});
-                sphere[w] = point;
-              }
-              return score_region(v);
-            };
-            const Score score = score_moved(change, original);
-            if (score < best) {
-              best = score;
-              best_change = change;
-            }
-            // The same with the one-ring re-placed around the critical value, for stars whose
-            // corners would reach 180 degrees or more when doubled.
-            // From the neighbour of lowest index: the star's overall turn keeps that one's
-            // direction.
-            std::vector<int> ring = ordered_ring(in, v);
-            std::rotate(ring.begin(), std::min_element(ring.begin(), ring.end()), ring.end());
-            std::vector<Complex> ring_values;
-            std::vector<double> corners;
-            for (size_t k = 0; k < ring.size(); ++k) {
-              ring_values.push_back(chart_at(centre, sphere[ring[k]]));
-              const Point3 &at = mesh.vert[size_t(v)].cP();
-              corners.push_back(
-                  vcg::Angle(mesh.vert[size_t(ring[k])].cP() - at,
-                             mesh.vert[size_t(ring[(k + 1) % ring.size()])].cP() - at));
-            }
-            if (double_star(corners, c, ring_values)) {
-              std::vector<std::pair<int, Eigen::Vector3d>> replaced = change;
-              for (size_t k = 0; k < ring.size(); ++k) {
-                const int w = ring[k];
-                if (!std::any_of(original.begin(), original.end(),
-                                 [&](const auto &o) { return o.first == w; }))
-                  original.push_back({w, sphere[w]});
-                sphere[w] = from_chart(centre, ring_values[k]);
-                replaced.push_back({w, sphere[w]});
-              }
-              const Score doubled = score_region(v);
-              if (doubled < best) {
-                best = doubled;
-                best_change = replaced;
-              }
-              // And the rings beyond re-embedded between the new star and the rest, where the
-              // moved one-ring folds the faces next to it.
-              for (int rings = 2; rings <= 3 && std::get<0>(best) > 0; ++rings) {
-                const auto around = reembed_around_branch(mesh, in, sphere, v, rings);
-                if (!around) continue;
-                std::vector<std::pair<int, Eigen::Vector3d>> kept;
-                const Score wider = score_moved(*around, kept);
-                if (wider < best) {
-                  best = wider;
-                  best_change = replaced;
-                  best_change.insert(best_change.end(), around->begin(), around->end());
-                }
-                for (const auto &[w, point] : kept)
-                  sphere[w] = point;
-              }
-            }
-            for (const auto &[w, point] : original)
-              sphere[w] = point;
-          }
+          for (size_t i = first; i < std::min<size_t>(first + 6, by_distance.size()); ++i)
+            try_branch_vertex(spot, model, z, p, by_distance[i].second, shift_rings, best);
       }
     }
-    if (best_change.empty()) continue;
-    for (const auto &[w, point] : best_change) {
-      sphere[w] = point;
-      plane_values[w] = to_plane_value(point);
+    if (best.moves.empty()) continue;
+    for (const auto &[w, point] : best.moves) {
+      sphere[size_t(w)] = point;
+      plane_values[size_t(w)] = to_plane_value(point);
     }
     ++repaired;
   }
