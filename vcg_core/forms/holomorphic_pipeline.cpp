@@ -30,6 +30,114 @@ double closedness(const MeshEdges &edges, const Eigen::VectorXd &form) {
   return worst;
 }
 
+// The harmonic forms' face vectors, and how closed and co-closed they came out.
+std::vector<Eigen::MatrixX3d> face_vectors_and_residuals(int vertex_count, const Mesh &faces,
+                                                         const MeshEdges &edges,
+                                                         const std::vector<double> &weights,
+                                                         const FaceGeometry &geometry,
+                                                         HolomorphicForms &out) {
+  std::vector<Eigen::MatrixX3d> vectors;
+  for (const Eigen::VectorXd &h : out.harmonic) {
+    vectors.push_back(face_vectors(faces, edges, geometry, h));
+    out.closedness_residual = std::max(out.closedness_residual, closedness(edges, h));
+    const Eigen::VectorXd divergence = weighted_divergence(vertex_count, edges, weights, h);
+    double scale = 0;
+    for (int e = 0; e < edges.edge_count(); ++e)
+      scale = std::max(scale, std::abs(weights[e] * h[e]));
+    out.coclosedness_residual = std::max(
+        out.coclosedness_residual, divergence.tail(vertex_count - 1).cwiseAbs().maxCoeff() / scale);
+  }
+  return vectors;
+}
+
+// The periods of tau_j = h_j + i *h_j along the primal loops, the canonical basis from the
+// intersection numbers, the A- and B-periods of phi_k = sum_j P_jk tau_j, the Riemann matrix
+// (and genus 1's reduced modulus). Returns the basis P.
+Eigen::MatrixXd canonical_periods(const MeshEdges &edges, HolomorphicForms &out) {
+  const int n = 2 * out.genus;
+  // Periods of tau_j = h_j + i *h_j along the primal loops.
+  Eigen::MatrixXd real_periods(n, n);
+  for (int j = 0; j < n; ++j)
+    for (int k = 0; k < n; ++k)
+      real_periods(j, k) = integrate(out.harmonic[j], out.homology.primal_loops[k]);
+  out.loop_periods =
+      real_periods.cast<std::complex<double>>() +
+      std::complex<double>(0, 1) * (out.conjugate * real_periods).cast<std::complex<double>>();
+
+  // Coordinates in the omega basis: the loop integrals of omega are +-delta.
+  Eigen::VectorXd loop_sign(n);
+  for (int k = 0; k < n; ++k)
+    loop_sign[k] = integrate(out.homology.dual_forms[k], out.homology.primal_loops[k]);
+
+  out.wedge = wedge_matrix(out.harmonic, edges, &out.wedge_rounding);
+  out.symplectic = symplectic_basis(out.wedge);
+  const Eigen::MatrixXd basis = out.symplectic.cast<double>();
+  const Eigen::MatrixXd basis_inverse = basis.inverse();
+
+  // phi_k = holomorphic form of alpha_k = sum_j P_jk tau_j; its periods along the canonical cycles.
+  const int g = out.genus;
+  out.a_periods.resize(g, g);
+  out.b_periods.resize(g, g);
+  for (int k = 0; k < g; ++k) {
+    Eigen::VectorXcd coordinates = Eigen::VectorXcd::Zero(n);
+    for (int j = 0; j < n; ++j)
+      coordinates += basis(j, k) * out.loop_periods.row(j).transpose().cwiseQuotient(
+                                       loop_sign.cast<std::complex<double>>());
+    const Eigen::VectorXcd periods = basis_inverse.cast<std::complex<double>>() * coordinates;
+    out.a_periods.row(k) = periods.head(g).transpose();
+    out.b_periods.row(k) = periods.tail(g).transpose();
+  }
+  out.riemann_matrix = out.a_periods.inverse() * out.b_periods;
+  if (out.riemann_matrix.imag().trace() < 0) { // the opposite orientation convention: b -> -b
+    out.b_periods = -out.b_periods;
+    out.riemann_matrix = -out.riemann_matrix;
+  }
+  if (g == 1) out.modulus = reduce_modulus(out.riemann_matrix(0, 0));
+
+  return basis;
+}
+
+// Edge values of phi_k = sum_j P_jk tau_j, then of the normalized psi = A^-1 phi, on the mesh's
+// edges.
+void normalized_forms(const MeshEdges &edges, const Eigen::MatrixXd &basis, HolomorphicForms &out) {
+  const int n = 2 * out.genus, g = out.genus;
+  // Edge values of phi_k = sum_j P_jk tau_j, then of the normalized psi = A^-1 phi.
+  std::vector<Eigen::VectorXcd> tau;
+  for (int j = 0; j < n; ++j) {
+    Eigen::VectorXd conjugate = Eigen::VectorXd::Zero(edges.edge_count());
+    for (int l = 0; l < n; ++l)
+      conjugate += out.conjugate(j, l) * out.harmonic[l];
+    tau.push_back(out.harmonic[j].cast<std::complex<double>>() +
+                  std::complex<double>(0, 1) * conjugate.cast<std::complex<double>>());
+  }
+  const Eigen::MatrixXcd a_inverse = out.a_periods.inverse();
+  for (int m = 0; m < g; ++m) {
+    Eigen::VectorXcd psi = Eigen::VectorXcd::Zero(edges.edge_count());
+    for (int k = 0; k < g; ++k)
+      for (int j = 0; j < n; ++j)
+        psi += a_inverse(m, k) * basis(j, k) * tau[j];
+    out.normalized.push_back(out.intrinsic->integrate_along_mesh_edges(psi));
+  }
+}
+
+// The area-weighted mean and the largest |g| / |f| of phi_1 over the faces.
+void measure_non_holomorphicity(const Mesh &faces, const FaceGeometry &geometry,
+                                const std::vector<Eigen::MatrixX3d> &vectors,
+                                const Eigen::MatrixXd &basis, HolomorphicForms &out) {
+  Eigen::VectorXd first = basis.col(0);
+  const Eigen::MatrixX3d real_part = combine(vectors, first);
+  const Eigen::MatrixX3d imaginary_part = combine(vectors, out.conjugate.transpose() * first);
+  const LocalCoefficients local = local_coefficients(faces, geometry, real_part, imaginary_part);
+  double weighted = 0, total_area = 0;
+  for (size_t f = 0; f < local.f.size(); ++f) {
+    const double ratio = std::abs(local.g[f]) / std::abs(local.f[f]);
+    weighted += geometry.areas[f] * ratio;
+    total_area += geometry.areas[f];
+    out.non_holomorphicity_max = std::max(out.non_holomorphicity_max, ratio);
+  }
+  out.non_holomorphicity_mean = weighted / total_area;
+}
+
 } // namespace
 
 HolomorphicForms compute_holomorphic_forms(const Mesh &input, SolverKind solver,
@@ -88,92 +196,15 @@ HolomorphicForms compute_holomorphic_forms(const PreparedMesh &prepared, SolverK
 
   progress.report(0.8, "holomorphic forms and periods");
   const FaceGeometry geometry = face_geometry(faces);
-  std::vector<Eigen::MatrixX3d> vectors;
-  for (const Eigen::VectorXd &h : out.harmonic) {
-    vectors.push_back(face_vectors(faces, edges, geometry, h));
-    out.closedness_residual = std::max(out.closedness_residual, closedness(edges, h));
-    const Eigen::VectorXd divergence = weighted_divergence(vertex_count, edges, weights, h);
-    double scale = 0;
-    for (int e = 0; e < edges.edge_count(); ++e)
-      scale = std::max(scale, std::abs(weights[e] * h[e]));
-    out.coclosedness_residual = std::max(
-        out.coclosedness_residual, divergence.tail(vertex_count - 1).cwiseAbs().maxCoeff() / scale);
-  }
+  const std::vector<Eigen::MatrixX3d> vectors =
+      face_vectors_and_residuals(vertex_count, faces, edges, weights, geometry, out);
   const ConjugateFit fit = conjugate_coefficients(vectors, geometry);
   out.conjugate = fit.coefficients;
   out.conjugate_residual = fit.relative_residual;
 
-  const int n = 2 * out.genus;
-  // Periods of tau_j = h_j + i *h_j along the primal loops.
-  Eigen::MatrixXd real_periods(n, n);
-  for (int j = 0; j < n; ++j)
-    for (int k = 0; k < n; ++k)
-      real_periods(j, k) = integrate(out.harmonic[j], out.homology.primal_loops[k]);
-  out.loop_periods =
-      real_periods.cast<std::complex<double>>() +
-      std::complex<double>(0, 1) * (out.conjugate * real_periods).cast<std::complex<double>>();
-
-  // Coordinates in the omega basis: the loop integrals of omega are +-delta.
-  Eigen::VectorXd loop_sign(n);
-  for (int k = 0; k < n; ++k)
-    loop_sign[k] = integrate(out.homology.dual_forms[k], out.homology.primal_loops[k]);
-
-  out.wedge = wedge_matrix(out.harmonic, edges, &out.wedge_rounding);
-  out.symplectic = symplectic_basis(out.wedge);
-  const Eigen::MatrixXd basis = out.symplectic.cast<double>();
-  const Eigen::MatrixXd basis_inverse = basis.inverse();
-
-  // phi_k = holomorphic form of alpha_k = sum_j P_jk tau_j; its periods along the canonical cycles.
-  const int g = out.genus;
-  out.a_periods.resize(g, g);
-  out.b_periods.resize(g, g);
-  for (int k = 0; k < g; ++k) {
-    Eigen::VectorXcd coordinates = Eigen::VectorXcd::Zero(n);
-    for (int j = 0; j < n; ++j)
-      coordinates += basis(j, k) * out.loop_periods.row(j).transpose().cwiseQuotient(
-                                       loop_sign.cast<std::complex<double>>());
-    const Eigen::VectorXcd periods = basis_inverse.cast<std::complex<double>>() * coordinates;
-    out.a_periods.row(k) = periods.head(g).transpose();
-    out.b_periods.row(k) = periods.tail(g).transpose();
-  }
-  out.riemann_matrix = out.a_periods.inverse() * out.b_periods;
-  if (out.riemann_matrix.imag().trace() < 0) { // the opposite orientation convention: b -> -b
-    out.b_periods = -out.b_periods;
-    out.riemann_matrix = -out.riemann_matrix;
-  }
-  if (g == 1) out.modulus = reduce_modulus(out.riemann_matrix(0, 0));
-
-  // Edge values of phi_k = sum_j P_jk tau_j, then of the normalized psi = A^-1 phi.
-  std::vector<Eigen::VectorXcd> tau;
-  for (int j = 0; j < n; ++j) {
-    Eigen::VectorXd conjugate = Eigen::VectorXd::Zero(edges.edge_count());
-    for (int l = 0; l < n; ++l)
-      conjugate += out.conjugate(j, l) * out.harmonic[l];
-    tau.push_back(out.harmonic[j].cast<std::complex<double>>() +
-                  std::complex<double>(0, 1) * conjugate.cast<std::complex<double>>());
-  }
-  const Eigen::MatrixXcd a_inverse = out.a_periods.inverse();
-  for (int m = 0; m < g; ++m) {
-    Eigen::VectorXcd psi = Eigen::VectorXcd::Zero(edges.edge_count());
-    for (int k = 0; k < g; ++k)
-      for (int j = 0; j < n; ++j)
-        psi += a_inverse(m, k) * basis(j, k) * tau[j];
-    out.normalized.push_back(out.intrinsic->integrate_along_mesh_edges(psi));
-  }
-
-  // Non-holomorphicity of phi_1.
-  Eigen::VectorXd first = basis.col(0);
-  const Eigen::MatrixX3d real_part = combine(vectors, first);
-  const Eigen::MatrixX3d imaginary_part = combine(vectors, out.conjugate.transpose() * first);
-  const LocalCoefficients local = local_coefficients(faces, geometry, real_part, imaginary_part);
-  double weighted = 0, total_area = 0;
-  for (size_t f = 0; f < local.f.size(); ++f) {
-    const double ratio = std::abs(local.g[f]) / std::abs(local.f[f]);
-    weighted += geometry.areas[f] * ratio;
-    total_area += geometry.areas[f];
-    out.non_holomorphicity_max = std::max(out.non_holomorphicity_max, ratio);
-  }
-  out.non_holomorphicity_mean = weighted / total_area;
+  const Eigen::MatrixXd basis = canonical_periods(edges, out);
+  normalized_forms(edges, basis, out);
+  measure_non_holomorphicity(faces, geometry, vectors, basis, out);
   clock.done("holomorphic");
   progress.report(1.0, "done");
   return out;
