@@ -276,13 +276,8 @@ std::array<int, 2> edge_key(const Mesh &mesh, const MeshFace &face, int e) {
   return {std::min(a, b), std::max(a, b)};
 }
 
-// Topology on a copy without the faces that repeat a vertex (they have no proper edges).
-void check_topology(const Mesh &mesh, Validation &out) {
-  Mesh work;
-  copy_with_face_adjacency(mesh, work);
-  if (work.fn == 0) return;
-
-  // Non-manifold edges: more than two faces on one edge.
+// Non-manifold edges: more than two faces on one edge. Returns whether there is one.
+bool check_manifold_edges(Mesh &work, Validation &out) {
   Finding non_manifold(FindingKind::non_manifold_edges);
   std::set<std::array<int, 2>> seen;
   for (MeshFace &face : work.face) {
@@ -310,8 +305,11 @@ void check_topology(const Mesh &mesh, Validation &out) {
                            where;
     out.findings.push_back(non_manifold);
   }
+  return !non_manifold.edges.empty();
+}
 
-  // Non-manifold vertices: pieces of surface that meet only at a vertex.
+// Non-manifold vertices: pieces of surface that meet only at a vertex.
+void check_manifold_vertices(Mesh &work, Validation &out) {
   vcg::tri::Clean<Mesh>::CountNonManifoldVertexFF(work, true, true);
   Finding pinched(FindingKind::non_manifold_vertices);
   for (size_t v = 0; v < work.vert.size(); ++v)
@@ -323,27 +321,29 @@ void check_topology(const Mesh &mesh, Validation &out) {
                       list_indices(pinched.vertices);
     out.findings.push_back(pinched);
   }
+}
 
-  // Boundary loops (only well defined where every edge is manifold).
-  if (non_manifold.edges.empty()) {
-    Finding open(FindingKind::boundary_loops);
-    for (const BoundaryLoop &loop : find_boundary_loops(work)) {
-      open.vertices.push_back(loop.first_vertex);
-      open.sizes.push_back(loop.length);
-    }
-    if (!open.sizes.empty()) {
-      open.message = "the surface is open: it has " +
-                     plural(open.sizes.size(), "boundary loop (hole)", "boundary loops (holes)") +
-                     " of " + list_sizes(open.sizes) + " edges, through vertices " +
-                     list_indices(open.vertices) +
-                     "; close them first (MeshLab: Filters > Remeshing, Simplification and "
-                     "Reconstruction > Close Holes; Blender: Edit Mode > Select > All by Trait > "
-                     "Non Manifold, then Face > Fill)";
-      out.findings.push_back(open);
-    }
+// Boundary loops (only well defined where every edge is manifold).
+void check_boundary_loops(Mesh &work, Validation &out) {
+  Finding open(FindingKind::boundary_loops);
+  for (const BoundaryLoop &loop : find_boundary_loops(work)) {
+    open.vertices.push_back(loop.first_vertex);
+    open.sizes.push_back(loop.length);
   }
+  if (!open.sizes.empty()) {
+    open.message = "the surface is open: it has " +
+                   plural(open.sizes.size(), "boundary loop (hole)", "boundary loops (holes)") +
+                   " of " + list_sizes(open.sizes) + " edges, through vertices " +
+                   list_indices(open.vertices) +
+                   "; close them first (MeshLab: Filters > Remeshing, Simplification and "
+                   "Reconstruction > Close Holes; Blender: Edit Mode > Select > All by Trait > "
+                   "Non Manifold, then Face > Fill)";
+    out.findings.push_back(open);
+  }
+}
 
-  // Connected components (through shared edges).
+// Connected components (through shared edges).
+void check_components(Mesh &work, Validation &out) {
   std::vector<std::pair<int, MeshFace *>> components;
   vcg::tri::Clean<Mesh>::ConnectedComponents(work, components);
   if (components.size() > 1) {
@@ -359,8 +359,11 @@ void check_topology(const Mesh &mesh, Validation &out) {
                       "By Loose Parts)";
     out.findings.push_back(several);
   }
+}
 
-  // Orientation: across each manifold edge the two faces must traverse it in opposite directions.
+// Orientation: across each manifold edge the two faces must traverse it in opposite directions;
+// where no choice of orientations agrees, the surface is not orientable.
+void check_orientation(Mesh &work, Validation &out) {
   Finding flipped(FindingKind::inconsistent_orientation, true);
   std::set<std::array<int, 2>> flipped_seen;
   for (MeshFace &face : work.face) {
@@ -389,6 +392,18 @@ void check_topology(const Mesh &mesh, Validation &out) {
       out.findings.push_back(klein);
     }
   }
+}
+
+// Topology on a copy without the faces that repeat a vertex (they have no proper edges).
+void check_topology(const Mesh &mesh, Validation &out) {
+  Mesh work;
+  copy_with_face_adjacency(mesh, work);
+  if (work.fn == 0) return;
+  const bool non_manifold_edges = check_manifold_edges(work, out);
+  check_manifold_vertices(work, out);
+  if (!non_manifold_edges) check_boundary_loops(work, out);
+  check_components(work, out);
+  check_orientation(work, out);
 }
 
 } // namespace
