@@ -101,19 +101,20 @@ CutTree star_tree(const std::vector<Vector> &values, const Vector &star) {
   return tree;
 }
 
-// Layers of a degree-d map (d >= 2) cut along `tree`.
-Sheets label_with_cuts(const Mesh &mesh, const MeshEdges &edges, const std::vector<Vector> &sphere,
-                       const std::vector<int> &branch_vertices, int degree,
-                       const std::vector<double> &areas, const CutTree &tree) {
-  Sheets out;
+// Which edges the sheets are cut along.
+struct CutEdges {
+  std::vector<char> crossing; // the edge's image crosses a cut, or may (it starts on one)
+  std::vector<char> cut;      // those, and the edges of the faces set apart
+};
+
+CutEdges cut_edges(const Mesh &mesh, const MeshEdges &edges, const std::vector<Vector> &sphere,
+                   const std::vector<int> &branch_vertices, const CutTree &tree) {
   const int face_count = int(mesh.face.size());
-  out.vertex_layer.assign(mesh.vert.size(), 0);
   auto corner = [&](int f, int k) -> const Vector & {
     return sphere[index_of(mesh, mesh.face[f].cV(k))];
   };
   const std::vector<Vector> &nodes = tree.nodes;
   const std::vector<std::array<int, 2>> &arcs = tree.arcs;
-
   // Two faces lie on the same sheet where the image of their shared edge crosses no cut. Faces at
   // a branch vertex are set apart (cuts start at their corner, and a branch point doubles their
   // angles there: the image of the opposite side can span half a turn, too much for a minor arc),
@@ -136,7 +137,9 @@ Sheets label_with_cuts(const Mesh &mesh, const MeshEdges &edges, const std::vect
     }
   // `crossing`: the edge's image crosses a cut, or may (it starts on one); `edge_cut` adds the
   // edges of the faces set apart.
-  std::vector<char> crossing(edges.vertices.size(), 0);
+  CutEdges out;
+  std::vector<char> &crossing = out.crossing;
+  crossing.assign(edges.vertices.size(), 0);
   for (size_t e = 0; e < edges.vertices.size(); ++e) {
     const int i = edges.vertices[e][0], j = edges.vertices[e][1];
     crossing[e] = at_branch_vertex[i] || at_branch_vertex[j] || on_cut[i] || on_cut[j];
@@ -147,7 +150,8 @@ Sheets label_with_cuts(const Mesh &mesh, const MeshEdges &edges, const std::vect
   // Edges whose image is too short for the crossing test to be sure of its side (where long thin
   // parts crowd, cross products of such nearby points are mostly rounding) are cut too, so that a
   // sheet cannot leak into another through them.
-  std::vector<char> edge_cut = crossing;
+  out.cut = crossing;
+  std::vector<char> &edge_cut = out.cut;
   for (size_t e = 0; e < edges.vertices.size(); ++e)
     if ((sphere[size_t(edges.vertices[e][0])] - sphere[size_t(edges.vertices[e][1])]).norm() <
         unsure_edge_length)
@@ -164,14 +168,15 @@ Sheets label_with_cuts(const Mesh &mesh, const MeshEdges &edges, const std::vect
       for (int e : edges.face_edges[f])
         edge_cut[e] = 1;
   }
-  for (int f = 0; f < face_count; ++f) {
-    const auto &sides = edges.face_edges[f];
-    out.cut_faces += edge_cut[sides[0]] || edge_cut[sides[1]] || edge_cut[sides[2]];
-  }
+  return out;
+}
 
-  // Components of faces joined across uncut edges.
+// Components of faces joined across uncut edges, and each component's image area.
+std::vector<int> face_components(const MeshEdges &edges, const std::vector<char> &edge_cut,
+                                 const std::vector<double> &areas,
+                                 std::vector<double> &component_area) {
+  const int face_count = int(areas.size());
   std::vector<int> component(face_count, -1);
-  std::vector<double> component_area;
   for (int seed = 0; seed < face_count; ++seed) {
     if (component[seed] >= 0) continue;
     const int id = int(component_area.size());
@@ -192,14 +197,22 @@ Sheets label_with_cuts(const Mesh &mesh, const MeshEdges &edges, const std::vect
       }
     }
   }
-  // The largest components are the sheets; the rest (and the cut faces) join a neighbour.
+  return component;
+}
+
+// The largest components are the sheets (at most `degree`); the rest (and the cut faces) join
+// a neighbour. Returns the layer per face; `count` gets the number of sheets.
+std::vector<int> face_layers(const MeshEdges &edges, const std::vector<int> &component,
+                             const std::vector<double> &component_area,
+                             const std::vector<char> &crossing, int degree, int &count) {
+  const int face_count = int(component.size());
   std::vector<int> order(component_area.size());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(),
             [&](int a, int b) { return component_area[a] > component_area[b]; });
-  out.count = std::min<int>(degree, int(order.size()));
+  count = std::min<int>(degree, int(order.size()));
   std::vector<int> layer_of(component_area.size(), -1);
-  for (int i = 0; i < out.count; ++i)
+  for (int i = 0; i < count; ++i)
     layer_of[order[i]] = i;
   std::queue<int> frontier;
   std::vector<int> face_layer(face_count, -1);
@@ -222,6 +235,25 @@ Sheets label_with_cuts(const Mesh &mesh, const MeshEdges &edges, const std::vect
       }
     }
   }
+  return face_layer;
+}
+
+// Layers of a degree-d map (d >= 2) cut along `tree`.
+Sheets label_with_cuts(const Mesh &mesh, const MeshEdges &edges, const std::vector<Vector> &sphere,
+                       const std::vector<int> &branch_vertices, int degree,
+                       const std::vector<double> &areas, const CutTree &tree) {
+  Sheets out;
+  const int face_count = int(mesh.face.size());
+  out.vertex_layer.assign(mesh.vert.size(), 0);
+  const CutEdges cuts = cut_edges(mesh, edges, sphere, branch_vertices, tree);
+  for (int f = 0; f < face_count; ++f) {
+    const auto &sides = edges.face_edges[f];
+    out.cut_faces += cuts.cut[sides[0]] || cuts.cut[sides[1]] || cuts.cut[sides[2]];
+  }
+  std::vector<double> component_area;
+  const std::vector<int> component = face_components(edges, cuts.cut, areas, component_area);
+  const std::vector<int> face_layer =
+      face_layers(edges, component, component_area, cuts.crossing, degree, out.count);
   out.face_layer = face_layer;
   out.coverage.assign(out.count, 0.0);
   for (int f = 0; f < face_count; ++f)
