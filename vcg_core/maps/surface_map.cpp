@@ -36,6 +36,52 @@ const Finding *finding_left(const Validation &validation, bool close_holes) {
   return left;
 }
 
+// What param cannot take, as the refusal says it: the finding with the option that would take it,
+// and which of the vertices named are copies the split made (it numbers them after the input's).
+[[noreturn]] void refuse(const Finding &left, bool nonmanifold, bool split, const Mesh &input,
+                         const NonmanifoldSplit &split_spots) {
+  std::string message = left.message;
+  if (left.kind == FindingKind::boundary_loops)
+    message += std::string(nonmanifold ? " (some where non-manifold edges were taken apart)" : "") +
+               "; or let meromorph close them for the computation only (--close-holes; MeshLab "
+               "and Blender: Close Holes)";
+  if (left.kind == FindingKind::non_manifold_edges ||
+      left.kind == FindingKind::non_manifold_vertices)
+    message += "; or let meromorph take them apart for the computation (--split-nonmanifold; "
+               "MeshLab and Blender: Split Non-Manifold Spots)";
+  std::string copies;
+  for (int v : left.vertices)
+    if (split && size_t(v) >= input.vert.size())
+      copies += (copies.empty() ? "" : ", ") + std::to_string(v) + " is a copy of " +
+                std::to_string(split_spots.source_vertex[size_t(v)]);
+  if (!copies.empty())
+    message += " (vertices from " + std::to_string(input.vert.size()) +
+               " on are copies made where non-manifold spots were split: " + copies + ")";
+  throw InputError(message);
+}
+
+// The map of the split mesh said in the input's terms: what was split, the sphere's faces and
+// each sphere vertex's source, branch points and holes at input vertices.
+void report_split(const Mesh &whole, const NonmanifoldSplit &split_spots, Parameterization &out) {
+  out.nonmanifold_split = {split_spots.split_vertices, split_spots.split_edges,
+                           split_spots.added_vertices};
+  out.sphere_source_vertex = split_spots.source_vertex;
+  out.sphere_faces = arrays_from_mesh(whole).triangles; // the per-vertex arrays are whole's
+  out.notes.push_back(
+      "non-manifold spots taken apart for the computation: " +
+      std::to_string(split_spots.split_vertices.size()) + " vertices split into " +
+      std::to_string(split_spots.split_vertices.size() + size_t(split_spots.added_vertices)) +
+      ", " + plural(split_spots.split_edges.size(), "edge", "edges") +
+      " with more than two faces taken apart; the layered sphere has the split vertices, "
+      "the surface keeps its own (each face corner has its texture coordinates)");
+  for (BranchPoint &b : out.branch_points) {
+    b.sphere_vertex = b.vertex;
+    b.vertex = split_spots.source_vertex[size_t(b.vertex)];
+  }
+  for (ClosedHoleReport &hole : out.holes_closed)
+    hole.vertex = split_spots.source_vertex[size_t(hole.vertex)];
+}
+
 } // namespace
 
 FindingHandling finding_handling(const Finding &finding) {
@@ -71,28 +117,8 @@ Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptio
     validation = validate_mesh(split_mesh);
   }
   const Mesh &whole = split ? split_mesh : input;
-  if (const Finding *left = finding_left(validation, options.close_holes)) {
-    std::string message = left->message;
-    if (left->kind == FindingKind::boundary_loops)
-      message +=
-          std::string(nonmanifold ? " (some where non-manifold edges were taken apart)" : "") +
-          "; or let meromorph close them for the computation only (--close-holes; MeshLab "
-          "and Blender: Close Holes)";
-    if (left->kind == FindingKind::non_manifold_edges ||
-        left->kind == FindingKind::non_manifold_vertices)
-      message += "; or let meromorph take them apart for the computation (--split-nonmanifold; "
-                 "MeshLab and Blender: Split Non-Manifold Spots)";
-    // The split mesh numbers its copies after the input's vertices: say whose they are.
-    std::string copies;
-    for (int v : left->vertices)
-      if (split && size_t(v) >= input.vert.size())
-        copies += (copies.empty() ? "" : ", ") + std::to_string(v) + " is a copy of " +
-                  std::to_string(split_spots.source_vertex[size_t(v)]);
-    if (!copies.empty())
-      message += " (vertices from " + std::to_string(input.vert.size()) +
-                 " on are copies made where non-manifold spots were split: " + copies + ")";
-    throw InputError(message);
-  }
+  if (const Finding *left = finding_left(validation, options.close_holes))
+    refuse(*left, nonmanifold, split, input, split_spots);
   // Zero-area faces taken out of the computation (they are kept in the outputs).
   Mesh flat_free;
   ZeroAreaFix flat_fix;
@@ -125,25 +151,7 @@ Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptio
         plural(size_t(flat_fix.flipped_edges), "edge", "edges") +
         " flipped) and kept in the outputs, with their corners' texture coordinates");
   }
-  if (split) {
-    out.nonmanifold_split = {split_spots.split_vertices, split_spots.split_edges,
-                             split_spots.added_vertices};
-    out.sphere_source_vertex = split_spots.source_vertex;
-    out.sphere_faces = arrays_from_mesh(whole).triangles; // the per-vertex arrays are whole's
-    out.notes.push_back(
-        "non-manifold spots taken apart for the computation: " +
-        std::to_string(split_spots.split_vertices.size()) + " vertices split into " +
-        std::to_string(split_spots.split_vertices.size() + size_t(split_spots.added_vertices)) +
-        ", " + plural(split_spots.split_edges.size(), "edge", "edges") +
-        " with more than two faces taken apart; the layered sphere has the split vertices, "
-        "the surface keeps its own (each face corner has its texture coordinates)");
-    for (BranchPoint &b : out.branch_points) {
-      b.sphere_vertex = b.vertex;
-      b.vertex = split_spots.source_vertex[size_t(b.vertex)];
-    }
-    for (ClosedHoleReport &hole : out.holes_closed)
-      hole.vertex = split_spots.source_vertex[size_t(hole.vertex)];
-  }
+  if (split) report_split(whole, split_spots, out);
   return out;
 }
 
