@@ -35,17 +35,8 @@ struct ParamOptions {
   int puncture_face = -1;
 };
 
-int run_param(const ParamOptions &options) {
-  // Every output is checked before any work and written only when the whole job succeeded.
-  StagedOutputs outputs({options.input});
-  const MeshFormat output_format = format_from_extension(options.output);
-  const std::string output_file = outputs.add(options.output);
-  const std::string sphere_file = options.sphere.empty() ? "" : outputs.add(options.sphere);
-  const std::string report_file = options.report.empty() ? "" : outputs.add(options.report);
-  if (!options.sphere.empty() && format_from_extension(options.sphere) != MeshFormat::ply)
-    throw ArgumentError(options.sphere + ": the layered sphere is written as PLY (.ply)");
-  if (options.forms.size() != 2) throw ArgumentError("--forms takes two indices, like --forms 0,1");
-
+// The core's options from the command line's.
+ParameterizeOptions settings_from(const ParamOptions &options) {
   ParameterizeOptions settings;
   settings.uv = options.uv == "stereographic" ? UvKind::stereographic : UvKind::spherical;
   settings.mobius = !options.no_mobius;
@@ -58,6 +49,76 @@ int run_param(const ParamOptions &options) {
   settings.pack_uv = options.pack_uv;
   settings.split_nonmanifold = options.split_nonmanifold;
 
+  return settings;
+}
+
+// OUT: the surface with per-vertex and per-wedge texture coordinates, and the layer as MeshLab's
+// per-vertex quality.
+void write_surface(Mesh &mesh, const Parameterization &map, MeshFormat format,
+                   const std::string &file) {
+  for (size_t v = 0; v < mesh.vert.size(); ++v) {
+    mesh.vert[v].T().U() = map.uv.vertex[v][0];
+    mesh.vert[v].T().V() = map.uv.vertex[v][1];
+    mesh.vert[v].Q() = map.sheets.vertex_layer[v]; // the layer, as MeshLab's quality
+  }
+  for (size_t f = 0; f < mesh.face.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      mesh.face[f].WT(k).U() = map.uv.wedge[f][k][0];
+      mesh.face[f].WT(k).V() = map.uv.wedge[f][k][1];
+      mesh.face[f].WT(k).N() = 0;
+    }
+  WriteOptions surface;
+  surface.vertex_texcoords = surface.wedge_texcoords = surface.vertex_quality = true;
+  save_mesh(mesh, format, file, surface);
+}
+
+// The layered sphere (PLY) with per-vertex layer, branch, source_vertex and component.
+void write_layered_sphere(const Mesh &mesh, const Parameterization &map, const std::string &file) {
+  Mesh layered;
+  layered_sphere_mesh(mesh, map, layered);
+  WriteOptions sphere;
+  std::vector<int> component = map.vertex_component;
+  component.resize(layered.vert.size(), 0);
+  std::vector<int> source_vertex = map.sphere_source_vertex;
+  if (source_vertex.empty()) {
+    source_vertex.resize(layered.vert.size());
+    std::iota(source_vertex.begin(), source_vertex.end(), 0);
+  }
+  sphere.vertex_properties = {{"layer", map.sheets.vertex_layer, false},
+                              {"branch", map.branch_flag, true},
+                              {"source_vertex", source_vertex, false},
+                              {"component", component, false}};
+  save_mesh(layered, MeshFormat::ply, file, sphere);
+}
+
+// The one-line summary.
+std::string summary_line(const std::string &input, const Parameterization &map, double total_ms) {
+  std::ostringstream line;
+  line << std::fixed << std::setprecision(2);
+  line << input << ": genus " << map.genus << ", degree " << map.degree << ", "
+       << map.branch_points.size() << " branch points (ramification " << map.ramification
+       << "), Riemann-Hurwitz " << (map.riemann_hurwitz_ok ? "holds" : "FAILS") << ", "
+       << map.sheets.count << (map.sheets.count == 1 ? " layer" : " layers") << "; angle error "
+       << map.quality.overall.angle_error_mean_degrees << " deg, quasi-conformal mean "
+       << map.quality.overall.quasi_conformal_mean << ", folded faces "
+       << map.quality.away_from_branch_points.folded_faces << " away from branch points ("
+       << map.quality.overall.folded_faces << " in all); " << std::setprecision(0) << total_ms
+       << " ms";
+  return line.str();
+}
+
+int run_param(const ParamOptions &options) {
+  // Every output is checked before any work and written only when the whole job succeeded.
+  StagedOutputs outputs({options.input});
+  const MeshFormat output_format = format_from_extension(options.output);
+  const std::string output_file = outputs.add(options.output);
+  const std::string sphere_file = options.sphere.empty() ? "" : outputs.add(options.sphere);
+  const std::string report_file = options.report.empty() ? "" : outputs.add(options.report);
+  if (!options.sphere.empty() && format_from_extension(options.sphere) != MeshFormat::ply)
+    throw ArgumentError(options.sphere + ": the layered sphere is written as PLY (.ply)");
+  if (options.forms.size() != 2) throw ArgumentError("--forms takes two indices, like --forms 0,1");
+
+  const ParameterizeOptions settings = settings_from(options);
   const auto start = std::chrono::steady_clock::now();
   Mesh mesh;
   const JobInput input = read_job_input(options.input, options.repair, mesh);
@@ -81,39 +142,8 @@ int run_param(const ParamOptions &options) {
     }
   }
 
-  // OUT.ply: the surface with per-vertex and per-wedge texture coordinates.
-  for (size_t v = 0; v < mesh.vert.size(); ++v) {
-    mesh.vert[v].T().U() = map.uv.vertex[v][0];
-    mesh.vert[v].T().V() = map.uv.vertex[v][1];
-    mesh.vert[v].Q() = map.sheets.vertex_layer[v]; // the layer, as MeshLab's quality
-  }
-  for (size_t f = 0; f < mesh.face.size(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      mesh.face[f].WT(k).U() = map.uv.wedge[f][k][0];
-      mesh.face[f].WT(k).V() = map.uv.wedge[f][k][1];
-      mesh.face[f].WT(k).N() = 0;
-    }
-  WriteOptions surface;
-  surface.vertex_texcoords = surface.wedge_texcoords = surface.vertex_quality = true;
-  save_mesh(mesh, output_format, output_file, surface);
-
-  if (!options.sphere.empty()) {
-    Mesh layered;
-    layered_sphere_mesh(mesh, map, layered);
-    WriteOptions sphere;
-    std::vector<int> component = map.vertex_component;
-    component.resize(layered.vert.size(), 0);
-    std::vector<int> source_vertex = map.sphere_source_vertex;
-    if (source_vertex.empty()) {
-      source_vertex.resize(layered.vert.size());
-      std::iota(source_vertex.begin(), source_vertex.end(), 0);
-    }
-    sphere.vertex_properties = {{"layer", map.sheets.vertex_layer, false},
-                                {"branch", map.branch_flag, true},
-                                {"source_vertex", source_vertex, false},
-                                {"component", component, false}};
-    save_mesh(layered, MeshFormat::ply, sphere_file, sphere);
-  }
+  write_surface(mesh, map, output_format, output_file);
+  if (!options.sphere.empty()) write_layered_sphere(mesh, map, sphere_file);
 
   nlohmann::json report = parameterization_json(map);
   report["input"] = source_json(input.source);
@@ -125,20 +155,7 @@ int run_param(const ParamOptions &options) {
 
   const double total_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  if (!options.quiet) {
-    std::ostringstream line;
-    line << std::fixed << std::setprecision(2);
-    line << options.input << ": genus " << map.genus << ", degree " << map.degree << ", "
-         << map.branch_points.size() << " branch points (ramification " << map.ramification
-         << "), Riemann-Hurwitz " << (map.riemann_hurwitz_ok ? "holds" : "FAILS") << ", "
-         << map.sheets.count << (map.sheets.count == 1 ? " layer" : " layers") << "; angle error "
-         << map.quality.overall.angle_error_mean_degrees << " deg, quasi-conformal mean "
-         << map.quality.overall.quasi_conformal_mean << ", folded faces "
-         << map.quality.away_from_branch_points.folded_faces << " away from branch points ("
-         << map.quality.overall.folded_faces << " in all); " << std::setprecision(0) << total_ms
-         << " ms";
-    std::cout << line.str() << "\n";
-  }
+  if (!options.quiet) std::cout << summary_line(options.input, map, total_ms) << "\n";
   return int(map.valid ? ExitCode::done : ExitCode::cannot_parameterize);
 }
 
