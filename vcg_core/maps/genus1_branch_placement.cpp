@@ -172,6 +172,81 @@ std::vector<double> flat_area_ratios(const PreparedMesh &prepared, const Eigen::
   return flat;
 }
 
+namespace {
+
+// The double pole doubles the origin's corners too (in the chart 1 / w): where one is 90 degrees
+// or more, the origin's one-ring is re-placed, if that folds fewer faces there.
+void reshape_origin_ring(const FaceIncidence &in, const Genus1Map &map, const Mobius &centring,
+                         std::vector<Eigen::Vector3d> &sphere, std::vector<PlaneValue> &values) {
+
+  Shifted pole;
+  pole.vertices.push_back(map.origin_vertex);
+  pole.new_values.push_back(PlaneValue{Complex(), true});
+  for (int w : ordered_ring(in, map.origin_vertex)) {
+    pole.vertices.push_back(w);
+    pole.new_values.push_back(PlaneValue{map.p_function.value(map.flat[size_t(w)]), false});
+  }
+  reshape_ring(in, map, map.origin_vertex, pole);
+  std::vector<int> faces;
+  for (int v : pole.vertices)
+    faces.insert(faces.end(), in.faces_of_vertex[size_t(v)].begin(),
+                 in.faces_of_vertex[size_t(v)].end());
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  auto folds = [&] {
+    int count = 0;
+    for (int f : faces)
+      count += folded_or_flat(in, sphere, f);
+    return count;
+  };
+  const int before = folds();
+  std::vector<Eigen::Vector3d> saved;
+  for (size_t j = 0; j < pole.vertices.size(); ++j) {
+    saved.push_back(sphere[size_t(pole.vertices[j])]);
+    sphere[size_t(pole.vertices[j])] = to_sphere(centring.apply(pole.new_values[j]));
+  }
+  if (folds() < before && vertex_winding(in, sphere, map.origin_vertex) == 2) {
+    for (size_t j = 0; j < pole.vertices.size(); ++j)
+      values[size_t(pole.vertices[j])] = centring.apply(pole.new_values[j]);
+  } else {
+    for (size_t j = 0; j < pole.vertices.size(); ++j)
+      sphere[size_t(pole.vertices[j])] = saved[j];
+  }
+}
+
+// A trial's score with its moves applied (the spot is left as it was): folded or flat faces,
+// whether c winds other than twice, other vertices that start or stop branching (the pole next
+// to a coarse torus's half period included).
+std::tuple<int, int, int> score_trial(const FaceIncidence &in, const Shifted &trial, int c,
+                                      std::vector<Eigen::Vector3d> &sphere) {
+  int folded = 0, stray = 0;
+  for (int f : trial.fading_faces)
+    folded -= folded_or_flat(in, sphere, f);
+  std::vector<int> winding_before;
+  for (int v : trial.vertices)
+    winding_before.push_back(vertex_winding(in, sphere, v));
+  std::vector<Eigen::Vector3d> saved;
+  for (size_t j = 0; j < trial.vertices.size(); ++j) {
+    saved.push_back(sphere[size_t(trial.vertices[j])]);
+    sphere[size_t(trial.vertices[j])] = to_sphere(trial.new_values[j]);
+  }
+  for (int f : trial.faces)
+    folded += folded_or_flat(in, sphere, f);
+  for (int f : trial.fading_faces)
+    folded += folded_or_flat(in, sphere, f);
+  // No other vertex may start or stop branching (the pole next to a coarse torus's half
+  // period included).
+  for (size_t j = 0; j < trial.vertices.size(); ++j)
+    stray += trial.vertices[j] != c &&
+             vertex_winding(in, sphere, trial.vertices[j]) != winding_before[j];
+  const std::tuple<int, int, int> score{folded, vertex_winding(in, sphere, c) != 2, stray};
+  for (size_t j = 0; j < trial.vertices.size(); ++j)
+    sphere[size_t(trial.vertices[j])] = saved[j];
+  return score;
+}
+
+} // namespace
+
 Genus1Placement place_half_period_branch_points(const PreparedMesh &prepared, const Genus1Map &map,
                                                 const Mobius &centring,
                                                 std::vector<PlaneValue> &values) {
@@ -180,43 +255,7 @@ Genus1Placement place_half_period_branch_points(const PreparedMesh &prepared, co
   std::vector<Eigen::Vector3d> sphere(values.size());
   for (size_t v = 0; v < values.size(); ++v)
     sphere[v] = to_sphere(values[v]);
-  // The double pole doubles the origin's corners too (in the chart 1 / w): where one is 90
-  // degrees or more, re-place the origin's one-ring, if that folds fewer faces there.
-  {
-    Shifted pole;
-    pole.vertices.push_back(map.origin_vertex);
-    pole.new_values.push_back(PlaneValue{Complex(), true});
-    for (int w : ordered_ring(in, map.origin_vertex)) {
-      pole.vertices.push_back(w);
-      pole.new_values.push_back(PlaneValue{map.p_function.value(map.flat[size_t(w)]), false});
-    }
-    reshape_ring(in, map, map.origin_vertex, pole);
-    std::vector<int> faces;
-    for (int v : pole.vertices)
-      faces.insert(faces.end(), in.faces_of_vertex[size_t(v)].begin(),
-                   in.faces_of_vertex[size_t(v)].end());
-    std::sort(faces.begin(), faces.end());
-    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-    auto folds = [&] {
-      int count = 0;
-      for (int f : faces)
-        count += folded_or_flat(in, sphere, f);
-      return count;
-    };
-    const int before = folds();
-    std::vector<Eigen::Vector3d> saved;
-    for (size_t j = 0; j < pole.vertices.size(); ++j) {
-      saved.push_back(sphere[size_t(pole.vertices[j])]);
-      sphere[size_t(pole.vertices[j])] = to_sphere(centring.apply(pole.new_values[j]));
-    }
-    if (folds() < before && vertex_winding(in, sphere, map.origin_vertex) == 2) {
-      for (size_t j = 0; j < pole.vertices.size(); ++j)
-        values[size_t(pole.vertices[j])] = centring.apply(pole.new_values[j]);
-    } else {
-      for (size_t j = 0; j < pole.vertices.size(); ++j)
-        sphere[size_t(pole.vertices[j])] = saved[j];
-    }
-  }
+  reshape_origin_ring(in, map, centring, sphere, values);
   const auto half_periods = map.p_function.half_periods();
   for (int k = 0; k < 3; ++k) {
     std::vector<std::pair<double, int>> by_distance;
@@ -238,29 +277,7 @@ Genus1Placement place_half_period_branch_points(const PreparedMesh &prepared, co
       if (i >= count) reshape_ring(in, map, c, trial);
       for (PlaneValue &value : trial.new_values)
         value = centring.apply(value);
-      int folded = 0, stray = 0;
-      for (int f : trial.fading_faces)
-        folded -= folded_or_flat(in, sphere, f);
-      std::vector<int> winding_before;
-      for (int v : trial.vertices)
-        winding_before.push_back(vertex_winding(in, sphere, v));
-      std::vector<Eigen::Vector3d> saved;
-      for (size_t j = 0; j < trial.vertices.size(); ++j) {
-        saved.push_back(sphere[size_t(trial.vertices[j])]);
-        sphere[size_t(trial.vertices[j])] = to_sphere(trial.new_values[j]);
-      }
-      for (int f : trial.faces)
-        folded += folded_or_flat(in, sphere, f);
-      for (int f : trial.fading_faces)
-        folded += folded_or_flat(in, sphere, f);
-      // No other vertex may start or stop branching (the pole next to a coarse torus's half
-      // period included).
-      for (size_t j = 0; j < trial.vertices.size(); ++j)
-        stray += trial.vertices[j] != c &&
-                 vertex_winding(in, sphere, trial.vertices[j]) != winding_before[j];
-      const std::tuple<int, int, int> score{folded, vertex_winding(in, sphere, c) != 2, stray};
-      for (size_t j = 0; j < trial.vertices.size(); ++j)
-        sphere[size_t(trial.vertices[j])] = saved[j];
+      const std::tuple<int, int, int> score = score_trial(in, trial, c, sphere);
       if (score < best_score) {
         best_score = score;
         best = std::move(trial);
