@@ -60,6 +60,45 @@ bool reembed(const Mesh &mesh, const FaceIncidence &incidence, const std::vector
   return true;
 }
 
+// Face f still folded: its region re-embedded, widening until it holds (next to a branch vertex
+// too: it stays on the rim); beside a branch vertex, else, the rings around its star re-embedded
+// about its value. Returns whether it worked.
+bool reembed_folded_face(const PreparedMesh &prepared, const std::vector<char> &is_fixed,
+                         std::vector<Eigen::Vector3d> &sphere, size_t f) {
+  const Mesh &mesh = prepared.mesh;
+  const FaceIncidence &incidence = prepared.incidence;
+  const auto &corners = incidence.corners;
+  auto folded = [&](int g) {
+    return folded_image(sphere[corners[g][0]], sphere[corners[g][1]], sphere[corners[g][2]]);
+  };
+  const std::vector<int> seeds(corners[f].begin(), corners[f].end());
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (int v : seeds)
+    mean += sphere[size_t(v)];
+  if (!(mean.norm() > 0)) return false;
+  bool done = false;
+  for (int rings = 1; rings <= largest_ring && !done; ++rings)
+    done = reembed(mesh, incidence, is_fixed, sphere, seeds, rings, mean.normalized());
+  // Beside a branch vertex: the rings around its star re-embedded about its value.
+  for (const auto &[b, d] : ring_distances(incidence, seeds, 2))
+    for (int rings = 2; rings <= largest_ring && !done && is_fixed[size_t(b)]; ++rings)
+      if (const auto around = reembed_around_branch(mesh, incidence, sphere, b, rings)) {
+        std::vector<std::pair<int, Eigen::Vector3d>> before;
+        for (const auto &[w, point] : *around) {
+          before.push_back({w, sphere[size_t(w)]});
+          sphere[size_t(w)] = point;
+        }
+        done = true;
+        for (const auto &[w, point] : *around)
+          for (int g : incidence.faces_of_vertex[size_t(w)])
+            done = done && !folded(g);
+        if (!done)
+          for (const auto &[w, point] : before)
+            sphere[size_t(w)] = point;
+      }
+  return done;
+}
+
 } // namespace
 
 int untangle_folds(const PreparedMesh &prepared, std::vector<Eigen::Vector3d> &sphere,
@@ -112,37 +151,9 @@ int untangle_folds(const PreparedMesh &prepared, std::vector<Eigen::Vector3d> &s
     }
     if (!changed) break;
   }
-  // What is still folded: its region re-embedded, widening until it holds (next to a branch
-  // vertex too: it stays on the rim).
-  for (size_t f = 0; f < mesh.face.size(); ++f) {
-    if (!folded(int(f))) continue;
-    const std::vector<int> seeds(corners[f].begin(), corners[f].end());
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for (int v : seeds)
-      mean += sphere[size_t(v)];
-    if (!(mean.norm() > 0)) continue;
-    bool done = false;
-    for (int rings = 1; rings <= largest_ring && !done; ++rings)
-      done = reembed(mesh, incidence, is_fixed, sphere, seeds, rings, mean.normalized());
-    // Beside a branch vertex: the rings around its star re-embedded about its value.
-    for (const auto &[b, d] : ring_distances(incidence, seeds, 2))
-      for (int rings = 2; rings <= largest_ring && !done && is_fixed[size_t(b)]; ++rings)
-        if (const auto around = reembed_around_branch(mesh, incidence, sphere, b, rings)) {
-          std::vector<std::pair<int, Eigen::Vector3d>> before;
-          for (const auto &[w, point] : *around) {
-            before.push_back({w, sphere[size_t(w)]});
-            sphere[size_t(w)] = point;
-          }
-          done = true;
-          for (const auto &[w, point] : *around)
-            for (int g : incidence.faces_of_vertex[size_t(w)])
-              done = done && !folded(g);
-          if (!done)
-            for (const auto &[w, point] : before)
-              sphere[size_t(w)] = point;
-        }
-    moved += done;
-  }
+  // What is still folded: its region re-embedded.
+  for (size_t f = 0; f < mesh.face.size(); ++f)
+    if (folded(int(f))) moved += reembed_folded_face(prepared, is_fixed, sphere, f);
   return moved;
 }
 
