@@ -31,6 +31,52 @@ int best_shaped_face(const Mesh &mesh, const FaceGeometry &geometry) {
   return best;
 }
 
+// Strictly positive weights on the chosen edges (`raise`; empty: all): a floor of 1e-3 of the
+// median positive weight. Counts the weights raised.
+std::vector<double> raised_weights(const std::vector<double> &weights,
+                                   const std::vector<char> &raise, int &raised) {
+  std::vector<double> positive = weights;
+  std::vector<double> sorted;
+  for (double w : weights)
+    if (w > 0) sorted.push_back(w);
+  std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
+  const double floor = 1e-3 * sorted[sorted.size() / 2];
+  for (size_t e = 0; e < positive.size(); ++e)
+    if (positive[e] < floor && (raise.empty() || raise[e])) {
+      positive[e] = floor;
+      ++raised;
+    }
+  return positive;
+}
+
+// The pole triangle: 1 / (w - c) at the puncture face's corners, in the face's own frame (w
+// relative to its centroid, in units of the square root of its area). Fills the two coordinates
+// at those corners and returns them.
+std::vector<int> pole_triangle(const Mesh &mesh, const FaceGeometry &geometry, int puncture_face,
+                               Eigen::VectorXd &fixed_u, Eigen::VectorXd &fixed_v) {
+  const MeshFace &face = mesh.face[puncture_face];
+  std::vector<int> corners;
+  Eigen::Vector3d p[3];
+  for (int k = 0; k < 3; ++k) {
+    corners.push_back(index_of(mesh, face.cV(k)));
+    p[k] = face.cP(k).ToEigenVector<Eigen::Vector3d>();
+  }
+  const Eigen::Vector3d centroid = (p[0] + p[1] + p[2]) / 3.0;
+  const Eigen::Vector3d e1 = (p[1] - p[0]).normalized();
+  const Eigen::Vector3d e2 = geometry.normals[puncture_face].cross(e1);
+  const double size = std::sqrt(geometry.areas[puncture_face]);
+  fixed_u = Eigen::VectorXd::Zero(long(mesh.vert.size()));
+  fixed_v = fixed_u;
+  for (int k = 0; k < 3; ++k) {
+    const Complex w((p[k] - centroid).dot(e1) / size, (p[k] - centroid).dot(e2) / size);
+    const Complex z = 1.0 / w;
+    fixed_u[corners[k]] = z.real();
+    fixed_v[corners[k]] = z.imag();
+  }
+
+  return corners;
+}
+
 } // namespace
 
 Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int puncture_face,
@@ -46,41 +92,12 @@ Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int punctu
     throw ArgumentError("puncture face " + std::to_string(puncture_face) + " does not exist");
   out.puncture_face = puncture_face;
 
-  // Strictly positive weights on the chosen edges: a floor relative to the typical weight.
-  std::vector<double> positive = weights;
-  std::vector<double> sorted;
-  for (double w : weights)
-    if (w > 0) sorted.push_back(w);
-  std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
-  const double floor = 1e-3 * sorted[sorted.size() / 2];
-  for (size_t e = 0; e < positive.size(); ++e)
-    if (positive[e] < floor && (raise.empty() || raise[e])) {
-      positive[e] = floor;
-      ++out.raised_weights;
-    }
+  const std::vector<double> positive = raised_weights(weights, raise, out.raised_weights);
   const Eigen::SparseMatrix<double> laplacian =
       cotan_laplacian(int(mesh.vert.size()), edges, positive);
 
-  // The pole triangle: 1 / (w - c) at the puncture face's corners, in the face's own frame.
-  const MeshFace &face = mesh.face[puncture_face];
-  std::vector<int> corners;
-  Eigen::Vector3d p[3];
-  for (int k = 0; k < 3; ++k) {
-    corners.push_back(index_of(mesh, face.cV(k)));
-    p[k] = face.cP(k).ToEigenVector<Eigen::Vector3d>();
-  }
-  const Eigen::Vector3d centroid = (p[0] + p[1] + p[2]) / 3.0;
-  const Eigen::Vector3d e1 = (p[1] - p[0]).normalized();
-  const Eigen::Vector3d e2 = geometry.normals[puncture_face].cross(e1);
-  const double size = std::sqrt(geometry.areas[puncture_face]);
-  Eigen::VectorXd fixed_u = Eigen::VectorXd::Zero(long(mesh.vert.size()));
-  Eigen::VectorXd fixed_v = fixed_u;
-  for (int k = 0; k < 3; ++k) {
-    const Complex w((p[k] - centroid).dot(e1) / size, (p[k] - centroid).dot(e2) / size);
-    const Complex z = 1.0 / w;
-    fixed_u[corners[k]] = z.real();
-    fixed_v[corners[k]] = z.imag();
-  }
+  Eigen::VectorXd fixed_u, fixed_v;
+  const std::vector<int> corners = pole_triangle(mesh, geometry, puncture_face, fixed_u, fixed_v);
 
   // Dirichlet problem: L_free z_free = -L_free,pinned z_pinned.
   const std::unique_ptr<LaplacianSolver> factored = factor_laplacian(laplacian, solver, corners);
@@ -119,7 +136,7 @@ Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int punctu
     if (size < 1e-12 * distance) continue;
     if (std::imag(std::conj(z[1] - z[0]) * (z[2] - z[0])) <= 0) out.folded_faces.push_back(int(f));
   }
-  out.weights = std::move(positive);
+  out.weights = positive;
   return out;
 }
 
