@@ -128,20 +128,21 @@ std::vector<Complex> solve_chart(const Mesh &mesh, const FaceIncidence &in,
   return values;
 }
 
-} // namespace
+// The two charts' first guesses: per vertex the area-weighted mean on the sphere of its faces'
+// samples F = top / bottom; F in the chart of 0 where |F| < 8, G = 1 / F in the chart of infinity
+// where |F| > 1/8.
+struct ChartGuess {
+  std::vector<char> near_zero, near_pole;
+  std::vector<double> size; // |F|
+  std::vector<Complex> f, g;
+};
 
-std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
-                                       const Eigen::VectorXcd &numerator,
-                                       const Eigen::VectorXcd &denominator) {
-  const Mesh &mesh = prepared.mesh;
-  const MeshEdges &edges = prepared.edges;
-  const int n = int(mesh.vert.size());
-  const size_t face_count = mesh.face.size();
+ChartGuess chart_guess(const PreparedMesh &prepared, const std::vector<Complex> &top,
+                       const std::vector<Complex> &bottom) {
+  const int n = int(prepared.mesh.vert.size());
+  const size_t face_count = prepared.mesh.face.size();
   const FaceGeometry &geometry = prepared.geometry;
   const FaceIncidence &in = prepared.incidence;
-  const std::vector<Complex> top = holomorphic_coefficient(mesh, edges, geometry, numerator);
-  const std::vector<Complex> bottom = holomorphic_coefficient(mesh, edges, geometry, denominator);
-  // First guess per vertex: the area-weighted mean of its faces' samples on the sphere.
   std::vector<Eigen::Vector3d> mean(static_cast<size_t>(n), Eigen::Vector3d::Zero());
   for (size_t f = 0; f < face_count; ++f) {
     const bool pole = std::abs(bottom[f]) == 0.0;
@@ -150,9 +151,12 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
     for (int v : in.corners[f])
       mean[v] += geometry.areas[f] * sample;
   }
-  std::vector<char> near_zero(static_cast<size_t>(n)), near_pole(static_cast<size_t>(n));
-  std::vector<double> size(static_cast<size_t>(n));
-  std::vector<Complex> guess_f(static_cast<size_t>(n)), guess_g(static_cast<size_t>(n));
+  ChartGuess out{std::vector<char>(size_t(n)), std::vector<char>(size_t(n)),
+                 std::vector<double>(size_t(n)), std::vector<Complex>(size_t(n)),
+                 std::vector<Complex>(size_t(n))};
+  std::vector<char> &near_zero = out.near_zero, &near_pole = out.near_pole;
+  std::vector<double> &size = out.size;
+  std::vector<Complex> &guess_f = out.f, &guess_g = out.g;
   for (int v = 0; v < n; ++v) {
     const PlaneValue guess = to_plane_value(mean[v].normalized());
     size[v] = guess.infinite ? HUGE_VAL : std::abs(guess.w);
@@ -161,19 +165,15 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
     if (near_zero[v]) guess_f[v] = guess.w;
     if (near_pole[v] && size[v] > 0 && !guess.infinite) guess_g[v] = 1.0 / guess.w;
   }
-  std::vector<Complex> ratio_f(face_count), ratio_g(face_count);
-  std::vector<char> known_f(face_count), known_g(face_count);
-  for (size_t f = 0; f < face_count; ++f) {
-    ratio_f[f] = top[f] / bottom[f];
-    ratio_g[f] = bottom[f] / top[f];
-    known_f[f] = std::isfinite(ratio_f[f].real()) && std::isfinite(ratio_f[f].imag());
-    known_g[f] = std::isfinite(ratio_g[f].real()) && std::isfinite(ratio_g[f].imag());
-  }
-  // F where |F| < 8, G = 1 / F where |F| > 1/8; blended on the sphere between 1/2 and 2.
-  const std::vector<Complex> f =
-      solve_chart(mesh, in, geometry, near_zero, ratio_f, known_f, guess_f);
-  const std::vector<Complex> g =
-      solve_chart(mesh, in, geometry, near_pole, ratio_g, known_g, guess_g);
+  return out;
+}
+
+// F where |F| < 1/2, 1 / G where |F| > 2, blended on the sphere between.
+std::vector<PlaneValue> blended_values(const ChartGuess &guess, const std::vector<Complex> &f,
+                                       const std::vector<Complex> &g) {
+  const int n = int(f.size());
+  const std::vector<char> &near_zero = guess.near_zero, &near_pole = guess.near_pole;
+  const std::vector<double> &size = guess.size;
   std::vector<PlaneValue> values(static_cast<size_t>(n));
   for (int v = 0; v < n; ++v) {
     if (!near_pole[v]) {
@@ -191,6 +191,36 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
     values[v] = to_plane_value(((1 - t) * to_sphere(f[v]) + t * pole_side).normalized());
   }
   return values;
+}
+
+} // namespace
+
+std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
+                                       const Eigen::VectorXcd &numerator,
+                                       const Eigen::VectorXcd &denominator) {
+  const Mesh &mesh = prepared.mesh;
+  const MeshEdges &edges = prepared.edges;
+  const size_t face_count = mesh.face.size();
+  const FaceGeometry &geometry = prepared.geometry;
+  const FaceIncidence &in = prepared.incidence;
+  const std::vector<Complex> top = holomorphic_coefficient(mesh, edges, geometry, numerator);
+  const std::vector<Complex> bottom = holomorphic_coefficient(mesh, edges, geometry, denominator);
+  const ChartGuess guess = chart_guess(prepared, top, bottom);
+  const std::vector<char> &near_zero = guess.near_zero, &near_pole = guess.near_pole;
+  std::vector<Complex> ratio_f(face_count), ratio_g(face_count);
+  std::vector<char> known_f(face_count), known_g(face_count);
+  for (size_t f = 0; f < face_count; ++f) {
+    ratio_f[f] = top[f] / bottom[f];
+    ratio_g[f] = bottom[f] / top[f];
+    known_f[f] = std::isfinite(ratio_f[f].real()) && std::isfinite(ratio_f[f].imag());
+    known_g[f] = std::isfinite(ratio_g[f].real()) && std::isfinite(ratio_g[f].imag());
+  }
+  // F where |F| < 8, G = 1 / F where |F| > 1/8; blended on the sphere between 1/2 and 2.
+  const std::vector<Complex> f =
+      solve_chart(mesh, in, geometry, near_zero, ratio_f, known_f, guess.f);
+  const std::vector<Complex> g =
+      solve_chart(mesh, in, geometry, near_pole, ratio_g, known_g, guess.g);
+  return blended_values(guess, f, g);
 }
 
 } // namespace meromorph
