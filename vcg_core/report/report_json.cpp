@@ -68,9 +68,8 @@ nlohmann::json vector_json(const Eigen::Vector3d &v) {
   return {v[0], v[1], v[2]};
 }
 
-} // namespace
-
-nlohmann::json parameterization_json(const Parameterization &map) {
+// Branch points with their vertex, position, sphere point and local degree.
+nlohmann::json branch_points_json(const Parameterization &map) {
   nlohmann::json branch_points = nlohmann::json::array();
   for (const BranchPoint &b : map.branch_points) {
     branch_points.push_back({{"vertex", b.vertex},
@@ -80,6 +79,46 @@ nlohmann::json parameterization_json(const Parameterization &map) {
                              {"ramification", b.local_degree}}); // the old name, for one release
     if (b.sphere_vertex >= 0) branch_points.back()["sphere_vertex"] = b.sphere_vertex;
   }
+  return branch_points;
+}
+
+// Several parts or closed holes: each part's own report, their spacing, the holes closed.
+void add_parts_json(const Parameterization &map, nlohmann::json &report) {
+  nlohmann::json components = nlohmann::json::array();
+  for (const Parameterization &part : map.components) {
+    nlohmann::json entry = parameterization_json(part);
+    entry["faces"] = part.quality.overall.faces;
+    entry.erase("timings_ms");
+    components.push_back(entry);
+  }
+  report["components"] = components;
+  report["component_spacing"] = map.component_spacing;
+  nlohmann::json holes = nlohmann::json::array();
+  for (const ClosedHoleReport &hole : map.holes_closed)
+    holes.push_back({{"part", hole.part},
+                     {"edges", hole.edges},
+                     {"vertex", hole.vertex},
+                     {"sphere_area_over_4pi", hole.image_area_over_4pi}});
+  report["holes_closed"] = holes;
+}
+
+// Genus >= 2: the pair of forms and how many pairs were tried.
+void add_form_pair_json(const Parameterization &map, nlohmann::json &report) {
+  report["form_pair"] = map.form_pair;
+  auto coefficients = [](const Eigen::VectorXcd &c) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto &value : c)
+      list.push_back({value.real(), value.imag()});
+    return list;
+  };
+  report["form_coefficients"] = {{"a", coefficients(map.form_coefficients.first)},
+                                 {"b", coefficients(map.form_coefficients.second)}};
+  report["pair_attempts"] = map.pair_attempts;
+}
+
+} // namespace
+
+nlohmann::json parameterization_json(const Parameterization &map) {
   nlohmann::json timings = nlohmann::json::object();
   for (const auto &[stage, ms] : map.timings_ms) // a stage run more than once: its total
     timings[stage] = timings.value(stage, 0.0) + ms;
@@ -89,7 +128,7 @@ nlohmann::json parameterization_json(const Parameterization &map) {
       {"degree", map.degree},
       {"image_area_over_4pi", map.area_over_4pi},
       {"method", map.method},
-      {"branch_points", branch_points},
+      {"branch_points", branch_points_json(map)},
       {"ramification_total", map.ramification},
       {"snapped_branch_points", map.snapped_branch_points},
       {"untangled_vertices", map.untangled_vertices},
@@ -123,24 +162,7 @@ nlohmann::json parameterization_json(const Parameterization &map) {
   report["invalid"] = map.invalid;
   if (!map.advice.empty()) report["advice"] = map.advice;
   report["notes"] = map.notes;
-  if (!map.components.empty()) {
-    nlohmann::json components = nlohmann::json::array();
-    for (const Parameterization &part : map.components) {
-      nlohmann::json entry = parameterization_json(part);
-      entry["faces"] = part.quality.overall.faces;
-      entry.erase("timings_ms");
-      components.push_back(entry);
-    }
-    report["components"] = components;
-    report["component_spacing"] = map.component_spacing;
-    nlohmann::json holes = nlohmann::json::array();
-    for (const ClosedHoleReport &hole : map.holes_closed)
-      holes.push_back({{"part", hole.part},
-                       {"edges", hole.edges},
-                       {"vertex", hole.vertex},
-                       {"sphere_area_over_4pi", hole.image_area_over_4pi}});
-    report["holes_closed"] = holes;
-  }
+  if (!map.components.empty()) add_parts_json(map, report);
   if (!map.sphere_source_vertex.empty()) {
     nlohmann::json edges = nlohmann::json::array();
     for (const auto &edge : map.nonmanifold_split.edges)
@@ -149,18 +171,7 @@ nlohmann::json parameterization_json(const Parameterization &map) {
                                    {"edges", edges},
                                    {"added_vertices", map.nonmanifold_split.added_vertices}};
   }
-  if (one_part && map.genus >= 2) {
-    report["form_pair"] = map.form_pair;
-    auto coefficients = [](const Eigen::VectorXcd &c) {
-      nlohmann::json list = nlohmann::json::array();
-      for (const auto &value : c)
-        list.push_back({value.real(), value.imag()});
-      return list;
-    };
-    report["form_coefficients"] = {{"a", coefficients(map.form_coefficients.first)},
-                                   {"b", coefficients(map.form_coefficients.second)}};
-    report["pair_attempts"] = map.pair_attempts;
-  }
+  if (one_part && map.genus >= 2) add_form_pair_json(map, report);
   return report;
 }
 
