@@ -93,16 +93,11 @@ void close_loop(const std::vector<int> &loop, std::vector<Point3> &positions,
   }
 }
 
-} // namespace
-
-SurfaceParts split_into_closed_parts(const Mesh &input, bool close_holes) {
-  const int face_count = int(input.face.size()), vertex_count = int(input.vert.size());
-  std::vector<std::array<int, 3>> corners(static_cast<size_t>(face_count));
-  for (int f = 0; f < face_count; ++f)
-    for (int k = 0; k < 3; ++k)
-      corners[size_t(f)][k] = index_of(input, input.face[size_t(f)].cV(k));
-
-  // Parts: faces joined across shared edges (union-find over the edges' faces).
+// Parts: faces joined across shared edges (union-find over the edges' faces). Fills each face's
+// and vertex's part and the face's place in it; returns the faces of each part.
+std::vector<std::vector<int>> faces_by_part(const std::vector<std::array<int, 3>> &corners,
+                                            int vertex_count, SurfaceParts &out) {
+  const int face_count = int(corners.size());
   std::vector<int> parent(static_cast<size_t>(face_count));
   std::iota(parent.begin(), parent.end(), 0);
   std::map<std::pair<int, int>, int> first_face_of_edge;
@@ -112,8 +107,6 @@ SurfaceParts split_into_closed_parts(const Mesh &input, bool close_holes) {
       const auto [it, inserted] = first_face_of_edge.insert({{std::min(a, b), std::max(a, b)}, f});
       if (!inserted) parent[size_t(find_root(parent, f))] = find_root(parent, it->second);
     }
-
-  SurfaceParts out;
   out.part_of_face.assign(size_t(face_count), -1);
   out.face_in_part.assign(size_t(face_count), -1);
   out.part_of_vertex.assign(size_t(vertex_count), -1);
@@ -133,14 +126,52 @@ SurfaceParts split_into_closed_parts(const Mesh &input, bool close_holes) {
   for (int f = 0; f < face_count; ++f)
     for (int v : corners[size_t(f)])
       out.part_of_vertex[size_t(v)] = out.part_of_face[size_t(f)];
+  return faces_of_part;
+}
 
+// Closes every hole of part p (its triangles and positions grow), recording each in `out.holes`.
+void close_part_holes(size_t p, SurfacePart &part, std::vector<std::array<int, 3>> &triangles,
+                      std::vector<Point3> &positions, SurfaceParts &out) {
+  const BoundaryLoops boundary = chain_boundary(triangles);
+  if (boundary.pinched_vertex >= 0)
+    throw InputError("a hole's boundary passes vertex " +
+                     std::to_string(part.source_vertex[size_t(boundary.pinched_vertex)]) +
+                     " twice (two holes touch there): it cannot be closed; separate them first");
+  for (const std::vector<int> &loop : boundary.loops) {
+    ClosedHole hole;
+    hole.part = int(p);
+    hole.edges = int(loop.size());
+    hole.vertex = part.source_vertex[size_t(loop.front())];
+    const size_t first_face = triangles.size();
+    close_loop(loop, positions, triangles);
+    for (size_t f = first_face; f < triangles.size(); ++f) {
+      hole.faces.push_back(int(f));
+      part.source_face.push_back(-1);
+    }
+    part.source_vertex.resize(positions.size(), -1);
+    out.holes.push_back(std::move(hole));
+  }
+}
+
+} // namespace
+
+SurfaceParts split_into_closed_parts(const Mesh &input, bool close_holes) {
+  const int face_count = int(input.face.size()), vertex_count = int(input.vert.size());
+  std::vector<std::array<int, 3>> corners(static_cast<size_t>(face_count));
+  for (int f = 0; f < face_count; ++f)
+    for (int k = 0; k < 3; ++k)
+      corners[size_t(f)][k] = index_of(input, input.face[size_t(f)].cV(k));
+  SurfaceParts out;
+  const std::vector<std::vector<int>> faces_of_part = faces_by_part(corners, vertex_count, out);
+  out.parts.resize(faces_of_part.size());
+  for (int v = 0; v < vertex_count; ++v) // each part's vertices, in the input's order
+    if (out.part_of_vertex[size_t(v)] >= 0) {
+      SurfacePart &part = out.parts[size_t(out.part_of_vertex[size_t(v)])];
+      out.vertex_in_part[size_t(v)] = int(part.source_vertex.size());
+      part.source_vertex.push_back(v);
+    }
   for (size_t p = 0; p < faces_of_part.size(); ++p) {
-    SurfacePart &part = out.parts.emplace_back();
-    for (int v = 0; v < vertex_count; ++v)
-      if (out.part_of_vertex[size_t(v)] == int(p)) {
-        out.vertex_in_part[size_t(v)] = int(part.source_vertex.size());
-        part.source_vertex.push_back(v);
-      }
+    SurfacePart &part = out.parts[p];
     std::vector<std::array<int, 3>> triangles;
     for (int f : faces_of_part[p]) {
       std::array<int, 3> t;
@@ -152,30 +183,7 @@ SurfaceParts split_into_closed_parts(const Mesh &input, bool close_holes) {
     std::vector<Point3> positions;
     for (int v : part.source_vertex)
       positions.push_back(input.vert[size_t(v)].cP());
-
-    if (close_holes) {
-      const BoundaryLoops boundary = chain_boundary(triangles);
-      if (boundary.pinched_vertex >= 0)
-        throw InputError("a hole's boundary passes vertex " +
-                         std::to_string(part.source_vertex[size_t(boundary.pinched_vertex)]) +
-                         " twice (two holes touch there): it cannot be closed; separate them "
-                         "first");
-      for (const std::vector<int> &loop : boundary.loops) {
-        const int start = loop.front();
-        ClosedHole hole;
-        hole.part = int(p);
-        hole.edges = int(loop.size());
-        hole.vertex = part.source_vertex[size_t(start)];
-        const size_t first_face = triangles.size();
-        close_loop(loop, positions, triangles);
-        for (size_t f = first_face; f < triangles.size(); ++f) {
-          hole.faces.push_back(int(f));
-          part.source_face.push_back(-1);
-        }
-        part.source_vertex.resize(positions.size(), -1);
-        out.holes.push_back(std::move(hole));
-      }
-    }
+    if (close_holes) close_part_holes(p, part, triangles, positions, out);
     auto vi = vcg::tri::Allocator<Mesh>::AddVertices(part.mesh, positions.size());
     for (size_t v = 0; v < positions.size(); ++v, ++vi)
       vi->P() = positions[v];
