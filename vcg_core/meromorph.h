@@ -16,7 +16,7 @@
  *      the result.
  * Threads: every function may be called from several threads at once on different results and
  *      meshes; a result may be read by several threads at once; the last error is per thread and
- *      stays valid until that thread's next call of meromorph_parameterize_*.
+ *      stays valid until that thread's next call of meromorph_parameterize_* or failing getter.
  * No C++ exception and no abort crosses this boundary. Compiles as C99 and as C++.
  */
 #ifndef MEROMORPH_H
@@ -71,21 +71,43 @@ typedef struct meromorph_options {
                             version 3. */
 } meromorph_options;
 
+/* A map and everything measured on it; opaque. Made by meromorph_parameterize_*, read by the
+   getters below (any number of threads at once), freed by meromorph_result_free. */
 typedef struct meromorph_result meromorph_result;
 
+/* The ABI version this library serves (MEROMORPH_ABI_VERSION when built from this header). */
 MEROMORPH_API int meromorph_abi_version(void);
+/* The library's version, "major.minor.patch"; static storage. */
 MEROMORPH_API const char *meromorph_version(void);
+/* Fills *options with the defaults and struct_size = sizeof(meromorph_options).
+   Inputs:  options  not NULL (nothing happens when it is). */
 MEROMORPH_API void meromorph_default_options(meromorph_options *options);
+/* What the calling thread's last failed call said, in words with vertex / face indices; "" when
+   none. Per thread; valid until that thread's next call of meromorph_parameterize_* (which clears
+   it) or of a getter that fails. */
 MEROMORPH_API const char *meromorph_last_error(void);
 
-/* Maps a mesh. positions: 3 * vertex_count values (x, y, z per vertex; finite). triangles:
-   3 * triangle_count vertex indices (0-based, < vertex_count). options: NULL for the defaults, or
-   initialized by meromorph_default_options (struct_size must be this header's sizeof); uv_kind 0
-   or 1, mobius 0 or 1, origin_vertex -1 or a vertex, pole_face -1 or a triangle, form_pair -1 or
-   form indices below the genus, layer_gap finite in [0, 1e6]. result: where the new result goes
-   (set to NULL on failure). Returns MEROMORPH_ERROR_ARGUMENT for NULL pointers and bad options,
-   MEROMORPH_ERROR_INPUT for a mesh that cannot be mapped (open, non-manifold, out-of-range
-   index, non-finite coordinate, ...), MEROMORPH_ERROR_CANCELLED when progress returned 0. */
+/* Maps a mesh.
+   Inputs:
+     positions       3 * vertex_count values, x y z per vertex, finite (double or float)
+     vertex_count    number of vertices
+     triangles       3 * triangle_count vertex indices, 0-based, < vertex_count, counter-clockwise
+                     seen from outside
+     triangle_count  number of triangles
+     options         NULL for the defaults, or made by meromorph_default_options: struct_size this
+                     header's sizeof (or an earlier version's); uv_kind 0 or 1, mobius 0 or 1,
+                     origin_vertex -1 or a vertex, pole_face -1 or a triangle, form_pair -1, -1 or
+                     two different form indices below the genus, layer_gap finite in [0, 1e6];
+                     progress may be NULL
+   Outputs:
+     result          *result: the new result, owned by the caller (meromorph_result_free); NULL
+                     on failure. The caller's buffers are not kept.
+   Returns: MEROMORPH_OK; MEROMORPH_ERROR_ARGUMENT for NULL pointers and bad options;
+     MEROMORPH_ERROR_INPUT for a mesh that cannot be mapped (open without close_holes,
+     non-manifold without split_nonmanifold, an out-of-range index, a non-finite coordinate, ...,
+     and a map that is not a valid branched cover is not an error: see meromorph_map_valid);
+     MEROMORPH_ERROR_CANCELLED when progress returned 0; meromorph_last_error says why.
+   Thread-safe: yes, for different calls at once. */
 MEROMORPH_API meromorph_status meromorph_parameterize_d(
     const double *positions, size_t vertex_count, const int32_t *triangles, size_t triangle_count,
     const meromorph_options *options, meromorph_result **result);
@@ -94,31 +116,39 @@ MEROMORPH_API meromorph_status meromorph_parameterize_f(const float *positions, 
                                                         size_t triangle_count,
                                                         const meromorph_options *options,
                                                         meromorph_result **result);
+/* Frees a result and the strings it owns; NULL is allowed (nothing happens). */
 MEROMORPH_API void meromorph_result_free(meromorph_result *result);
 
-/* Scalar getters: a NULL result gives 0 for counts, -1 for genus and degree, 0 for the
-   Riemann-Hurwitz flag and "" for strings. */
-MEROMORPH_API size_t meromorph_vertex_count(const meromorph_result *result);
-MEROMORPH_API size_t meromorph_triangle_count(const meromorph_result *result);
-MEROMORPH_API int meromorph_genus(const meromorph_result *result);
-MEROMORPH_API int meromorph_degree(const meromorph_result *result);
-MEROMORPH_API int meromorph_riemann_hurwitz_ok(const meromorph_result *result);
+/* Scalar getters. Inputs: result (may be NULL: counts give 0, genus and degree -1, flags 0,
+   strings ""). Thread-safe: yes. Strings are owned by the result and live as long as it. */
+MEROMORPH_API size_t meromorph_vertex_count(const meromorph_result *result);   /* the input's */
+MEROMORPH_API size_t meromorph_triangle_count(const meromorph_result *result); /* the input's */
+MEROMORPH_API int meromorph_genus(const meromorph_result *result);  /* summed over the parts */
+MEROMORPH_API int meromorph_degree(const meromorph_result *result); /* summed over the parts */
+MEROMORPH_API int meromorph_riemann_hurwitz_ok(const meromorph_result *result); /* 1 or 0 */
 /* 1 when the map is a valid branched cover of the sphere (the expected degree, Riemann-Hurwitz,
    no face turned over), 0 otherwise. */
 MEROMORPH_API int meromorph_map_valid(const meromorph_result *result);
 /* When the map is not valid: what fails, with face indices, reasons joined by "; " ("" when
-   valid); owned by the result. */
+   valid). */
 MEROMORPH_API const char *meromorph_invalid_reasons(const meromorph_result *result);
-/* When the map is not valid: the likely causes and what to do ("" otherwise); owned by the
-   result. */
+/* When the map is not valid: the likely causes and what to do ("" otherwise). */
 MEROMORPH_API const char *meromorph_advice(const meromorph_result *result);
 
-/* Copies into the caller's buffer, which must hold (per vertex of the input, in its order):
-   sphere and layered positions 3 doubles per vertex, vertex uvs 2 doubles per vertex, corner uvs
-   6 doubles per triangle (u, v for each of its three corners), layers and components 1 int32 per
-   vertex. A vertex that split_nonmanifold split gets the values of the fan of its first
-   triangle here (its corner uvs are exact for every triangle). MEROMORPH_ERROR_ARGUMENT if a
-   pointer is NULL. */
+/* Per-vertex and per-corner arrays, copied into the caller's buffer, in the input's order.
+   Inputs:  result  not NULL
+   Outputs (caller-owned, not NULL):
+     meromorph_sphere_positions   xyz    3 * meromorph_vertex_count doubles (unit sphere)
+     meromorph_layered_positions  xyz    3 * meromorph_vertex_count doubles (layer k at radius
+                                         1 + layer_gap * k; part k shifted by k * spacing in x)
+     meromorph_vertex_uvs         uv     2 * meromorph_vertex_count doubles
+     meromorph_corner_uvs         uv     6 * meromorph_triangle_count doubles (u, v per corner)
+     meromorph_layers             layer  meromorph_vertex_count int32
+     meromorph_vertex_components  component  meromorph_vertex_count int32 (the part, 0-based;
+                                         since ABI version 2)
+   A vertex that split_nonmanifold split gets the values of the fan of its first triangle here
+   (its corner uvs are exact for every triangle; meromorph_sphere_mesh has every copy).
+   Returns: MEROMORPH_OK, or MEROMORPH_ERROR_ARGUMENT if a pointer is NULL. Thread-safe: yes. */
 MEROMORPH_API meromorph_status meromorph_sphere_positions(const meromorph_result *result,
                                                           double *xyz);
 MEROMORPH_API meromorph_status meromorph_layered_positions(const meromorph_result *result,
@@ -126,41 +156,51 @@ MEROMORPH_API meromorph_status meromorph_layered_positions(const meromorph_resul
 MEROMORPH_API meromorph_status meromorph_vertex_uvs(const meromorph_result *result, double *uv);
 MEROMORPH_API meromorph_status meromorph_corner_uvs(const meromorph_result *result, double *uv);
 MEROMORPH_API meromorph_status meromorph_layers(const meromorph_result *result, int32_t *layer);
-/* The part (connected component, 0-based) of each vertex; part k's layered sphere is centred at
-   x = k * meromorph_component_spacing. Since ABI version 2. */
 MEROMORPH_API meromorph_status meromorph_vertex_components(const meromorph_result *result,
                                                            int32_t *component);
+/* The distance in x between the parts' layered spheres (0 for one part; NULL result: 0). */
 MEROMORPH_API double meromorph_component_spacing(const meromorph_result *result);
 
-/* The layered sphere as a mesh: meromorph_sphere_vertex_count vertices (the input's in order,
-   then, when split_nonmanifold split vertices, their copies) and meromorph_triangle_count
-   triangles (the input's, in order, pointing at the copies where split). Fills, per sphere
-   vertex: layered_xyz 3 doubles, source_vertex (the input vertex), layer, component and branch
-   (the local degree at a branch point, 0 elsewhere) 1 int32 each; triangles 3 int32 per
-   triangle. Any buffer may be NULL (not filled). Since ABI version 3. */
+/* The layered sphere as a mesh (since ABI version 3): the input's vertices in order, then, when
+   split_nonmanifold split vertices, their copies; the input's triangles in order, pointing at the
+   copies where split.
+   Inputs:  result  not NULL
+   Outputs (caller-owned; any may be NULL: not filled), with n = meromorph_sphere_vertex_count:
+     layered_xyz    3 * n doubles
+     triangles      3 * meromorph_triangle_count int32
+     source_vertex  n int32: the input vertex each sphere vertex stands for
+     layer, component  n int32 each
+     branch         n int32: the local degree at a branch point, 0 elsewhere
+   Returns: MEROMORPH_OK, or MEROMORPH_ERROR_ARGUMENT for a NULL result. Thread-safe: yes. */
 MEROMORPH_API size_t meromorph_sphere_vertex_count(const meromorph_result *result);
 MEROMORPH_API meromorph_status meromorph_sphere_mesh(const meromorph_result *result,
                                                      double *layered_xyz, int32_t *triangles,
                                                      int32_t *source_vertex, int32_t *layer,
                                                      int32_t *component, int32_t *branch);
 
+/* Branch points: meromorph_branch_point_count of them (NULL result: 0).
+   Inputs:  result  not NULL
+   Outputs (caller-owned): vertices  count int32, the input's vertex of each (not NULL);
+     local_degrees  count int32, e >= 2 (may be NULL).
+   Returns: MEROMORPH_OK, or MEROMORPH_ERROR_ARGUMENT for a NULL result or vertices. */
 MEROMORPH_API size_t meromorph_branch_point_count(const meromorph_result *result);
-/* vertices (the input's) and local_degrees: meromorph_branch_point_count entries each;
-   local_degrees may be NULL. */
 MEROMORPH_API meromorph_status meromorph_branch_points(const meromorph_result *result,
                                                        int32_t *vertices, int32_t *local_degrees);
 
 typedef struct meromorph_distortion {
-  double angle_error_mean_degrees;
-  double quasi_conformal_mean, quasi_conformal_p95, quasi_conformal_max;
+  double angle_error_mean_degrees; /* mean |corner angle on the sphere - on the surface| */
+  double quasi_conformal_mean, quasi_conformal_p95, quasi_conformal_max; /* per face, >= 1 */
   int32_t folded_faces_away_from_branch_points;
   int32_t folded_faces;
 } meromorph_distortion;
-/* Fills *distortion; MEROMORPH_ERROR_ARGUMENT if a pointer is NULL. */
+/* Distortion over the input's faces.
+   Inputs:  result  not NULL.  Outputs: *distortion (caller-owned, not NULL).
+   Returns: MEROMORPH_OK, or MEROMORPH_ERROR_ARGUMENT if a pointer is NULL. */
 MEROMORPH_API meromorph_status meromorph_get_distortion(const meromorph_result *result,
                                                         meromorph_distortion *distortion);
 
-/* The JSON report (as `meromorph param --report`); owned by the result. */
+/* The JSON report, as `meromorph param --report` writes it (NULL result: ""); owned by the
+   result. */
 MEROMORPH_API const char *meromorph_report_json(const meromorph_result *result);
 
 #ifdef __cplusplus
