@@ -126,8 +126,7 @@ struct Spot {
   Score score(int branch_vertex) const {
     Score score{0, 0, branch_vertex < 0 || vertex_winding(in, sphere, branch_vertex) != 2, 0.0};
     for (int f : region_faces) {
-      const auto &c = in.corners[size_t(f)];
-      const bool folded = folded_image(sphere[c[0]], sphere[c[1]], sphere[c[2]]);
+      const bool folded = folded_face(in, sphere, f);
       std::get<0>(score) += folded;
       std::get<1>(score) += !folded && folded_or_flat(in, sphere, f);
       std::get<3>(score) += face_angle_error_degrees(mesh, sphere, f);
@@ -159,10 +158,8 @@ int critical_points_in(const Spot &spot) {
     spot_faces.insert(spot.in.faces_of_vertex[size_t(v)].begin(),
                       spot.in.faces_of_vertex[size_t(v)].end());
   }
-  for (int f : spot_faces) {
-    const auto &c = spot.in.corners[size_t(f)];
-    count += folded_image(spot.sphere[c[0]], spot.sphere[c[1]], spot.sphere[c[2]]);
-  }
+  for (int f : spot_faces)
+    count += folded_face(spot.in, spot.sphere, f);
   return count;
 }
 

@@ -50,8 +50,7 @@ bool reembed(const Mesh &mesh, const FaceIncidence &incidence, const std::vector
     sphere[size_t(v)] = gnomonic.to_sphere(chart[v]);
   }
   for (int g : region_faces) {
-    const auto &t = corners[size_t(g)];
-    if (folded_image(sphere[size_t(t[0])], sphere[size_t(t[1])], sphere[size_t(t[2])])) {
+    if (folded_face(incidence, sphere, g)) {
       for (const auto &[v, p] : before)
         sphere[size_t(v)] = p;
       return false;
@@ -68,9 +67,6 @@ bool reembed_folded_face(const PreparedMesh &prepared, const std::vector<char> &
   const Mesh &mesh = prepared.mesh;
   const FaceIncidence &incidence = prepared.incidence;
   const auto &corners = incidence.corners;
-  auto folded = [&](int g) {
-    return folded_image(sphere[corners[g][0]], sphere[corners[g][1]], sphere[corners[g][2]]);
-  };
   const std::vector<int> seeds(corners[f].begin(), corners[f].end());
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   for (int v : seeds)
@@ -91,7 +87,7 @@ bool reembed_folded_face(const PreparedMesh &prepared, const std::vector<char> &
         done = true;
         for (const auto &[w, point] : *around)
           for (int g : incidence.faces_of_vertex[size_t(w)])
-            done = done && !folded(g);
+            done = done && !folded_face(incidence, sphere, g);
         if (!done)
           for (const auto &[w, point] : before)
             sphere[size_t(w)] = point;
@@ -110,9 +106,7 @@ int untangle_folds(const PreparedMesh &prepared, std::vector<Eigen::Vector3d> &s
   std::vector<char> is_fixed(mesh.vert.size(), 0);
   for (int v : fixed)
     is_fixed[v] = 1;
-  auto folded = [&](int f) {
-    return folded_image(sphere[corners[f][0]], sphere[corners[f][1]], sphere[corners[f][2]]);
-  };
+  auto folded = [&](int f) { return folded_face(incidence, sphere, f); };
   auto folded_around = [&](int v) {
     int count = 0;
     for (int f : faces_of[v])

@@ -121,7 +121,7 @@ void finish_parts(const SurfaceParts &split, const ParameterizeOptions &options,
   } else {
     out.method = "each part on its own (components)";
     if (options.pack_uv) {
-      const int cells = int(std::ceil(std::sqrt(double(part_count) - 0.5)));
+      const int cells = texture_grid_cells(part_count);
       auto into_cell = [&](int part, std::array<double, 2> &uv) {
         uv[0] = (double(part % cells) + uv[0]) / cells;
         uv[1] = (double(part / cells) + uv[1]) / cells;
@@ -144,6 +144,10 @@ void finish_parts(const SurfaceParts &split, const ParameterizeOptions &options,
 }
 
 } // namespace
+
+int texture_grid_cells(size_t part_count) {
+  return int(std::ceil(std::sqrt(double(part_count) - 0.5)));
+}
 
 Parameterization parameterize_parts(const Mesh &mesh, const Validation &validation,
                                     const ParameterizeOptions &options, const Progress &progress) {

@@ -19,6 +19,9 @@
 
 namespace meromorph {
 
+// The side of the square grid whose cells hold `part_count` parts' packed texture coordinates.
+int texture_grid_cells(size_t part_count);
+
 Parameterization parameterize_parts(const Mesh &mesh, const Validation &validation,
                                     const ParameterizeOptions &options, const Progress &progress);
 

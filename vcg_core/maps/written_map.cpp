@@ -9,13 +9,11 @@
 namespace meromorph {
 namespace {
 
-// Faces whose written image is turned over (sphere_geometry.h).
-int folded_face_count(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere) {
+// Faces whose written image is turned over.
+int folded_face_count(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere) {
   int count = 0;
-  for (const MeshFace &face : mesh.face)
-    count += folded_image(sphere[size_t(index_of(mesh, face.cV(0)))],
-                          sphere[size_t(index_of(mesh, face.cV(1)))],
-                          sphere[size_t(index_of(mesh, face.cV(2)))]);
+  for (size_t f = 0; f < in.corners.size(); ++f)
+    count += folded_face(in, sphere, int(f));
   return count;
 }
 
@@ -75,7 +73,7 @@ WrittenSphere written_genus1_map(const PreparedMesh &prepared, const Holomorphic
     finish_on_sphere(prepared, mobius, &map, 0, map.values, written, progress, clock);
     written.origin_vertex = map.origin_vertex;
     const bool valid = written.branching.degree == 2 && written.branching.riemann_hurwitz_ok &&
-                       folded_face_count(prepared.mesh, written.sphere) == 0;
+                       folded_face_count(prepared.incidence, written.sphere) == 0;
     if (valid || k == 0) first = std::move(written);
     first->origin_attempts = int(k) + 1;
     if (valid) break;

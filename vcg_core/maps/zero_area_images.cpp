@@ -92,13 +92,16 @@ std::vector<int> orient_zero_area_images(const Mesh &mesh, const std::vector<int
   }
   // A copy in line between two corners of a zero-area face (a T-junction's middle, merged into an
   // end) starts where it lies along them.
+  std::vector<char> zero_area(mesh.face.size(), 0);
+  for (int f : zero_area_faces)
+    zero_area[size_t(f)] = 1;
   for (int v : movable) {
     if (!is_copy[size_t(v)]) continue;
     const Point3 &x = mesh.vert[size_t(v)].cP();
-    for (int f : zero_area_faces) {
+    for (int f : in.faces_of_vertex[size_t(v)]) {
+      if (!zero_area[size_t(f)]) continue;
       const auto &c = in.corners[size_t(f)];
       const int k = int(std::find(c.begin(), c.end(), v) - c.begin());
-      if (k == 3) continue;
       const int p = c[size_t((k + 1) % 3)], q = c[size_t((k + 2) % 3)];
       const Point3 from = mesh.vert[size_t(p)].cP(), along = mesh.vert[size_t(q)].cP() - from;
       if (along.SquaredNorm() == 0) continue;

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "common/wording.h"
+#include "maps/parts_map.h"
 #include "maps/zero_area_images.h"
 
 namespace meromorph {
@@ -27,7 +28,7 @@ void orient_put_back_faces(const Mesh &whole, const ZeroAreaFix &fix,
   if (moved.empty()) return;
   // Packed parts' texture coordinates are scaled into their cells.
   const size_t parts = std::max<size_t>(1, map.components.size());
-  const double cells = options.pack_uv ? std::ceil(std::sqrt(double(parts) - 0.5)) : 1.0;
+  const double cells = options.pack_uv ? texture_grid_cells(parts) : 1.0;
   std::vector<std::array<double, 2>> shift(vertex_count, {0.0, 0.0});
   for (int v : moved) {
     const size_t i = size_t(v);

@@ -28,6 +28,11 @@ double corner_sweep(const std::vector<Eigen::Vector3d> &sphere, const std::array
   return swept_angle(v, a, middle) + swept_angle(v, middle, b);
 }
 
+bool folded_face(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere, int f) {
+  const auto &c = in.corners[size_t(f)];
+  return folded_image(sphere[size_t(c[0])], sphere[size_t(c[1])], sphere[size_t(c[2])]);
+}
+
 bool folded_or_flat(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere, int f) {
   const auto &c = in.corners[f];
   const Eigen::Vector3d &a = sphere[c[0]], &b = sphere[c[1]], &d = sphere[c[2]];

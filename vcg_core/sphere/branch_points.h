@@ -38,6 +38,9 @@ Branching analyse_branching(const Mesh &mesh, const std::vector<Eigen::Vector3d>
 double corner_sweep(const std::vector<Eigen::Vector3d> &sphere, const std::array<int, 3> &corners,
                     int k, const std::vector<Eigen::Vector3d> &side_midpoints, int face);
 
+// Folded: face f's image turned over (sphere_geometry.h's folded_image).
+bool folded_face(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere, int face);
+
 // Folded or flat: a face whose image is not positively oriented by a margin (1e-9 of its longest
 // chord squared): what a repair of the map must not leave behind.
 bool folded_or_flat(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere, int face);
