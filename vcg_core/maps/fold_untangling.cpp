@@ -8,6 +8,7 @@
 #include "maps/branch_star.h"
 #include "maps/floater_embedding.h"
 #include "mesh/mesh_edges.h"
+#include "sphere/branch_points.h"
 #include "sphere/sphere_geometry.h"
 
 namespace meromorph {
@@ -24,7 +25,6 @@ constexpr int largest_ring = 5;
 bool reembed(const Mesh &mesh, const FaceIncidence &incidence, const std::vector<char> &is_fixed,
              std::vector<Eigen::Vector3d> &sphere, const std::vector<int> &seeds, int rings,
              const Eigen::Vector3d &centre) {
-  const auto &corners = incidence.corners;
   const auto &faces_of = incidence.faces_of_vertex;
   const std::map<int, int> ring_of = ring_distances(incidence, seeds, rings + 1);
   auto is_free = [&](int v) {
