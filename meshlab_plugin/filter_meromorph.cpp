@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "meromorph.h"
+#include "remedy_words.h"
 
 FilterMeromorphPlugin::FilterMeromorphPlugin() {
   typeList << FP_CONFORMAL_SPHERICAL_PARAMETERIZATION;
@@ -68,7 +69,8 @@ void FilterMeromorphPlugin::initParameterSet(QAction *, MeshModel &,
   parameters.addParam(RichInt(
       "origin", -1, "Genus 1: pole vertex",
       "For a torus: the vertex where the map has its double pole (it goes to the north pole). "
-      "-1 picks the first vertex whose corners are all acute."));
+      "-1 picks a vertex where the surface is wide (not on a long thin part), trying up to four "
+      "until the map is valid."));
   parameters.addParam(RichInt(
       "poleFace", -1, "Genus 0: pole face",
       "For a sphere-like mesh: the face mapped around the north pole. -1 picks a well-shaped "
@@ -172,9 +174,14 @@ bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
   meromorph_result *result = nullptr;
   const meromorph_status status = meromorph_parameterize_f(
       positions.data(), positions.size() / 3, triangles.data(), faces.size(), &options, &result);
-  if (status != MEROMORPH_OK)
-    return fail(QString("%1 (vertex and face numbers count the mesh's live elements from 0)")
-                    .arg(meromorph_last_error()));
+  if (status != MEROMORPH_OK) {
+    std::vector<int32_t> codes(size_t(meromorph_last_error_remedies(nullptr, 0)));
+    meromorph_last_error_remedies(codes.data(), int(codes.size()));
+    return fail(with_meshlab_remedies(
+        QString("%1 (vertex and face numbers count the mesh's live elements from 0)")
+            .arg(meromorph_last_error()),
+        std::vector<int>(codes.begin(), codes.end())));
+  }
 
   const size_t vertex_count = positions.size() / 3;
   std::vector<double> uv(2 * vertex_count), corners(6 * faces.size());
@@ -198,7 +205,13 @@ bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
   const bool riemann_hurwitz = meromorph_riemann_hurwitz_ok(result) != 0;
   const bool valid = meromorph_map_valid(result) != 0;
   const std::string invalid_reasons = meromorph_invalid_reasons(result);
-  const std::string advice = meromorph_advice(result);
+  std::vector<QString> causes;
+  std::vector<int> remedies;
+  for (int i = 0; i < meromorph_advice_count(result); ++i) {
+    causes.push_back(QString::fromUtf8(meromorph_advice_cause(result, i)));
+    remedies.push_back(meromorph_advice_remedy(result, i));
+  }
+  const std::string advice = meshlab_advice_words(causes, remedies).toStdString();
   // What was closed or split for the computation, in the report's words.
   const QJsonArray notes =
       QJsonDocument::fromJson(QByteArray(meromorph_report_json(result)))["notes"].toArray();

@@ -109,6 +109,9 @@ int main(void) {
   CHECK(meromorph_map_valid(NULL) == 0 && meromorph_invalid_reasons(NULL) != NULL);
   CHECK(meromorph_advice(result) != NULL && meromorph_advice(result)[0] == '\0');
   CHECK(meromorph_advice(NULL) != NULL);
+  CHECK(meromorph_advice_count(result) == 0 && meromorph_advice_count(NULL) == 0);
+  CHECK(meromorph_advice_cause(result, 0)[0] == '\0' && meromorph_advice_remedy(result, 0) == 0);
+  CHECK(meromorph_advice_cause(NULL, -1)[0] == '\0' && meromorph_advice_remedy(NULL, 3) == 0);
   CHECK(meromorph_vertex_count(result) == V);
   CHECK(meromorph_triangle_count(result) == F);
 
@@ -178,7 +181,15 @@ int main(void) {
   CHECK(meromorph_parameterize_d(positions, V, triangles, F - 1, &options, &result) ==
         MEROMORPH_ERROR_INPUT);
   CHECK(strstr(meromorph_last_error(), "boundary loop") != NULL);
-  CHECK(strstr(meromorph_last_error(), "close") != NULL);
+  /* The remedy as a code (the caller words it), the message naming no tool or option. */
+  {
+    int32_t remedies[4] = {0, 0, 0, 0};
+    CHECK(meromorph_last_error_remedies(NULL, 0) == 1);
+    CHECK(meromorph_last_error_remedies(remedies, 4) == 1);
+    CHECK(remedies[0] == MEROMORPH_REMEDY_CLOSE_HOLES && remedies[1] == 0);
+    CHECK(strstr(meromorph_last_error(), "--") == NULL);
+    CHECK(strstr(meromorph_last_error(), "MeshLab") == NULL);
+  }
   /* The same torus with one face missing: its hole closed for the computation only. */
   options.close_holes = 1;
   CHECK(meromorph_parameterize_d(positions, V, triangles, F - 1, &options, &result) ==
@@ -219,7 +230,11 @@ int main(void) {
     meromorph_default_options(&options);
     CHECK(meromorph_parameterize_d(p, n, t, 2 * F, &options, &result) == MEROMORPH_ERROR_INPUT);
     CHECK(strstr(meromorph_last_error(), "non-manifold") != NULL);
-    CHECK(strstr(meromorph_last_error(), "split") != NULL);
+    {
+      int32_t remedy = 0;
+      CHECK(meromorph_last_error_remedies(&remedy, 1) >= 1);
+      CHECK(remedy == MEROMORPH_REMEDY_SPLIT_NONMANIFOLD);
+    }
     options.split_nonmanifold = 1;
     CHECK(meromorph_parameterize_d(p, n, t, 2 * F, &options, &result) == MEROMORPH_OK);
     CHECK(meromorph_vertex_count(result) == n && meromorph_sphere_vertex_count(result) == n + 1);

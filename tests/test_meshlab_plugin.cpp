@@ -125,6 +125,8 @@ TEST(MeshLabPlugin, HolesAreClosedForTheComputationOrRefused) {
   EXPECT_NE(log.find("Conformal Spherical Parameterization failed: the surface is open"),
             std::string::npos)
       << log;
+  // What to do, in MeshLab's words: this filter's own parameter.
+  EXPECT_NE(log.find("tick 'Close holes' in this filter's parameters"), std::string::npos) << log;
   EXPECT_FALSE(fs::exists(meshlab.path("x.ply")));
   // Close holes on (the default): mapped, every vertex keeps its texture coordinates, the log
   // says what was closed.

@@ -219,7 +219,13 @@ TEST(Parameterization, GenusOneWithLongLimbsIsMappedOrRefusedWithTheCause) {
   const nlohmann::json kept_report = nlohmann::json::parse(kept_report_stream);
   EXPECT_FALSE(kept_report["valid"].get<bool>());
   EXPECT_FALSE(kept_report["invalid"].empty());
-  EXPECT_TRUE(kept_report.contains("advice"));
+  ASSERT_TRUE(kept_report.contains("advice"));
+  // The report gives each cause with its remedy as a code; the CLI words it with what to do.
+  ASSERT_FALSE(kept_report["advice"].empty());
+  EXPECT_EQ(kept_report["advice"][0]["remedy"], "shorten_thin_parts") << kept_report["advice"];
+  EXPECT_NE(kept_report["advice"][0]["cause"].get<std::string>().find("long thin parts"),
+            std::string::npos);
+  EXPECT_NE(refused.err.find("shorten or thicken them"), std::string::npos) << refused.err;
 }
 
 TEST(Parameterization, SolidAnglesOfTinyTrianglesKeepTheirSign) {

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <new>
 #include <string>
+#include <vector>
 
 #include "common/errors.h"
 #include "maps/parameterization.h"
@@ -17,7 +18,7 @@
 struct meromorph_result {
   meromorph::Parameterization map;
   std::string report;
-  std::string invalid_reasons;
+  std::string invalid_reasons, advice;
   size_t vertices = 0, triangles = 0;
   std::vector<std::array<int, 3>> input_triangles; // the sphere's when nothing was split
 };
@@ -25,9 +26,17 @@ struct meromorph_result {
 namespace {
 
 thread_local std::string last_error;
+thread_local std::vector<int32_t> last_remedies;
 
-meromorph_status fail(meromorph_status status, const std::string &message) {
+static_assert(int(meromorph::last_remedy) == MEROMORPH_REMEDY_CHOOSE_UV_KIND,
+              "meromorph_remedy in meromorph.h lists every Remedy of common/remedy.h");
+
+meromorph_status fail(meromorph_status status, const std::string &message,
+                      const std::vector<meromorph::Remedy> &remedies = {}) {
   last_error = message;
+  last_remedies.clear();
+  for (meromorph::Remedy remedy : remedies)
+    last_remedies.push_back(int32_t(remedy));
   return status;
 }
 
@@ -67,6 +76,7 @@ meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
                               const meromorph_options *options, meromorph_result **result) {
   using namespace meromorph;
   last_error.clear();
+  last_remedies.clear();
   if (!result) return fail(MEROMORPH_ERROR_ARGUMENT, "result pointer is NULL");
   *result = nullptr;
   if (!positions && vertex_count)
@@ -135,6 +145,10 @@ meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
       report["version"] = MEROMORPH_VERSION;
       out->report = json_text(report);
       out->invalid_reasons = join_phrases(out->map.invalid);
+      std::vector<std::string> causes;
+      for (const Advice &advice : out->map.advice)
+        causes.push_back(advice.cause);
+      out->advice = join_phrases(causes);
       out->vertices = vertex_count;
       if (out->map.sphere_faces.empty()) out->input_triangles = std::move(arrays.triangles);
       out->triangles = triangle_count;
@@ -147,9 +161,9 @@ meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
   } catch (const Cancelled &) {
     return fail(MEROMORPH_ERROR_CANCELLED, "cancelled by the progress callback");
   } catch (const ArgumentError &error) {
-    return fail(MEROMORPH_ERROR_ARGUMENT, error.what());
+    return fail(MEROMORPH_ERROR_ARGUMENT, error.what(), error.remedies());
   } catch (const InputError &error) {
-    return fail(MEROMORPH_ERROR_INPUT, error.what());
+    return fail(MEROMORPH_ERROR_INPUT, error.what(), error.remedies());
   } catch (const std::bad_alloc &) {
     return fail(MEROMORPH_ERROR_INTERNAL, "out of memory");
   } catch (const std::exception &error) {
@@ -171,6 +185,12 @@ const char *meromorph_version(void) {
 }
 const char *meromorph_last_error(void) {
   return last_error.c_str();
+}
+int meromorph_last_error_remedies(int32_t *remedies, int capacity) {
+  if (remedies)
+    for (int i = 0; i < capacity && size_t(i) < last_remedies.size(); ++i)
+      remedies[i] = last_remedies[size_t(i)];
+  return int(last_remedies.size());
 }
 
 void meromorph_default_options(meromorph_options *options) {
@@ -226,7 +246,18 @@ const char *meromorph_invalid_reasons(const meromorph_result *r) {
   return r ? r->invalid_reasons.c_str() : "";
 }
 const char *meromorph_advice(const meromorph_result *r) {
-  return r ? r->map.advice.c_str() : "";
+  return r ? r->advice.c_str() : "";
+}
+int meromorph_advice_count(const meromorph_result *r) {
+  return r ? int(r->map.advice.size()) : 0;
+}
+const char *meromorph_advice_cause(const meromorph_result *r, int index) {
+  if (!r || index < 0 || size_t(index) >= r->map.advice.size()) return "";
+  return r->map.advice[size_t(index)].cause.c_str();
+}
+int meromorph_advice_remedy(const meromorph_result *r, int index) {
+  if (!r || index < 0 || size_t(index) >= r->map.advice.size()) return 0;
+  return int(r->map.advice[size_t(index)].remedy);
 }
 
 #define MEROMORPH_CHECK(result, buffer)                                                            \

@@ -10,7 +10,8 @@
  * local degrees, degree, genus, distortion figures and the JSON report of `meromorph param`.
  * Errors: meromorph_parameterize_* and the buffer getters return a status; the scalar getters
  *      return a value that marks a NULL result (-1, 0 or ""). meromorph_last_error() says what went
- *      wrong in words (with vertex / face indices).
+ *      wrong in words (with vertex / face indices), naming no tool or option;
+ *      meromorph_last_error_remedies() gives what to do as codes for the caller to word.
  * Ownership: the caller owns every buffer it passes (nothing is kept after a call returns) and
  *      frees a result with meromorph_result_free. Strings returned by a result live as long as
  *      the result.
@@ -29,7 +30,7 @@
 extern "C" {
 #endif
 
-#define MEROMORPH_ABI_VERSION 3
+#define MEROMORPH_ABI_VERSION 4
 
 #if defined(__GNUC__)
 #define MEROMORPH_API __attribute__((visibility("default")))
@@ -44,6 +45,24 @@ typedef enum meromorph_status {
   MEROMORPH_ERROR_INPUT = 3,    /* the mesh cannot be parameterized: open, non-manifold, ... */
   MEROMORPH_ERROR_CANCELLED = 4 /* the progress callback asked to stop */
 } meromorph_status;
+
+/* Remedies: what the user can do about a refusal (meromorph_last_error_remedies) or an invalid
+   map (meromorph_advice_remedy), as codes each caller words for its users (its own options and
+   menus); the library's messages name no tool, option or menu. */
+typedef enum meromorph_remedy {
+  MEROMORPH_REMEDY_REPAIR = 1,                 /* safe repairs: merge seam duplicates, drop unused
+                                                  vertices, orient the faces consistently */
+  MEROMORPH_REMEDY_CLOSE_HOLES = 2,            /* options.close_holes = 1, or close them */
+  MEROMORPH_REMEDY_SPLIT_NONMANIFOLD = 3,      /* options.split_nonmanifold = 1 */
+  MEROMORPH_REMEDY_REMOVE_ZERO_AREA_FACES = 4, /* optional: they are kept out of the computation */
+  MEROMORPH_REMEDY_REMOVE_DUPLICATE_FACES = 5, /* faces on the same three vertices */
+  MEROMORPH_REMEDY_REMESH = 6,                 /* needles and caps: remesh isotropically */
+  MEROMORPH_REMEDY_REFINE = 7,                 /* too coarse near the branch points: subdivide */
+  MEROMORPH_REMEDY_GENERIC_FORM_PAIR = 8,      /* options.form_pair = -1, -1 */
+  MEROMORPH_REMEDY_SHORTEN_THIN_PARTS = 9,     /* long thin parts: shorten, thicken, or map apart */
+  MEROMORPH_REMEDY_CHECK_UNITS = 10,           /* a stray vertex, or coordinates in other units */
+  MEROMORPH_REMEDY_CHOOSE_UV_KIND = 11         /* pack_uv needs uv_kind 0 (spherical) */
+} meromorph_remedy;
 
 /* Progress: fraction in [0, 1] and the stage in words. Return 0 to cancel, non-zero to go on. */
 typedef int (*meromorph_progress_fn)(double fraction, const char *stage, void *user);
@@ -86,6 +105,11 @@ MEROMORPH_API void meromorph_default_options(meromorph_options *options);
    none. Per thread; valid until that thread's next call of meromorph_parameterize_* (which clears
    it) or of a getter that fails. */
 MEROMORPH_API const char *meromorph_last_error(void);
+/* The remedies for the calling thread's last failed call (meromorph_remedy codes), valid as long
+   as meromorph_last_error.
+   Outputs: remedies  up to `capacity` codes (caller-owned; may be NULL when capacity is 0).
+   Returns: how many remedies there are (may exceed capacity: call again with more room). */
+MEROMORPH_API int meromorph_last_error_remedies(int32_t *remedies, int capacity);
 
 /* Maps a mesh.
    Inputs:
@@ -132,8 +156,14 @@ MEROMORPH_API int meromorph_map_valid(const meromorph_result *result);
 /* When the map is not valid: what fails, with face indices, reasons joined by "; " ("" when
    valid). */
 MEROMORPH_API const char *meromorph_invalid_reasons(const meromorph_result *result);
-/* When the map is not valid: the likely causes and what to do ("" otherwise). */
+/* When the map is not valid: the likely causes found on this mesh, with figures and places,
+   joined by "; " ("" otherwise). Each cause has a remedy: */
 MEROMORPH_API const char *meromorph_advice(const meromorph_result *result);
+/* The number of causes (0 when the map is valid or result is NULL), cause `index` alone ("" out of
+   range; lives as long as the result) and its remedy (a meromorph_remedy; 0 out of range). */
+MEROMORPH_API int meromorph_advice_count(const meromorph_result *result);
+MEROMORPH_API const char *meromorph_advice_cause(const meromorph_result *result, int index);
+MEROMORPH_API int meromorph_advice_remedy(const meromorph_result *result, int index);
 
 /* Per-vertex and per-corner arrays, copied into the caller's buffer, in the input's order.
    Inputs:  result  not NULL

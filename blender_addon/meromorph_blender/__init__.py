@@ -22,11 +22,12 @@ bl_info = {
 if "bpy" in locals():
     import importlib
     importlib.reload(library)  # noqa: F821
+    importlib.reload(remedies)  # noqa: F821
     importlib.reload(operator)  # noqa: F821
 
 import bpy
 
-from . import library, operator
+from . import library, operator, remedies  # noqa: F401
 
 
 def menu_entry(self, context):

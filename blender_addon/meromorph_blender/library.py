@@ -4,7 +4,7 @@
 # Out: a dict of numpy arrays (sphere and layered positions, per-vertex and per-corner UVs,
 #      layers, branch vertices and local degrees; the layered sphere as a mesh, with the copies of
 #      vertices that were split at non-manifold spots) and figures; MeromorphError with the
-#      library's message and status when the mesh cannot be mapped or the library cannot be
+#      library's message, status and remedy codes when the mesh cannot be mapped or the library cannot be
 #      loaded.
 import ctypes
 import json
@@ -12,7 +12,7 @@ import os
 
 import numpy as np
 
-ABI_VERSION = 3
+ABI_VERSION = 4
 STATUS_NAMES = {1: "internal failure", 2: "bad argument", 3: "cannot be mapped", 4: "cancelled"}
 
 PROGRESS = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_double, ctypes.c_char_p, ctypes.c_void_p)
@@ -47,9 +47,10 @@ class Distortion(ctypes.Structure):
 
 
 class MeromorphError(Exception):
-    def __init__(self, status, message):
+    def __init__(self, status, message, remedies=()):
         super().__init__(message)
         self.status = status
+        self.remedies = list(remedies)  # meromorph_remedy codes, worded by remedies.py
 
 
 _library = None
@@ -69,6 +70,11 @@ def load():
         lib.meromorph_report_json.restype = ctypes.c_char_p
         lib.meromorph_advice.restype = ctypes.c_char_p
         lib.meromorph_advice.argtypes = [ctypes.c_void_p]
+        lib.meromorph_advice_count.argtypes = [ctypes.c_void_p]
+        lib.meromorph_advice_cause.restype = ctypes.c_char_p
+        lib.meromorph_advice_cause.argtypes = [ctypes.c_void_p, ctypes.c_int]
+        lib.meromorph_advice_remedy.argtypes = [ctypes.c_void_p, ctypes.c_int]
+        lib.meromorph_last_error_remedies.argtypes = [ctypes.c_void_p, ctypes.c_int]
         lib.meromorph_invalid_reasons.restype = ctypes.c_char_p
         lib.meromorph_invalid_reasons.argtypes = [ctypes.c_void_p]
         lib.meromorph_parameterize_f.argtypes = [
@@ -118,7 +124,10 @@ def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
         positions.ctypes.data, positions.size // 3, triangles.ctypes.data, triangles.size // 3,
         ctypes.byref(options), ctypes.byref(result))
     if status != 0:
-        raise MeromorphError(status, lib.meromorph_last_error().decode("utf-8", "replace"))
+        remedies = np.zeros(16, dtype=np.int32)
+        count = lib.meromorph_last_error_remedies(remedies.ctypes.data, len(remedies))
+        raise MeromorphError(status, lib.meromorph_last_error().decode("utf-8", "replace"),
+                             remedies[:min(count, len(remedies))].tolist())
     try:
         n = lib.meromorph_vertex_count(result)
         t = lib.meromorph_triangle_count(result)
@@ -164,7 +173,10 @@ def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
         out["riemann_hurwitz_ok"] = bool(lib.meromorph_riemann_hurwitz_ok(result))
         out["valid"] = bool(lib.meromorph_map_valid(result))
         out["invalid_reasons"] = lib.meromorph_invalid_reasons(result).decode("utf-8", "replace")
-        out["advice"] = lib.meromorph_advice(result).decode("utf-8", "replace")
+        out["advice"] = [
+            (lib.meromorph_advice_cause(result, i).decode("utf-8", "replace"),
+             lib.meromorph_advice_remedy(result, i))
+            for i in range(lib.meromorph_advice_count(result))]
         out["report"] = json.loads(lib.meromorph_report_json(result).decode("utf-8"))
         return out
     finally:

@@ -5,7 +5,7 @@ import bpy
 import numpy as np
 from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty
 
-from . import library
+from . import library, remedies
 
 
 def mesh_arrays(mesh):
@@ -123,7 +123,7 @@ class MESH_OT_conformal_sphere_map(bpy.types.Operator):
                 pack_uv=self.pack_uv and self.uv_kind == "SPHERICAL", progress=progress)
         except library.MeromorphError as error:
             self.report({"ERROR"}, "'%s' cannot be mapped: %s (vertex numbers are Blender's)"
-                        % (obj.name, error))
+                        % (obj.name, remedies.with_remedies(str(error), error.remedies)))
             return {"CANCELLED"}
         finally:
             window_manager.progress_end()
@@ -151,7 +151,7 @@ class MESH_OT_conformal_sphere_map(bpy.types.Operator):
                                   "" if result["valid"]
                                   else "; WARNING: not a valid map on this triangulation: "
                                   + result["invalid_reasons"] + ". What to do: "
-                                  + result["advice"]))
+                                  + remedies.advice_words(result["advice"])))
         return {"FINISHED"}
 
     def make_sphere_object(self, context, obj, result):

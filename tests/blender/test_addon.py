@@ -175,6 +175,7 @@ expect_error("Select a mesh object")
 bpy.ops.mesh.primitive_grid_add()
 grid = bpy.context.active_object
 expect_error("boundary loop", close_holes=False)
+expect_error("turn on Close Holes in the operator's panel", close_holes=False)
 check(len(grid.data.uv_layers) == 1 and "Conformal Sphere" not in grid.data.uv_layers, "grid unchanged")
 check(bpy.data.objects.get(grid.name + " Layered Sphere") is None, "no sphere object for the grid")
 # With Close Holes (the default) the open grid is mapped: every face keeps its UVs.
@@ -248,6 +249,7 @@ cubes = bpy.data.objects.new("Cubes", mesh)
 bpy.context.collection.objects.link(cubes)
 activate(cubes)
 expect_error("non-manifold", split_nonmanifold=False)
+expect_error("turn on Split Non-Manifold Spots", split_nonmanifold=False)
 check(run_operator(layer_gap=0.0) == {"FINISHED"}, "two cubes sharing an edge mapped")
 cubes_sphere = bpy.data.objects["Cubes Layered Sphere"].data
 check(len(cubes_sphere.vertices) == len(mesh.vertices) + 2,

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <iostream>
 
+#include "cli/exit_codes.h"
 #include "commands.h"
 #include "common/errors.h"
 #include "forms/holomorphic_pipeline.h"

@@ -1,6 +1,8 @@
 // `meromorph info INPUT [--json] [--repair]`: what the mesh is and whether it can be mapped.
 #include <iostream>
 
+#include "cli/exit_codes.h"
+#include "cli/remedy_words.h"
 #include "commands.h"
 #include "common/errors.h"
 #include "io/mesh_reader.h"
@@ -18,6 +20,15 @@ struct InfoOptions {
   bool json = false;
   bool repair = false;
 };
+
+// A finding with the remedies the grouping's heading does not already name (what param maps as
+// it is can still be removed; what it refuses has only its remedies).
+std::string finding_words(const Finding &finding) {
+  const FindingHandling handling = finding_handling(finding);
+  if (handling == FindingHandling::as_it_is || handling == FindingHandling::refused)
+    return with_remedies(finding.message, finding.remedies);
+  return finding.message;
+}
 
 void print_text(const MeshSource &source, const Topology &topology, const Validation &validation,
                 const std::vector<std::string> &repairs) {
@@ -52,7 +63,7 @@ void print_text(const MeshSource &source, const Topology &topology, const Valida
   for (const auto &[handling, heading] : groups) {
     std::string listed;
     for (const Finding &f : validation.findings)
-      if (finding_handling(f) == handling) listed += "  - " + f.message + "\n";
+      if (finding_handling(f) == handling) listed += "  - " + finding_words(f) + "\n";
     if (!listed.empty()) std::cout << "  " << heading << "\n" << listed;
   }
 }
@@ -87,11 +98,13 @@ int run_info_catching(const InfoOptions &options) {
   try {
     return run_info(options);
   } catch (const Error &error) {
-    const nlohmann::json report = {
-        {"input", {{"path", options.input}}},
-        {"error", {{"exit_code", int(error.code())}, {"message", error.what()}}},
-        {"ok", false},
-        {"version", MEROMORPH_VERSION}};
+    const nlohmann::json report = {{"input", {{"path", options.input}}},
+                                   {"error",
+                                    {{"exit_code", int(exit_code(error.kind()))},
+                                     {"message", error.what()},
+                                     {"remedies", remedies_json(error.remedies())}}},
+                                   {"ok", false},
+                                   {"version", MEROMORPH_VERSION}};
     std::cout << json_text(report) << "\n";
     throw;
   }
@@ -139,7 +152,7 @@ int run_info(const InfoOptions &options) {
     }
     --others;
     std::cerr << "meromorph: " << options.input
-              << " cannot be parameterized as it is: " << main_finding->message
+              << " cannot be parameterized as it is: " << finding_words(*main_finding)
               << (finding_handling(*main_finding) == FindingHandling::refused
                       ? std::string()
                       : std::string(" (meromorph param maps it with ") +

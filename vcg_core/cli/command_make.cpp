@@ -1,6 +1,7 @@
 // `meromorph make sphere|torus|genus -o OUT ...`: the project's deterministic test surfaces.
 #include <iostream>
 
+#include "cli/exit_codes.h"
 #include "commands.h"
 #include "common/errors.h"
 #include "io/mesh_writer.h"

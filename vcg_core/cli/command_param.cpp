@@ -8,6 +8,8 @@
 #include <numeric>
 #include <sstream>
 
+#include "cli/exit_codes.h"
+#include "cli/remedy_words.h"
 #include "commands.h"
 #include "common/errors.h"
 #include "io/mesh_reader.h"
@@ -128,14 +130,14 @@ int run_param(const ParamOptions &options) {
     try {
       return parameterize_surface(mesh, settings, bar.progress());
     } catch (const InputError &error) { // what is wrong with the mesh: say which file
-      throw InputError(options.input + ": " + error.what());
+      throw InputError(options.input + ": " + error.what(), error.remedies());
     }
   }();
   bar.finish();
   if (!map.valid) {
     std::cerr << "meromorph: error: " << options.input
               << ": no valid map on this triangulation: " << join_phrases(map.invalid)
-              << ". What to do: " << map.advice << "\n";
+              << ". What to do: " << advice_words(map.advice) << "\n";
     if (!options.keep_invalid) {
       std::cerr << "meromorph: nothing was written (--keep-invalid writes the map anyway)\n";
       return int(ExitCode::cannot_parameterize);

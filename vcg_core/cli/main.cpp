@@ -1,13 +1,16 @@
 // meromorph: conformal maps of closed surfaces onto the sphere, from the command line.
-// Exit codes: 0 done, 1 internal failure, 2 bad arguments, 3 the input cannot be parameterized.
+// Exit codes (cli/exit_codes.h): 0 done, 1 internal failure, 2 bad arguments, 3 the input cannot
+// be parameterized, 4 an output cannot be written.
 #include <iostream>
 #include <map>
 
+#include "cli/exit_codes.h"
+#include "cli/remedy_words.h"
 #include "commands.h"
-#include "common/errors.h"
 
 int main(int argc, char **argv) {
   using namespace meromorph;
+  using cli::ExitCode;
   CLI::App app{"meromorph: conformal maps of closed surfaces of any genus onto the sphere.\n"
                "Exit codes: 0 done, 1 internal failure, 2 bad arguments, 3 the input cannot be "
                "parameterized.",
@@ -34,8 +37,8 @@ int main(int argc, char **argv) {
       if (subcommand->parsed()) return run();
     return int(ExitCode::bad_arguments);
   } catch (const Error &error) {
-    std::cerr << "meromorph: error: " << error.what() << "\n";
-    return int(error.code());
+    std::cerr << "meromorph: error: " << cli::with_remedies(error.what(), error.remedies()) << "\n";
+    return int(cli::exit_code(error.kind()));
   } catch (const std::bad_alloc &) {
     std::cerr << "meromorph: internal failure: out of memory\n";
     return int(ExitCode::internal_failure);

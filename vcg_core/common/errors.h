@@ -1,57 +1,70 @@
-// Errors the core raises, and the process exit code each one maps to.
+// Errors the core raises.
 //
-// In:  a message in the user's words (what is wrong and where: file line, vertex/edge/face
-// indices). Out: exceptions that every adapter catches at its boundary: the CLI turns them into
-// exit codes,
-//      the C ABI into error codes, MeshLab into errorMessage, Blender into an ERROR report.
+// In:  what is wrong and where (file line, vertex / edge / face indices), in words that name no
+//      tool, flag or menu, and the remedies (remedy.h) as codes.
+// Out: exceptions of five kinds that every adapter catches at its boundary and words for its
+//      users: the CLI turns the kind into an exit code (cli/exit_codes.h) and the remedies into
+//      its flags, the C ABI into a status and remedy codes, MeshLab and Blender into their menus.
 #pragma once
 
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "common/remedy.h"
+
 namespace meromorph {
 
-// Exit codes of the command-line tool (design.md section 3).
-enum class ExitCode : int {
-  done = 0,
-  internal_failure = 1,
-  bad_arguments = 2,
-  cannot_parameterize = 3,
-  cannot_write = 4,
+enum class ErrorKind {
+  internal,  // a bug: an assumption of the mathematics failed
+  arguments, // wrong use: a missing file, a bad option, an output that would overwrite the input
+  input,     // the input cannot be parameterized: a broken file, an open surface, ...
+  write,     // an output file cannot be written
+  cancelled, // the user cancelled through the progress callback
 };
 
 class Error : public std::runtime_error {
 public:
-  Error(ExitCode code, const std::string &message) : std::runtime_error(message), code_(code) {}
-  ExitCode code() const { return code_; }
+  Error(ErrorKind kind, const std::string &message, std::vector<Remedy> remedies = {})
+      : std::runtime_error(message), kind_(kind), remedies_(std::move(remedies)) {}
+  ErrorKind kind() const { return kind_; }
+  const std::vector<Remedy> &remedies() const { return remedies_; }
 
 private:
-  ExitCode code_;
+  ErrorKind kind_;
+  std::vector<Remedy> remedies_;
+};
+
+// An assumption of the mathematics failed (periods parallel, an odd number of generators).
+class InternalError : public Error {
+public:
+  explicit InternalError(const std::string &message) : Error(ErrorKind::internal, message) {}
 };
 
 // Wrong use: a missing file, an unsupported extension, an output that would overwrite the input.
 class ArgumentError : public Error {
 public:
-  explicit ArgumentError(const std::string &message) : Error(ExitCode::bad_arguments, message) {}
+  explicit ArgumentError(const std::string &message, std::vector<Remedy> remedies = {})
+      : Error(ErrorKind::arguments, message, std::move(remedies)) {}
 };
 
 // The input cannot be parameterized: a broken file, an open or non-manifold surface, ...
 class InputError : public Error {
 public:
-  explicit InputError(const std::string &message) : Error(ExitCode::cannot_parameterize, message) {}
+  explicit InputError(const std::string &message, std::vector<Remedy> remedies = {})
+      : Error(ErrorKind::input, message, std::move(remedies)) {}
 };
 
 // An output file cannot be written (no such folder, no permission, disk full): the system's reason.
 class WriteError : public Error {
 public:
-  explicit WriteError(const std::string &message) : Error(ExitCode::cannot_write, message) {}
+  explicit WriteError(const std::string &message) : Error(ErrorKind::write, message) {}
 };
 
 // The user cancelled through the progress callback.
 class Cancelled : public Error {
 public:
-  Cancelled() : Error(ExitCode::internal_failure, "cancelled by the user") {}
+  Cancelled() : Error(ErrorKind::cancelled, "cancelled by the user") {}
 };
 
 // "vertices 3, 8, 12 and 40 more": at most `shown` indices, then how many were left out.

@@ -143,7 +143,7 @@ void measure_non_holomorphicity(const Mesh &faces, const FaceGeometry &geometry,
 HolomorphicForms compute_holomorphic_forms(const Mesh &input, SolverKind solver,
                                            const Progress &progress, const Validation *validated) {
   const Validation validation = validated ? *validated : validate_mesh(input);
-  if (!validation.ok()) throw InputError(validation.main_finding().message);
+  if (!validation.ok()) throw refusal(validation.main_finding());
   // Computed at unit scale (unit_scale.h): the forms' values on edges do not depend on it.
   Mesh unit;
   const bool copy = !is_at_unit_scale(input);

@@ -97,7 +97,7 @@ HomologyBasis tree_cotree(int vertex_count, const MeshEdges &edges) {
   for (int e = 0; e < edge_count; ++e)
     if (!in_vertex_tree[e] && !in_face_tree[e]) basis.generator_edges.push_back(e);
   if (basis.generator_edges.size() % 2 != 0)
-    throw Error(ExitCode::internal_failure, "tree-cotree found an odd number of generators");
+    throw InternalError("tree-cotree found an odd number of generators");
   basis.genus = int(basis.generator_edges.size()) / 2;
 
   for (int generator : basis.generator_edges) {

@@ -31,8 +31,8 @@ Eigen::MatrixXi wedge_matrix(const std::vector<Eigen::VectorXd> &closed_forms,
     }
   if (largest_rounding) *largest_rounding = worst;
   if (worst > 1e-3)
-    throw Error(ExitCode::internal_failure,
-                "the intersection numbers are not integers (off by " + std::to_string(worst) + ")");
+    throw InternalError("the intersection numbers are not integers (off by " +
+                        std::to_string(worst) + ")");
   return wedge;
 }
 
@@ -49,8 +49,7 @@ Eigen::MatrixXi symplectic_basis(const Eigen::MatrixXi &wedge) {
     for (ui = 0; ui < remaining.size() && !found; ++ui)
       for (vi = ui + 1; vi < remaining.size() && !found; ++vi)
         found = std::abs(form(remaining[ui], remaining[vi])) == 1;
-    if (!found)
-      throw Error(ExitCode::internal_failure, "no symplectic pair in the intersection form");
+    if (!found) throw InternalError("no symplectic pair in the intersection form");
     --ui;
     --vi;
     Eigen::VectorXi u = remaining[ui], v = remaining[vi];

@@ -37,36 +37,34 @@ std::vector<std::string> invalid_reasons(const ParameterizeOptions &options,
   return reasons;
 }
 
-std::string invalid_map_advice(const Mesh &input, const Mesh &mesh,
-                               const ParameterizeOptions &options, const Parameterization &map) {
-  std::vector<std::string> causes;
+std::vector<Advice> invalid_map_advice(const Mesh &input, const Mesh &mesh,
+                                       const ParameterizeOptions &options,
+                                       const Parameterization &map) {
+  std::vector<Advice> advice;
   const std::vector<int> &collapsed = map.quality.collapsed_face_indices;
   if (!collapsed.empty()) {
     const Point3 &at = input.face[size_t(collapsed.front())].cP(0);
     std::ostringstream where;
     where << " (faces " << list_indices(collapsed) << "; the first at " << at[0] << ", " << at[1]
           << ", " << at[2] << ")";
-    causes.push_back(plural(collapsed.size(), "face maps", "faces map") +
-                     " to spots smaller than double precision resolves" + where.str() +
-                     ": long thin parts shrink exponentially under a conformal map (shorten or "
-                     "thicken them, or map them separately)");
+    advice.push_back({plural(collapsed.size(), "face maps", "faces map") +
+                          " to spots smaller than double precision resolves" + where.str() +
+                          ": long thin parts shrink exponentially under a conformal map",
+                      Remedy::shorten_thin_parts});
   }
   int needles = 0;
   for (const MeshFace &face : mesh.face)
     needles += smallest_angle(face) < M_PI / 180;
   if (needles > 0)
-    causes.push_back(plural(size_t(needles), "face has", "faces have") +
-                     " an angle below 1 degree: remesh the surface (MeshLab: Filters > "
-                     "Remeshing, Simplification and Reconstruction > Remeshing: Isotropic Explicit "
-                     "Remeshing; Blender: Remesh modifier) and run again");
+    advice.push_back(
+        {plural(size_t(needles), "face has", "faces have") + " an angle below 1 degree",
+         Remedy::remesh});
   if (map.genus >= 2 && options.form_pair[0] >= 0)
-    causes.push_back("the chosen form pair may be nearly 0 / 0 on parts of this surface: use the "
-                     "default generic pair (--forms -1,-1)");
-  if (causes.empty())
-    causes.push_back("the mesh may be too coarse near the branch points: refine it (MeshLab: "
-                     "Filters > Remeshing, Simplification and Reconstruction > Subdivision "
-                     "Surfaces: Midpoint; Blender: Subdivide) and run again");
-  return join_phrases(causes);
+    advice.push_back({"the chosen form pair may be nearly 0 / 0 on parts of this surface",
+                      Remedy::generic_form_pair});
+  if (advice.empty())
+    advice.push_back({"the mesh may be too coarse near the branch points", Remedy::refine});
+  return advice;
 }
 
 } // namespace meromorph

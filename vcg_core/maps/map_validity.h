@@ -6,7 +6,8 @@
 // Out: `invalid_reasons`: what keeps the map from being valid (the expected degree 1, 2 or
 //      2g - 2, or less with a chosen form pair; Riemann-Hurwitz; faces turned over, with their
 //      indices; faces shrunk below double precision said first when they are the cause); empty
-//      when it is valid. `invalid_map_advice`: what to do, from what this mesh and map show.
+//      when it is valid. `invalid_map_advice`: the likely causes this mesh and map show, each with
+//      its remedy (common/remedy.h).
 #pragma once
 
 #include <string>
@@ -20,7 +21,8 @@ namespace meromorph {
 std::vector<std::string> invalid_reasons(const ParameterizeOptions &options,
                                          const Parameterization &map);
 
-std::string invalid_map_advice(const Mesh &input, const Mesh &mesh,
-                               const ParameterizeOptions &options, const Parameterization &map);
+std::vector<Advice> invalid_map_advice(const Mesh &input, const Mesh &mesh,
+                                       const ParameterizeOptions &options,
+                                       const Parameterization &map);
 
 } // namespace meromorph

@@ -71,7 +71,7 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
   Mesh mesh;
   copy_at_unit_scale(input, unit_scale_of(input), mesh);
   const Validation validation = validated ? *validated : validate_mesh(mesh);
-  if (!validation.ok()) throw InputError(validation.main_finding().message);
+  if (!validation.ok()) throw refusal(validation.main_finding());
 
   Parameterization out;
   StageClock clock(out.timings_ms);

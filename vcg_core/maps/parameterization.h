@@ -20,6 +20,7 @@
 #include <Eigen/Core>
 
 #include "common/progress.h"
+#include "common/remedy.h"
 #include "forms/laplacian_solver.h"
 #include "maps/form_pairs.h"
 #include "mesh/mesh.h"
@@ -109,9 +110,9 @@ struct Parameterization {
   // over. `invalid` says what fails, with face indices.
   bool valid = false;
   std::vector<std::string> invalid;
-  // When the map is not valid: the likely causes found on this mesh and what to do, in the words
-  // of a MeshLab or Blender user; empty otherwise.
-  std::string advice;
+  // When the map is not valid: the likely causes found on this mesh, each with its remedy (worded
+  // by each adapter); empty otherwise.
+  std::vector<Advice> advice;
   std::vector<std::string> notes; // harmless oddities of the mesh (coincident vertices, ...)
   // parameterize_surface, when the mesh had several parts or holes were closed: each part's own
   // map (figures only: its per-vertex arrays are in the ones above, in the input's numbering; its

@@ -72,8 +72,7 @@ void place_part(const SurfaceParts &split, size_t p, Parameterization &map, Para
 
 // The part's figures into the whole's: summed, or all of them must hold.
 void add_part_figures(const std::string &name, size_t p, const Parameterization &map,
-                      Parameterization &out, std::vector<std::string> &advice,
-                      std::map<std::string, double> &timings) {
+                      Parameterization &out, std::map<std::string, double> &timings) {
   out.genus += map.genus;
   out.euler = p == 0 ? map.euler : out.euler + map.euler;
   out.degree += map.degree;
@@ -83,7 +82,8 @@ void add_part_figures(const std::string &name, size_t p, const Parameterization 
   out.valid = out.valid && map.valid;
   for (const std::string &reason : map.invalid)
     out.invalid.push_back(name + ": " + reason);
-  if (!map.advice.empty()) advice.push_back(name + ": " + map.advice);
+  for (const Advice &advice : map.advice)
+    out.advice.push_back({name + ": " + advice.cause, advice.remedy});
   out.sheets.count = std::max(out.sheets.count, map.sheets.count);
   out.sheets.cut_faces += map.sheets.cut_faces;
   out.snapped_branch_points += map.snapped_branch_points;
@@ -174,7 +174,6 @@ Parameterization parameterize_parts(const Mesh &mesh, const Validation &validati
   out.riemann_hurwitz_ok = out.valid = true;
   out.mobius_applied = options.mobius;
   std::map<std::string, double> timings;
-  std::vector<std::string> advice;
   int highest_layer = 0;
 
   for (size_t p = 0; p < part_count; ++p) {
@@ -191,7 +190,7 @@ Parameterization parameterize_parts(const Mesh &mesh, const Validation &validati
       }
     }();
     place_part(split, p, map, out, highest_layer);
-    add_part_figures(name, p, map, out, advice, timings);
+    add_part_figures(name, p, map, out, timings);
     // The part's figures stay; its per-vertex arrays were copied above.
     map.sphere.clear();
     map.layered.clear();
@@ -204,7 +203,6 @@ Parameterization parameterize_parts(const Mesh &mesh, const Validation &validati
   finish_parts(split, options, highest_layer, out);
   for (const auto &[stage, ms] : timings)
     out.timings_ms.push_back({stage, ms});
-  out.advice = join_phrases(advice);
 
   // Distortion on the mesh's faces, as written (at unit scale: angles do not depend on it).
   Mesh unit;

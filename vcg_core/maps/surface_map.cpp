@@ -36,28 +36,23 @@ const Finding *finding_left(const Validation &validation, bool close_holes) {
   return left;
 }
 
-// What param cannot take, as the refusal says it: the finding with the option that would take it,
-// and which of the vertices named are copies the split made (it numbers them after the input's).
+// What param cannot take, as the refusal says it: the finding (with its remedies: the option
+// that would take it), and which of the vertices named are copies the split made (it numbers them
+// after the input's).
 [[noreturn]] void refuse(const Finding &left, bool nonmanifold, bool split, const Mesh &input,
                          const NonmanifoldSplit &split_spots) {
-  std::string message = left.message;
-  if (left.kind == FindingKind::boundary_loops)
-    message += std::string(nonmanifold ? " (some where non-manifold edges were taken apart)" : "") +
-               "; or let meromorph close them for the computation only (--close-holes; MeshLab "
-               "and Blender: Close Holes)";
-  if (left.kind == FindingKind::non_manifold_edges ||
-      left.kind == FindingKind::non_manifold_vertices)
-    message += "; or let meromorph take them apart for the computation (--split-nonmanifold; "
-               "MeshLab and Blender: Split Non-Manifold Spots)";
+  std::string more;
+  if (left.kind == FindingKind::boundary_loops && nonmanifold)
+    more += " (some where non-manifold edges were taken apart)";
   std::string copies;
   for (int v : left.vertices)
     if (split && size_t(v) >= input.vert.size())
       copies += (copies.empty() ? "" : ", ") + std::to_string(v) + " is a copy of " +
                 std::to_string(split_spots.source_vertex[size_t(v)]);
   if (!copies.empty())
-    message += " (vertices from " + std::to_string(input.vert.size()) +
-               " on are copies made where non-manifold spots were split: " + copies + ")";
-  throw InputError(message);
+    more += " (vertices from " + std::to_string(input.vert.size()) +
+            " on are copies made where non-manifold spots were split: " + copies + ")";
+  throw refusal(left, more);
 }
 
 // The map of the split mesh said in the input's terms: what was split, the sphere's faces and
@@ -102,8 +97,9 @@ FindingHandling finding_handling(const Finding &finding) {
 Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptions &options,
                                       const Progress &progress) {
   if (options.pack_uv && options.uv != UvKind::spherical)
-    throw ArgumentError("--pack-uv packs spherical texture coordinates (each part's in the unit "
-                        "square); stereographic ones are unbounded");
+    throw ArgumentError("packing the parts' texture coordinates (each part's in its own cell of "
+                        "the unit square) needs spherical ones; stereographic ones are unbounded",
+                        {Remedy::choose_uv_kind});
   Validation validation = validate_mesh(input);
   const std::vector<std::string> input_notes = validation.notes;
   // Non-manifold spots taken apart first: what is left is judged on the split mesh.
@@ -127,9 +123,8 @@ Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptio
     flat_fix = take_out_zero_area_faces(whole, flat_free);
     validation = validate_mesh(flat_free);
     if (const Finding *left = finding_left(validation, options.close_holes))
-      throw InputError(left->message + " (after zero-area faces were taken out)");
-    if (const Finding *still = validation.find(FindingKind::zero_area_faces))
-      throw InputError(still->message);
+      throw refusal(*left, " (after zero-area faces were taken out)");
+    if (const Finding *still = validation.find(FindingKind::zero_area_faces)) throw refusal(*still);
   }
   const Mesh &mesh = flat ? flat_free : whole;
   // The split copies sit on their originals by construction: of the notes, only the input's own.

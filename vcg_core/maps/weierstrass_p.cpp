@@ -46,7 +46,7 @@ Thetas thetas(Complex v, Complex tau) {
 
 WeierstrassP::WeierstrassP(Complex w1, Complex w2) {
   if (std::abs((w2 / w1).imag()) < 1e-12)
-    throw Error(ExitCode::internal_failure, "the periods of the holomorphic form are parallel");
+    throw InternalError("the periods of the holomorphic form are parallel");
   // Gauss reduction of the basis.
   for (int step = 0; step < 200; ++step) {
     if (std::abs(w2) < std::abs(w1)) std::swap(w1, w2);

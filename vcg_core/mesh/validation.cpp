@@ -153,6 +153,7 @@ void check_faces(const Mesh &mesh, Validation &out) {
                    "beside the rest (a stray vertex far away, or coordinates in wildly "
                    "different units?): faces " +
                    list_indices(tiny.faces);
+    tiny.remedies = {Remedy::check_units};
     out.findings.push_back(tiny);
   }
   if (!repeated.faces.empty()) {
@@ -164,10 +165,8 @@ void check_faces(const Mesh &mesh, Validation &out) {
   if (!flat.faces.empty()) {
     flat.message = plural(flat.faces.size(), "face has", "faces have") +
                    " zero area (corners on a line or at one point): faces " +
-                   list_indices(flat.faces) +
-                   "; meromorph param takes them out of the computation and keeps them in its "
-                   "outputs (to remove them: Blender: Mesh > Clean Up > Degenerate Dissolve; "
-                   "MeshLab: Filters > Cleaning and Repairing > Remove Zero Area Faces)";
+                   list_indices(flat.faces);
+    flat.remedies = {Remedy::remove_zero_area_faces};
     out.findings.push_back(flat);
   }
 
@@ -197,9 +196,8 @@ void check_faces(const Mesh &mesh, Validation &out) {
     if (doubled.edges.size() > 10)
       pairs += " and " + std::to_string(doubled.edges.size() - 10) + " more";
     doubled.message = plural(doubled.faces.size(), "face uses", "faces use") +
-                      " the same three vertices as another face (doubled faces): faces " + pairs +
-                      "; remove the doubles (MeshLab: Filters > Cleaning and Repairing > Remove "
-                      "Duplicate Faces; Blender: Mesh > Clean Up > Merge by Distance)";
+                      " the same three vertices as another face (doubled faces): faces " + pairs;
+    doubled.remedies = {Remedy::remove_duplicate_faces};
     doubled.edges.clear();
     out.findings.push_back(doubled);
   }
@@ -251,8 +249,9 @@ void check_vertices(const Mesh &mesh, Validation &out) {
     duplicates.message =
         plural(duplicates.vertices.size(), "vertex sits", "vertices sit") +
         " exactly on another vertex along the edge of a hole (duplicate vertices on a "
-        "seam; --repair merges them): " +
+        "seam, which repair merges): " +
         pairs;
+    duplicates.remedies = {Remedy::repair};
     out.findings.push_back(duplicates);
   }
 
@@ -267,6 +266,7 @@ void check_vertices(const Mesh &mesh, Validation &out) {
     unused.message = plural(unused.vertices.size(), "vertex belongs", "vertices belong") +
                      " to no face (unreferenced vertices): vertices " +
                      list_indices(unused.vertices);
+    unused.remedies = {Remedy::repair};
     out.findings.push_back(unused);
   }
 }
@@ -303,6 +303,7 @@ bool check_manifold_edges(Mesh &work, Validation &out) {
                            " shared by more than two faces (non-manifold edges) between "
                            "vertices " +
                            where;
+    non_manifold.remedies = {Remedy::split_nonmanifold};
     out.findings.push_back(non_manifold);
   }
   return !non_manifold.edges.empty();
@@ -319,6 +320,7 @@ void check_manifold_vertices(Mesh &work, Validation &out) {
                       " parts of the surface that touch only at that vertex (non-manifold "
                       "vertices): vertices " +
                       list_indices(pinched.vertices);
+    pinched.remedies = {Remedy::split_nonmanifold};
     out.findings.push_back(pinched);
   }
 }
@@ -334,10 +336,8 @@ void check_boundary_loops(Mesh &work, Validation &out) {
     open.message = "the surface is open: it has " +
                    plural(open.sizes.size(), "boundary loop (hole)", "boundary loops (holes)") +
                    " of " + list_sizes(open.sizes) + " edges, through vertices " +
-                   list_indices(open.vertices) +
-                   "; close them first (MeshLab: Filters > Remeshing, Simplification and "
-                   "Reconstruction > Close Holes; Blender: Edit Mode > Select > All by Trait > "
-                   "Non Manifold, then Face > Fill)";
+                   list_indices(open.vertices);
+    open.remedies = {Remedy::close_holes};
     out.findings.push_back(open);
   }
 }
@@ -354,9 +354,7 @@ void check_components(Mesh &work, Validation &out) {
     }
     several.message = "the mesh has " + std::to_string(components.size()) +
                       " separate parts (connected components) of " + list_sizes(several.sizes) +
-                      " faces; one connected surface is needed (MeshLab: Filters > Cleaning and "
-                      "Repairing > Remove Isolated pieces; Blender: Edit Mode > Mesh > Separate > "
-                      "By Loose Parts)";
+                      " faces";
     out.findings.push_back(several);
   }
 }
@@ -382,6 +380,7 @@ void check_orientation(Mesh &work, Validation &out) {
                         " its two faces pointing opposite ways (inconsistent orientation): "
                         "edges " +
                         list_edges(flipped.edges);
+      flipped.remedies = {Remedy::repair};
       out.findings.push_back(flipped);
     } else {
       Finding klein(FindingKind::non_orientable);
@@ -426,13 +425,8 @@ Validation validate_mesh(const Mesh &mesh) {
   return out;
 }
 
-std::string describe_findings(const Validation &validation) {
-  std::string text;
-  for (const Finding &f : validation.findings)
-    text += "  - " + f.message + "\n";
-  if (!validation.ok() && validation.all_repairable())
-    text += "  All of these can be repaired safely: run again with --repair.\n";
-  return text;
+InputError refusal(const Finding &finding, const std::string &more) {
+  return InputError(finding.message + more, finding.remedies);
 }
 
 } // namespace meromorph

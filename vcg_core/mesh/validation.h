@@ -3,15 +3,18 @@
 //
 // In:  a mesh as read (vertex and face indices are the file's own, 0-based).
 // Out: `Validation`, a list of findings. Each finding has a machine name (`finding_code`), a
-//      sentence for a MeshLab or Blender user, the complete lists of vertices / edges (as vertex
-//      pairs) / faces where it occurs, and whether `repair_mesh` can fix it. An empty list means
-//      the mesh can be parameterized. The mesh itself is not changed.
+//      sentence saying what and where (naming no tool), the complete lists of vertices / edges
+//      (as vertex pairs) / faces where it occurs, whether `repair_mesh` can fix it, and its
+//      remedies as codes (common/remedy.h) for each adapter to word. An empty list means the
+//      mesh can be parameterized. The mesh itself is not changed. `refusal` makes the InputError
+//      that tells a finding.
 #pragma once
 
 #include <array>
 #include <string>
 #include <vector>
 
+#include "common/errors.h"
 #include "mesh/mesh.h"
 
 namespace meromorph {
@@ -47,6 +50,7 @@ struct Finding {
   std::vector<std::array<int, 2>> edges;
   std::vector<int> faces;
   std::vector<int> sizes; // boundary loop lengths in edges, or component sizes in faces
+  std::vector<Remedy> remedies;
 };
 
 struct Validation {
@@ -78,7 +82,7 @@ bool has_zero_area(const Point3 &p0, const Point3 &p1, const Point3 &p2);
 
 Validation validate_mesh(const Mesh &mesh);
 
-// One paragraph for the user: every finding, and what to do about it.
-std::string describe_findings(const Validation &validation);
+// The error that refuses the mesh for this finding: its message (and `more`), its remedies.
+InputError refusal(const Finding &finding, const std::string &more = "");
 
 } // namespace meromorph

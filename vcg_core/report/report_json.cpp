@@ -20,6 +20,13 @@ nlohmann::json topology_json(const Topology &topology) {
   };
 }
 
+nlohmann::json remedies_json(const std::vector<Remedy> &remedies) {
+  nlohmann::json codes = nlohmann::json::array();
+  for (Remedy remedy : remedies)
+    codes.push_back(remedy_code(remedy));
+  return codes;
+}
+
 nlohmann::json findings_json(const Validation &validation) {
   nlohmann::json findings = nlohmann::json::array();
   for (const Finding &f : validation.findings) {
@@ -29,6 +36,7 @@ nlohmann::json findings_json(const Validation &validation) {
     findings.push_back({{"code", finding_code(f.kind)},
                         {"message", f.message},
                         {"repairable", f.repairable},
+                        {"remedies", remedies_json(f.remedies)},
                         {"vertices", f.vertices},
                         {"edges", edges},
                         {"faces", f.faces},
@@ -160,7 +168,12 @@ nlohmann::json parameterization_json(const Parameterization &map) {
   }
   report["valid"] = map.valid;
   report["invalid"] = map.invalid;
-  if (!map.advice.empty()) report["advice"] = map.advice;
+  if (!map.advice.empty()) {
+    nlohmann::json advice = nlohmann::json::array();
+    for (const Advice &a : map.advice)
+      advice.push_back({{"cause", a.cause}, {"remedy", remedy_code(a.remedy)}});
+    report["advice"] = advice;
+  }
   report["notes"] = map.notes;
   if (!map.components.empty()) add_parts_json(map, report);
   if (!map.sphere_source_vertex.empty()) {

@@ -18,6 +18,8 @@
 namespace meromorph {
 
 nlohmann::json topology_json(const Topology &topology);
+// ["close_holes", ...]: remedy codes (common/remedy.h) by name.
+nlohmann::json remedies_json(const std::vector<Remedy> &remedies);
 nlohmann::json findings_json(const Validation &validation);
 nlohmann::json source_json(const MeshSource &source);
 
