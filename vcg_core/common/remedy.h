@@ -37,7 +37,4 @@ struct Advice {
 // "close_holes", ...: the name in JSON reports.
 const char *remedy_code(Remedy remedy);
 
-// Each remedy once, in the order first given.
-void add_remedy(std::vector<Remedy> &remedies, Remedy remedy);
-
 } // namespace meromorph
