@@ -125,36 +125,36 @@ int report_progress(double fraction, const char *stage, void *user) {
   return !bridge->callback || bridge->callback(int(100 * fraction), stage) ? 1 : 0;
 }
 
-} // namespace
-
-bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
-                                        const RichParameterList &parameters,
-                                        vcg::CallBackPos *callback) {
-  MeshModel *model = document.mm();
-  if (!model) return fail("there is no current mesh");
-  CMeshO &mesh = model->cm;
-  QElapsedTimer timer;
-  timer.start();
-
-  // MeshLab's mesh may hold deleted elements: number the live ones densely.
-  std::vector<int> dense(mesh.vert.size(), -1);
+// MeshLab's mesh may hold deleted elements: the live ones, numbered densely.
+struct LiveMesh {
+  std::vector<int> dense; // per vertex of the mesh: its live number, -1 when deleted
+  std::vector<int> live_of_dense;
   std::vector<float> positions;
-  for (size_t v = 0; v < mesh.vert.size(); ++v) {
-    if (mesh.vert[v].IsD()) continue;
-    dense[v] = int(positions.size() / 3);
-    for (int k = 0; k < 3; ++k)
-      positions.push_back(float(mesh.vert[v].P()[k]));
-  }
   std::vector<int32_t> triangles;
   std::vector<CFaceO *> faces;
+  size_t vertex_count() const { return positions.size() / 3; }
+};
+
+LiveMesh live_mesh(CMeshO &mesh) {
+  LiveMesh live;
+  live.dense.assign(mesh.vert.size(), -1);
+  for (size_t v = 0; v < mesh.vert.size(); ++v) {
+    if (mesh.vert[v].IsD()) continue;
+    live.dense[v] = int(live.live_of_dense.size());
+    live.live_of_dense.push_back(int(v));
+    for (int k = 0; k < 3; ++k)
+      live.positions.push_back(float(mesh.vert[v].P()[k]));
+  }
   for (CFaceO &face : mesh.face) {
     if (face.IsD()) continue;
     for (int k = 0; k < 3; ++k)
-      triangles.push_back(dense[vcg::tri::Index(mesh, face.V(k))]);
-    faces.push_back(&face);
+      live.triangles.push_back(live.dense[vcg::tri::Index(mesh, face.V(k))]);
+    live.faces.push_back(&face);
   }
-  if (faces.size() < 4) return fail("the mesh has fewer than 4 faces: no closed surface");
+  return live;
+}
 
+meromorph_options filter_options(const RichParameterList &parameters, ProgressBridge &bridge) {
   meromorph_options options;
   meromorph_default_options(&options);
   options.uv_kind = parameters.getEnum("uvKind");
@@ -167,13 +167,129 @@ bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
   options.close_holes = parameters.getBool("closeHoles") ? 1 : 0;
   options.split_nonmanifold = parameters.getBool("splitNonManifold") ? 1 : 0;
   options.pack_uv = parameters.getBool("packUv") && options.uv_kind == 0 ? 1 : 0;
-  ProgressBridge bridge{callback};
   options.progress = report_progress;
   options.progress_user = &bridge;
+  return options;
+}
+
+// Everything the filter uses from a result, read through the C ABI.
+struct FetchedMap {
+  std::vector<double> uv, corners, layered;
+  std::vector<int32_t> layers, sphere_triangles, sphere_layers, branch_vertices, branch_degrees;
+  meromorph_distortion distortion;
+  int genus = 0, degree = 0;
+  bool riemann_hurwitz = false, valid = false;
+  std::string invalid_reasons, advice;
+  QJsonArray notes; // what was closed or split for the computation, in the report's words
+};
+
+FetchedMap fetch_map(const meromorph_result *result, size_t vertex_count, size_t face_count) {
+  FetchedMap map;
+  map.uv.resize(2 * vertex_count);
+  map.corners.resize(6 * face_count);
+  map.layers.resize(vertex_count);
+  meromorph_vertex_uvs(result, map.uv.data());
+  meromorph_corner_uvs(result, map.corners.data());
+  meromorph_layers(result, map.layers.data());
+  // The layered sphere as a mesh (with copies of vertices split at non-manifold spots).
+  const size_t sphere_vertex_count = meromorph_sphere_vertex_count(result);
+  map.layered.resize(3 * sphere_vertex_count);
+  map.sphere_triangles.resize(3 * face_count);
+  map.sphere_layers.resize(sphere_vertex_count);
+  meromorph_sphere_mesh(result, map.layered.data(), map.sphere_triangles.data(), nullptr,
+                        map.sphere_layers.data(), nullptr, nullptr);
+  map.branch_vertices.resize(meromorph_branch_point_count(result));
+  map.branch_degrees.resize(map.branch_vertices.size());
+  if (!map.branch_vertices.empty())
+    meromorph_branch_points(result, map.branch_vertices.data(), map.branch_degrees.data());
+  meromorph_get_distortion(result, &map.distortion);
+  map.genus = meromorph_genus(result);
+  map.degree = meromorph_degree(result);
+  map.riemann_hurwitz = meromorph_riemann_hurwitz_ok(result) != 0;
+  map.valid = meromorph_map_valid(result) != 0;
+  map.invalid_reasons = meromorph_invalid_reasons(result);
+  std::vector<QString> causes;
+  std::vector<int> remedies;
+  for (int i = 0; i < meromorph_advice_count(result); ++i) {
+    causes.push_back(QString::fromUtf8(meromorph_advice_cause(result, i)));
+    remedies.push_back(meromorph_advice_remedy(result, i));
+  }
+  map.advice = meshlab_advice_words(causes, remedies).toStdString();
+  map.notes = QJsonDocument::fromJson(QByteArray(meromorph_report_json(result)))["notes"].toArray();
+  return map;
+}
+
+// Texture coordinates per vertex (and per wedge), the layer as quality, branch vertices selected.
+void write_texture(CMeshO &mesh, const LiveMesh &live, const FetchedMap &map, bool wedges) {
+  vcg::tri::UpdateSelection<CMeshO>::VertexClear(mesh);
+  for (size_t v = 0; v < mesh.vert.size(); ++v) {
+    const int d = live.dense[v];
+    if (d < 0) continue;
+    mesh.vert[v].T().U() = float(map.uv[2 * d]);
+    mesh.vert[v].T().V() = float(map.uv[2 * d + 1]);
+    mesh.vert[v].T().N() = 0;
+    mesh.vert[v].Q() = float(map.layers[d]);
+  }
+  for (int32_t b : map.branch_vertices)
+    mesh.vert[live.live_of_dense[b]].SetS();
+  if (wedges)
+    for (size_t f = 0; f < live.faces.size(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        live.faces[f]->WT(k).U() = float(map.corners[6 * f + 2 * k]);
+        live.faces[f]->WT(k).V() = float(map.corners[6 * f + 2 * k + 1]);
+        live.faces[f]->WT(k).N() = 0;
+      }
+}
+
+// A new layer: the same faces on the layered sphere, each vertex's layer as its quality.
+void add_sphere_layer(MeshDocument &document, const QString &label, const FetchedMap &map) {
+  MeshModel *sphere = document.addNewMesh("", label + " layered sphere", false);
+  CMeshO &on_sphere = sphere->cm;
+  const size_t vertex_count = map.sphere_layers.size(),
+               face_count = map.sphere_triangles.size() / 3;
+  auto vertex = vcg::tri::Allocator<CMeshO>::AddVertices(on_sphere, vertex_count);
+  auto face = vcg::tri::Allocator<CMeshO>::AddFaces(on_sphere, face_count);
+  sphere->updateDataMask(MeshModel::MM_VERTQUALITY);
+  for (size_t v = 0; v < vertex_count; ++v, ++vertex) {
+    vertex->P() = Point3m(map.layered[3 * v], map.layered[3 * v + 1], map.layered[3 * v + 2]);
+    vertex->Q() = float(map.sphere_layers[v]);
+  }
+  for (size_t f = 0; f < face_count; ++f, ++face)
+    for (int k = 0; k < 3; ++k)
+      face->V(k) = &on_sphere.vert[size_t(map.sphere_triangles[3 * f + k])];
+  vcg::tri::UpdateBounding<CMeshO>::Box(sphere->cm);
+  vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFaceNormalized(sphere->cm);
+}
+
+QString branch_list(const FetchedMap &map) {
+  QString list;
+  for (size_t i = 0; i < map.branch_vertices.size(); ++i)
+    list += QString("%1%2 (e=%3)")
+                .arg(i ? ", " : "")
+                .arg(map.branch_vertices[i])
+                .arg(map.branch_degrees[i]);
+  return list;
+}
+
+} // namespace
+
+bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
+                                        const RichParameterList &parameters,
+                                        vcg::CallBackPos *callback) {
+  MeshModel *model = document.mm();
+  if (!model) return fail("there is no current mesh");
+  CMeshO &mesh = model->cm;
+  QElapsedTimer timer;
+  timer.start();
+  const LiveMesh live = live_mesh(mesh);
+  if (live.faces.size() < 4) return fail("the mesh has fewer than 4 faces: no closed surface");
+  ProgressBridge bridge{callback};
+  const meromorph_options options = filter_options(parameters, bridge);
 
   meromorph_result *result = nullptr;
-  const meromorph_status status = meromorph_parameterize_f(
-      positions.data(), positions.size() / 3, triangles.data(), faces.size(), &options, &result);
+  const meromorph_status status =
+      meromorph_parameterize_f(live.positions.data(), live.vertex_count(), live.triangles.data(),
+                               live.faces.size(), &options, &result);
   if (status != MEROMORPH_OK) {
     std::vector<int32_t> codes(size_t(meromorph_last_error_remedies(nullptr, 0)));
     meromorph_last_error_remedies(codes.data(), int(codes.size()));
@@ -182,100 +298,30 @@ bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
             .arg(meromorph_last_error()),
         std::vector<int>(codes.begin(), codes.end())));
   }
-
-  const size_t vertex_count = positions.size() / 3;
-  std::vector<double> uv(2 * vertex_count), corners(6 * faces.size());
-  std::vector<int32_t> layers(vertex_count);
-  meromorph_vertex_uvs(result, uv.data());
-  meromorph_corner_uvs(result, corners.data());
-  meromorph_layers(result, layers.data());
-  // The layered sphere as a mesh (with copies of vertices split at non-manifold spots).
-  const size_t sphere_vertex_count = meromorph_sphere_vertex_count(result);
-  std::vector<double> layered(3 * sphere_vertex_count);
-  std::vector<int32_t> sphere_triangles(3 * faces.size()), sphere_layers(sphere_vertex_count);
-  meromorph_sphere_mesh(result, layered.data(), sphere_triangles.data(), nullptr,
-                        sphere_layers.data(), nullptr, nullptr);
-  std::vector<int32_t> branch_vertices(meromorph_branch_point_count(result)),
-      branch_degrees(branch_vertices.size());
-  if (!branch_vertices.empty())
-    meromorph_branch_points(result, branch_vertices.data(), branch_degrees.data());
-  meromorph_distortion distortion;
-  meromorph_get_distortion(result, &distortion);
-  const int genus = meromorph_genus(result), degree = meromorph_degree(result);
-  const bool riemann_hurwitz = meromorph_riemann_hurwitz_ok(result) != 0;
-  const bool valid = meromorph_map_valid(result) != 0;
-  const std::string invalid_reasons = meromorph_invalid_reasons(result);
-  std::vector<QString> causes;
-  std::vector<int> remedies;
-  for (int i = 0; i < meromorph_advice_count(result); ++i) {
-    causes.push_back(QString::fromUtf8(meromorph_advice_cause(result, i)));
-    remedies.push_back(meromorph_advice_remedy(result, i));
-  }
-  const std::string advice = meshlab_advice_words(causes, remedies).toStdString();
-  // What was closed or split for the computation, in the report's words.
-  const QJsonArray notes =
-      QJsonDocument::fromJson(QByteArray(meromorph_report_json(result)))["notes"].toArray();
+  const FetchedMap map = fetch_map(result, live.vertex_count(), live.faces.size());
   meromorph_result_free(result);
 
   model->updateDataMask(MeshModel::MM_VERTTEXCOORD | MeshModel::MM_VERTQUALITY);
   const bool wedges = parameters.getBool("wedgeTexCoords");
   if (wedges) model->updateDataMask(MeshModel::MM_WEDGTEXCOORD);
-  vcg::tri::UpdateSelection<CMeshO>::VertexClear(mesh);
-  for (size_t v = 0; v < mesh.vert.size(); ++v) {
-    if (dense[v] < 0) continue;
-    mesh.vert[v].T().U() = float(uv[2 * dense[v]]);
-    mesh.vert[v].T().V() = float(uv[2 * dense[v] + 1]);
-    mesh.vert[v].T().N() = 0;
-    mesh.vert[v].Q() = float(layers[dense[v]]);
-  }
-  std::vector<int> live_of_dense(vertex_count);
-  for (size_t v = 0; v < mesh.vert.size(); ++v)
-    if (dense[v] >= 0) live_of_dense[dense[v]] = int(v);
-  for (int32_t b : branch_vertices)
-    mesh.vert[live_of_dense[b]].SetS();
-  if (wedges)
-    for (size_t f = 0; f < faces.size(); ++f)
-      for (int k = 0; k < 3; ++k) {
-        faces[f]->WT(k).U() = float(corners[6 * f + 2 * k]);
-        faces[f]->WT(k).V() = float(corners[6 * f + 2 * k + 1]);
-        faces[f]->WT(k).N() = 0;
-      }
+  write_texture(mesh, live, map, wedges);
+  if (parameters.getBool("layeredSphere")) add_sphere_layer(document, model->label(), map);
 
-  if (parameters.getBool("layeredSphere")) {
-    MeshModel *sphere = document.addNewMesh("", model->label() + " layered sphere", false);
-    CMeshO &on_sphere = sphere->cm;
-    auto vertex = vcg::tri::Allocator<CMeshO>::AddVertices(on_sphere, sphere_vertex_count);
-    auto face = vcg::tri::Allocator<CMeshO>::AddFaces(on_sphere, faces.size());
-    sphere->updateDataMask(MeshModel::MM_VERTQUALITY);
-    for (size_t v = 0; v < sphere_vertex_count; ++v, ++vertex) {
-      vertex->P() = Point3m(layered[3 * v], layered[3 * v + 1], layered[3 * v + 2]);
-      vertex->Q() = float(sphere_layers[v]);
-    }
-    for (size_t f = 0; f < faces.size(); ++f, ++face)
-      for (int k = 0; k < 3; ++k)
-        face->V(k) = &on_sphere.vert[size_t(sphere_triangles[3 * f + k])];
-    vcg::tri::UpdateBounding<CMeshO>::Box(sphere->cm);
-    vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFaceNormalized(sphere->cm);
-  }
-
-  QString branch_list;
-  for (size_t i = 0; i < branch_vertices.size(); ++i)
-    branch_list +=
-        QString("%1%2 (e=%3)").arg(i ? ", " : "").arg(branch_vertices[i]).arg(branch_degrees[i]);
   Log("Conformal spherical parameterization: genus %d, degree %d, %d branch points%s%s; "
       "Riemann-Hurwitz %s; angle error %.2f deg, quasi-conformal mean %.3f, folded faces %d away "
       "from branch points; %lld ms",
-      genus, degree, int(branch_vertices.size()), branch_vertices.empty() ? "" : ": ",
-      branch_list.toStdString().c_str(), riemann_hurwitz ? "holds" : "FAILS",
-      distortion.angle_error_mean_degrees, distortion.quasi_conformal_mean,
-      int(distortion.folded_faces_away_from_branch_points), (long long)timer.elapsed());
-  for (const QJsonValue &note : notes)
+      map.genus, map.degree, int(map.branch_vertices.size()),
+      map.branch_vertices.empty() ? "" : ": ", branch_list(map).toStdString().c_str(),
+      map.riemann_hurwitz ? "holds" : "FAILS", map.distortion.angle_error_mean_degrees,
+      map.distortion.quasi_conformal_mean, int(map.distortion.folded_faces_away_from_branch_points),
+      (long long)timer.elapsed());
+  for (const QJsonValue &note : map.notes)
     Log("Conformal spherical parameterization: %s", note.toString().toStdString().c_str());
-  if (!valid)
+  if (!map.valid)
     Log(GLLogStream::WARNING,
         "The map is not a valid branched cover of the sphere on this triangulation: %s. What to "
         "do: %s",
-        invalid_reasons.c_str(), advice.c_str());
+        map.invalid_reasons.c_str(), map.advice.c_str());
   return true;
 }
 

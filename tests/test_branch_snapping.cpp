@@ -45,7 +45,7 @@ TEST(BranchSnapping, FindsTheCriticalPointsOfPAtTheHalfPeriods) {
           << resolution << ": face " << f;
     }
     double longest_edge = 0;
-    for (int e = 0; e < forms.edges.edge_count(); ++e)
+    for (int e = 0; e < int(forms.normalized[0].size()); ++e)
       longest_edge = std::max(longest_edge, std::abs(forms.normalized[0][e]));
     for (const Complex &half_period : map.p_function.half_periods()) {
       double nearest = 1e9;

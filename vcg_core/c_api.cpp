@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <new>
 #include <string>
 #include <vector>
@@ -70,7 +71,102 @@ std::string check_options(const meromorph_options &options, size_t vertex_count,
   return "";
 }
 
-template <class Scalar>
+// The caller's pointers and sizes: MEROMORPH_OK when they can be read, else the status and
+// the problem.
+template <typename Scalar>
+std::pair<meromorph_status, std::string> check_arrays(const Scalar *positions, size_t vertex_count,
+                                                      const int32_t *triangles,
+                                                      size_t triangle_count) {
+  if (!positions && vertex_count) return {MEROMORPH_ERROR_ARGUMENT, "positions pointer is NULL"};
+  if (!triangles && triangle_count) return {MEROMORPH_ERROR_ARGUMENT, "triangles pointer is NULL"};
+  if (vertex_count == 0 || triangle_count == 0)
+    return {MEROMORPH_ERROR_INPUT,
+            "the mesh has no " + std::string(vertex_count ? "faces" : "vertices")};
+  if (vertex_count > size_t(INT32_MAX) || triangle_count > size_t(INT32_MAX) / 3)
+    return {MEROMORPH_ERROR_ARGUMENT,
+            "the mesh has more vertices or triangles than 32-bit indices can address"};
+  return {MEROMORPH_OK, ""};
+}
+
+// The caller's options (of this or an earlier version) over the defaults, in `settings`.
+std::string read_options(const meromorph_options *options, meromorph_options &settings) {
+  meromorph_default_options(&settings);
+  if (!options) return "";
+  // Version 1 ended before close_holes, version 2 before split_nonmanifold.
+  const size_t version_1_size = offsetof(meromorph_options, close_holes),
+               version_2_size = offsetof(meromorph_options, split_nonmanifold);
+  if (options->struct_size != sizeof(meromorph_options) && options->struct_size != version_1_size &&
+      options->struct_size != version_2_size)
+    return "options.struct_size is " + std::to_string(options->struct_size) +
+           ", which matches no version of meromorph_options (this library's is " +
+           std::to_string(sizeof(meromorph_options)) +
+           "): initialize the options with meromorph_default_options";
+  std::memcpy(&settings, options, options->struct_size);
+  settings.struct_size = sizeof(meromorph_options);
+  return "";
+}
+
+meromorph::ParameterizeOptions core_options(const meromorph_options &settings) {
+  meromorph::ParameterizeOptions parameters;
+  parameters.uv =
+      settings.uv_kind == 1 ? meromorph::UvKind::stereographic : meromorph::UvKind::spherical;
+  parameters.mobius = settings.mobius != 0;
+  parameters.origin_vertex = settings.origin_vertex;
+  parameters.form_pair = {settings.form_pair[0], settings.form_pair[1]};
+  parameters.layer_gap = settings.layer_gap;
+  parameters.puncture_face = settings.pole_face;
+  parameters.close_holes = settings.close_holes != 0;
+  parameters.split_nonmanifold = settings.split_nonmanifold != 0;
+  parameters.pack_uv = settings.pack_uv != 0;
+  return parameters;
+}
+
+meromorph::Progress core_progress(const meromorph_options &settings) {
+  if (!settings.progress) return {};
+  const meromorph_progress_fn callback = settings.progress;
+  void *user = settings.progress_user;
+  return meromorph::Progress([callback, user](double fraction, const std::string &stage) {
+    return callback(fraction, stage.c_str(), user) != 0;
+  });
+}
+
+template <typename Scalar>
+meromorph::MeshArrays mesh_arrays(const Scalar *positions, size_t vertex_count,
+                                  const int32_t *triangles, size_t triangle_count) {
+  meromorph::MeshArrays arrays;
+  arrays.positions.reserve(vertex_count);
+  for (size_t v = 0; v < vertex_count; ++v)
+    arrays.positions.emplace_back(double(positions[3 * v]), double(positions[3 * v + 1]),
+                                  double(positions[3 * v + 2]));
+  arrays.triangles.reserve(triangle_count);
+  for (size_t t = 0; t < triangle_count; ++t)
+    arrays.triangles.push_back({triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]});
+  return arrays;
+}
+
+// The map of `arrays` with its report; throws what the core throws.
+std::unique_ptr<meromorph_result> map_result(meromorph::MeshArrays &arrays,
+                                             const meromorph_options &settings) {
+  using namespace meromorph;
+  Mesh mesh;
+  mesh_from_arrays(arrays, mesh);
+  auto out = std::make_unique<meromorph_result>();
+  out->map = parameterize_surface(mesh, core_options(settings), core_progress(settings));
+  nlohmann::json report = parameterization_json(out->map);
+  report["version"] = MEROMORPH_VERSION;
+  out->report = json_text(report);
+  out->invalid_reasons = join_phrases(out->map.invalid);
+  std::vector<std::string> causes;
+  for (const Advice &advice : out->map.advice)
+    causes.push_back(advice.cause);
+  out->advice = join_phrases(causes);
+  out->vertices = arrays.positions.size();
+  out->triangles = arrays.triangles.size();
+  if (out->map.sphere_faces.empty()) out->input_triangles = std::move(arrays.triangles);
+  return out;
+}
+
+template <typename Scalar>
 meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
                               const int32_t *triangles, size_t triangle_count,
                               const meromorph_options *options, meromorph_result **result) {
@@ -79,84 +175,18 @@ meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
   last_remedies.clear();
   if (!result) return fail(MEROMORPH_ERROR_ARGUMENT, "result pointer is NULL");
   *result = nullptr;
-  if (!positions && vertex_count)
-    return fail(MEROMORPH_ERROR_ARGUMENT, "positions pointer is NULL");
-  if (!triangles && triangle_count)
-    return fail(MEROMORPH_ERROR_ARGUMENT, "triangles pointer is NULL");
-  if (vertex_count == 0 || triangle_count == 0)
-    return fail(MEROMORPH_ERROR_INPUT,
-                "the mesh has no " + std::string(vertex_count ? "faces" : "vertices"));
-  if (vertex_count > size_t(INT32_MAX) || triangle_count > size_t(INT32_MAX) / 3)
-    return fail(MEROMORPH_ERROR_ARGUMENT,
-                "the mesh has more vertices or triangles than 32-bit indices can address");
+  if (auto [status, problem] = check_arrays(positions, vertex_count, triangles, triangle_count);
+      status != MEROMORPH_OK)
+    return fail(status, problem);
   meromorph_options settings;
-  meromorph_default_options(&settings);
-  if (options) {
-    // Version 1 ended before close_holes, version 2 before split_nonmanifold.
-    const size_t version_1_size = offsetof(meromorph_options, close_holes),
-                 version_2_size = offsetof(meromorph_options, split_nonmanifold);
-    if (options->struct_size != sizeof(meromorph_options) &&
-        options->struct_size != version_1_size && options->struct_size != version_2_size)
-      return fail(MEROMORPH_ERROR_ARGUMENT,
-                  "options.struct_size is " + std::to_string(options->struct_size) +
-                      ", which matches no version of meromorph_options (this library's is " +
-                      std::to_string(sizeof(meromorph_options)) +
-                      "): initialize the options with meromorph_default_options");
-    std::memcpy(&settings, options, options->struct_size);
-    settings.struct_size = sizeof(meromorph_options);
-  }
+  if (const std::string problem = read_options(options, settings); !problem.empty())
+    return fail(MEROMORPH_ERROR_ARGUMENT, problem);
   if (const std::string problem = check_options(settings, vertex_count, triangle_count);
       !problem.empty())
     return fail(MEROMORPH_ERROR_ARGUMENT, problem);
   try {
-    MeshArrays arrays;
-    arrays.positions.reserve(vertex_count);
-    for (size_t v = 0; v < vertex_count; ++v)
-      arrays.positions.emplace_back(double(positions[3 * v]), double(positions[3 * v + 1]),
-                                    double(positions[3 * v + 2]));
-    arrays.triangles.reserve(triangle_count);
-    for (size_t t = 0; t < triangle_count; ++t)
-      arrays.triangles.push_back({triangles[3 * t], triangles[3 * t + 1], triangles[3 * t + 2]});
-    Mesh mesh;
-    mesh_from_arrays(arrays, mesh);
-
-    ParameterizeOptions parameters;
-    parameters.uv = settings.uv_kind == 1 ? UvKind::stereographic : UvKind::spherical;
-    parameters.mobius = settings.mobius != 0;
-    parameters.origin_vertex = settings.origin_vertex;
-    parameters.form_pair = {settings.form_pair[0], settings.form_pair[1]};
-    parameters.layer_gap = settings.layer_gap;
-    parameters.puncture_face = settings.pole_face;
-    parameters.close_holes = settings.close_holes != 0;
-    parameters.split_nonmanifold = settings.split_nonmanifold != 0;
-    parameters.pack_uv = settings.pack_uv != 0;
-    Progress progress;
-    if (settings.progress) {
-      const meromorph_progress_fn callback = settings.progress;
-      void *user = settings.progress_user;
-      progress = Progress([callback, user](double fraction, const std::string &stage) {
-        return callback(fraction, stage.c_str(), user) != 0;
-      });
-    }
-    auto *out = new meromorph_result;
-    try {
-      out->map = meromorph::parameterize_surface(mesh, parameters, progress);
-      nlohmann::json report = parameterization_json(out->map);
-      report["version"] = MEROMORPH_VERSION;
-      out->report = json_text(report);
-      out->invalid_reasons = join_phrases(out->map.invalid);
-      std::vector<std::string> causes;
-      for (const Advice &advice : out->map.advice)
-        causes.push_back(advice.cause);
-      out->advice = join_phrases(causes);
-      out->vertices = vertex_count;
-      if (out->map.sphere_faces.empty()) out->input_triangles = std::move(arrays.triangles);
-      out->triangles = triangle_count;
-    } catch (...) {
-      delete out;
-      throw;
-    }
-    *result = out;
+    MeshArrays arrays = mesh_arrays(positions, vertex_count, triangles, triangle_count);
+    *result = map_result(arrays, settings).release();
     return MEROMORPH_OK;
   } catch (const Cancelled &) {
     return fail(MEROMORPH_ERROR_CANCELLED, "cancelled by the progress callback");

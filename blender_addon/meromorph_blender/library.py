@@ -124,10 +124,11 @@ def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
         positions.ctypes.data, positions.size // 3, triangles.ctypes.data, triangles.size // 3,
         ctypes.byref(options), ctypes.byref(result))
     if status != 0:
-        remedies = np.zeros(16, dtype=np.int32)
+        # How many remedies there are first, then all of them.
+        message = lib.meromorph_last_error().decode("utf-8", "replace")
+        remedies = np.zeros(max(0, lib.meromorph_last_error_remedies(None, 0)), dtype=np.int32)
         count = lib.meromorph_last_error_remedies(remedies.ctypes.data, len(remedies))
-        raise MeromorphError(status, lib.meromorph_last_error().decode("utf-8", "replace"),
-                             remedies[:min(count, len(remedies))].tolist())
+        raise MeromorphError(status, message, remedies[:max(0, min(count, len(remedies)))].tolist())
     try:
         n = lib.meromorph_vertex_count(result)
         t = lib.meromorph_triangle_count(result)

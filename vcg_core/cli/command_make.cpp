@@ -68,92 +68,109 @@ void add_common(CLI::App *command, MakeOptions &options) {
       ->check(CLI::Range(0.0, 1.0));
 }
 
+CLI::App *add_sphere(CLI::App *make, MakeOptions &options) {
+  CLI::App *sphere = make->add_subcommand("sphere", "Icosphere: 10 * 4^s + 2 vertices.");
+  add_common(sphere, options);
+  sphere->add_option("-s,--subdivisions", options.subdivisions, "subdivision steps (0..9)")
+      ->capture_default_str();
+  sphere->add_option("--radius", options.radius, "radius")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  return sphere;
+}
+
+CLI::App *add_torus(CLI::App *make, MakeOptions &options) {
+  CLI::App *torus = make->add_subcommand(
+      "torus", "Torus of revolution with radii R > r; its exact conformal modulus is "
+               "i*sqrt(R^2 - r^2)/r.");
+  add_common(torus, options);
+  torus
+      ->add_option("-R,--major-radius", options.major_radius,
+                   "distance from the axis to the "
+                   "tube's centre")
+      ->capture_default_str();
+  torus->add_option("-r,--minor-radius", options.minor_radius, "radius of the tube")
+      ->capture_default_str();
+  torus->add_option("--segments", options.major_segments,
+                    "grid: quads around the axis (default: keeps quads square for the "
+                    "resolution)");
+  torus->add_option("--minor-segments", options.minor_segments, "grid: quads around the tube");
+  torus
+      ->add_option("--method", options.method,
+                   "grid (regular quads split in two) or implicit (marching cubes + isotropic "
+                   "remeshing)")
+      ->check(CLI::IsMember({"grid", "implicit"}))
+      ->capture_default_str();
+  torus->add_option("--resolution", options.resolution, "edges around the tube")
+      ->capture_default_str();
+  return torus;
+}
+
+CLI::App *add_genus(CLI::App *make, MakeOptions &options) {
+  CLI::App *genus = make->add_subcommand(
+      "genus", "Closed surface of the given genus: rings of tubes in a row (marching cubes + "
+               "isotropic remeshing).");
+  add_common(genus, options);
+  genus->add_option("-g,--genus", options.genus, "genus (0..64)")->capture_default_str();
+  genus->add_option("--resolution", options.resolution, "edges across one ring")
+      ->capture_default_str();
+  return genus;
+}
+
+CLI::App *add_blob(CLI::App *make, MakeOptions &options) {
+  CLI::App *blob = make->add_subcommand(
+      "blob", "Genus 0 with long thin parts: a ball with tentacles (the hard case for maps to the "
+              "sphere).");
+  add_common(blob, options);
+  blob->add_option("--tentacles", options.tentacles, "number of tentacles")->capture_default_str();
+  blob->add_option("--length", options.tentacle_length, "tentacle length (ball radius 1)")
+      ->capture_default_str();
+  blob->add_option("--resolution", options.resolution, "edges across the ball")
+      ->capture_default_str();
+  blob->add_flag("--hole", options.hole,
+                 "a hole through the ball: genus 1, a figure with long limbs");
+  return blob;
+}
+
+void make_torus(Mesh &mesh, const MakeOptions &options) {
+  if (options.method == "implicit") {
+    make_implicit_torus(mesh, options.major_radius, options.minor_radius, options.resolution,
+                        !options.raw_marching_cubes);
+    return;
+  }
+  const int minor = options.minor_segments > 0 ? options.minor_segments : options.resolution;
+  const int major = options.major_segments > 0
+                        ? options.major_segments
+                        : int(std::lround(minor * options.major_radius / options.minor_radius));
+  make_grid_torus(mesh, options.major_radius, options.minor_radius, major, minor);
+}
+
 } // namespace
 
 Command add_make_command(CLI::App &app) {
   auto options = std::make_shared<MakeOptions>();
   CLI::App *make = app.add_subcommand("make", "Write one of meromorph's test surfaces.");
   make->require_subcommand(1);
-
-  CLI::App *sphere = make->add_subcommand("sphere", "Icosphere: 10 * 4^s + 2 vertices.");
-  add_common(sphere, *options);
-  sphere->add_option("-s,--subdivisions", options->subdivisions, "subdivision steps (0..9)")
-      ->capture_default_str();
-  sphere->add_option("--radius", options->radius, "radius")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-
-  CLI::App *torus = make->add_subcommand(
-      "torus", "Torus of revolution with radii R > r; its exact conformal modulus is "
-               "i*sqrt(R^2 - r^2)/r.");
-  add_common(torus, *options);
-  torus
-      ->add_option("-R,--major-radius", options->major_radius,
-                   "distance from the axis to the "
-                   "tube's centre")
-      ->capture_default_str();
-  torus->add_option("-r,--minor-radius", options->minor_radius, "radius of the tube")
-      ->capture_default_str();
-  torus->add_option("--segments", options->major_segments,
-                    "grid: quads around the axis (default: keeps quads square for the "
-                    "resolution)");
-  torus->add_option("--minor-segments", options->minor_segments, "grid: quads around the tube");
-  torus
-      ->add_option("--method", options->method,
-                   "grid (regular quads split in two) or implicit (marching cubes + isotropic "
-                   "remeshing)")
-      ->check(CLI::IsMember({"grid", "implicit"}))
-      ->capture_default_str();
-  torus->add_option("--resolution", options->resolution, "edges around the tube")
-      ->capture_default_str();
-
-  CLI::App *genus = make->add_subcommand(
-      "genus", "Closed surface of the given genus: rings of tubes in a row (marching cubes + "
-               "isotropic remeshing).");
-  add_common(genus, *options);
-  genus->add_option("-g,--genus", options->genus, "genus (0..64)")->capture_default_str();
-  genus->add_option("--resolution", options->resolution, "edges across one ring")
-      ->capture_default_str();
+  CLI::App *sphere = add_sphere(make, *options);
+  CLI::App *torus = add_torus(make, *options);
+  CLI::App *genus = add_genus(make, *options);
   for (CLI::App *implicit : {torus, genus})
     implicit->add_flag("--raw-marching-cubes", options->raw_marching_cubes,
                        "keep marching cubes' triangles (many obtuse and needle-shaped ones): a "
                        "stress test; default remeshes them isotropically");
-
-  CLI::App *blob = make->add_subcommand(
-      "blob", "Genus 0 with long thin parts: a ball with tentacles (the hard case for maps to the "
-              "sphere).");
-  add_common(blob, *options);
-  blob->add_option("--tentacles", options->tentacles, "number of tentacles")->capture_default_str();
-  blob->add_option("--length", options->tentacle_length, "tentacle length (ball radius 1)")
-      ->capture_default_str();
-  blob->add_option("--resolution", options->resolution, "edges across the ball")
-      ->capture_default_str();
-  blob->add_flag("--hole", options->hole,
-                 "a hole through the ball: genus 1, a figure with long limbs");
+  CLI::App *blob = add_blob(make, *options);
 
   return [options, sphere, torus, blob]() {
     Mesh mesh;
-    if (sphere->parsed()) {
+    if (sphere->parsed())
       make_icosphere(mesh, options->subdivisions, options->radius);
-    } else if (torus->parsed()) {
-      if (options->method == "implicit") {
-        make_implicit_torus(mesh, options->major_radius, options->minor_radius, options->resolution,
-                            !options->raw_marching_cubes);
-      } else {
-        const int minor =
-            options->minor_segments > 0 ? options->minor_segments : options->resolution;
-        const int major =
-            options->major_segments > 0
-                ? options->major_segments
-                : int(std::lround(minor * options->major_radius / options->minor_radius));
-        make_grid_torus(mesh, options->major_radius, options->minor_radius, major, minor);
-      }
-    } else if (blob->parsed()) {
+    else if (torus->parsed())
+      make_torus(mesh, *options);
+    else if (blob->parsed())
       make_tentacle_blob(mesh, options->tentacles, options->tentacle_length, options->resolution,
                          options->hole);
-    } else {
+    else
       make_genus_surface(mesh, options->genus, options->resolution, !options->raw_marching_cubes);
-    }
     return finish(mesh, *options);
   };
 }

@@ -1,6 +1,6 @@
 // meromorph: conformal maps of closed surfaces onto the sphere, from the command line.
-// Exit codes (cli/exit_codes.h): 0 done, 1 internal failure, 2 bad arguments, 3 the input cannot
-// be parameterized, 4 an output cannot be written.
+// Exit codes (cli/exit_codes.h): 0 done, 1 internal failure or cancelled, 2 bad arguments, 3 the
+// input cannot be parameterized, 4 an output cannot be written.
 #include <iostream>
 #include <map>
 
@@ -12,8 +12,8 @@ int main(int argc, char **argv) {
   using namespace meromorph;
   using cli::ExitCode;
   CLI::App app{"meromorph: conformal maps of closed surfaces of any genus onto the sphere.\n"
-               "Exit codes: 0 done, 1 internal failure, 2 bad arguments, 3 the input cannot be "
-               "parameterized.",
+               "Exit codes: 0 done, 1 internal failure or cancelled, 2 bad arguments, 3 the input "
+               "cannot be parameterized (or the map is not valid), 4 an output cannot be written.",
                "meromorph"};
   app.set_version_flag("--version", std::string("meromorph ") + MEROMORPH_VERSION);
   app.require_subcommand(1);

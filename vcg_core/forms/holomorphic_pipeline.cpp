@@ -166,16 +166,14 @@ HolomorphicForms compute_holomorphic_forms(const PreparedMesh &prepared, SolverK
   StageClock clock(out.timings_ms);
   const int vertex_count = int(mesh.vert.size());
 
-  out.edges = prepared.edges;
-  out.weights = prepared.weights;
-  out.genus = (2 - (vertex_count - out.edges.edge_count() + int(mesh.face.size()))) / 2;
+  out.genus = (2 - (vertex_count - prepared.edges.edge_count() + int(mesh.face.size()))) / 2;
   if (out.genus == 0) {
     clock.done("laplacian");
     return out; // no forms: nothing to factor
   }
   // The forms live on the intrinsic Delaunay triangulation (non-negative weights), and are taken
   // back to the mesh's edges at the end.
-  out.intrinsic = std::make_shared<IntrinsicDelaunay>(mesh, out.edges);
+  out.intrinsic = std::make_shared<IntrinsicDelaunay>(mesh, prepared.edges);
   const MeshEdges &edges = out.intrinsic->edges();
   const std::vector<double> weights = out.intrinsic->cotan_weights();
   const Mesh &faces = out.intrinsic->flat_faces();

@@ -28,10 +28,9 @@ namespace meromorph {
 
 struct HolomorphicForms {
   int genus = 0;
-  MeshEdges edges;             // the mesh's
-  std::vector<double> weights; // the mesh's cotangent weights
   // Genus >= 1: the triangulation the forms are computed on (intrinsic_delaunay.h); the homology
-  // basis and the harmonic forms live on its edges, `normalized` on the mesh's.
+  // basis and the harmonic forms live on its edges, `normalized` on the mesh's (the prepared mesh's
+  // edges).
   std::shared_ptr<const IntrinsicDelaunay> intrinsic;
   HomologyBasis homology;
   std::vector<Eigen::VectorXd> harmonic;       // h_j, 2g of them

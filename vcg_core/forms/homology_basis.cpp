@@ -33,25 +33,12 @@ void strip_common_tail(std::vector<std::pair<int, int>> &a, std::vector<std::pai
   }
 }
 
-} // namespace
-
-double integrate(const Eigen::VectorXd &form, const std::vector<std::pair<int, int>> &loop) {
-  double sum = 0;
-  for (auto [edge, sign] : loop)
-    sum += sign * form[edge];
-  return sum;
-}
-
-HomologyBasis tree_cotree(int vertex_count, const MeshEdges &edges) {
-  const int face_count = int(edges.face_edges.size());
-  const int edge_count = edges.edge_count();
-
+// Breadth-first tree of vertices from vertex 0: combinatorial, so a rigid motion or a scale of
+// the mesh gives the same loops (a geometric shortest-path tree would break ties differently).
+Tree vertex_tree(int vertex_count, const MeshEdges &edges) {
   const std::vector<std::vector<int>> incident = edges_at_vertices(edges, vertex_count);
-
-  // Breadth-first tree of vertices from vertex 0: combinatorial, so a rigid motion or a scale of
-  // the mesh gives the same loops (a geometric shortest-path tree would break ties differently).
-  Tree vertex_tree{std::vector<int>(vertex_count, -1), std::vector<int>(vertex_count, -1)};
-  std::vector<char> in_vertex_tree(edge_count, 0), seen(vertex_count, 0);
+  Tree tree{std::vector<int>(vertex_count, -1), std::vector<int>(vertex_count, -1)};
+  std::vector<char> seen(vertex_count, 0);
   std::queue<int> frontier;
   frontier.push(0);
   seen[0] = 1;
@@ -62,19 +49,21 @@ HomologyBasis tree_cotree(int vertex_count, const MeshEdges &edges) {
       const int w = edges.vertices[e][0] == v ? edges.vertices[e][1] : edges.vertices[e][0];
       if (seen[w]) continue;
       seen[w] = 1;
-      vertex_tree.parent[w] = v;
-      vertex_tree.parent_edge[w] = e;
+      tree.parent[w] = v;
+      tree.parent_edge[w] = e;
       frontier.push(w);
     }
   }
-  for (int v = 1; v < vertex_count; ++v) {
-    if (vertex_tree.parent[v] < 0) throw InputError("the mesh is not connected");
-    in_vertex_tree[vertex_tree.parent_edge[v]] = 1;
-  }
+  for (int v = 1; v < vertex_count; ++v)
+    if (tree.parent[v] < 0) throw InputError("the mesh is not connected");
+  return tree;
+}
 
-  // Spanning tree of faces through the edges not in the vertex tree.
-  Tree face_tree{std::vector<int>(face_count, -1), std::vector<int>(face_count, -1)};
-  std::vector<char> in_face_tree(edge_count, 0), reached(face_count, 0);
+// Spanning tree of faces through the edges not in the vertex tree.
+Tree face_tree(const MeshEdges &edges, const std::vector<char> &in_vertex_tree) {
+  const int face_count = int(edges.face_edges.size());
+  Tree tree{std::vector<int>(face_count, -1), std::vector<int>(face_count, -1)};
+  std::vector<char> reached(face_count, 0);
   std::queue<int> faces;
   faces.push(0);
   reached[0] = 1;
@@ -86,12 +75,65 @@ HomologyBasis tree_cotree(int vertex_count, const MeshEdges &edges) {
       const int g = edges.faces[e][0] == f ? edges.faces[e][1] : edges.faces[e][0];
       if (reached[g]) continue;
       reached[g] = 1;
-      in_face_tree[e] = 1;
-      face_tree.parent[g] = f;
-      face_tree.parent_edge[g] = e;
+      tree.parent[g] = f;
+      tree.parent_edge[g] = e;
       faces.push(g);
     }
   }
+  return tree;
+}
+
+std::vector<char> tree_edges(const Tree &tree, int edge_count) {
+  std::vector<char> in_tree(edge_count, 0);
+  for (int e : tree.parent_edge)
+    if (e >= 0) in_tree[e] = 1;
+  return in_tree;
+}
+
+// Primal loop: along the generator from a to b, then back through the vertex tree.
+std::vector<std::pair<int, int>> primal_loop(const MeshEdges &edges, const Tree &vertices,
+                                             int generator) {
+  const int a = edges.vertices[generator][0], b = edges.vertices[generator][1];
+  auto from_b = path_to_root(vertices, b), from_a = path_to_root(vertices, a);
+  strip_common_tail(from_b, from_a);
+  std::vector<std::pair<int, int>> loop{{generator, +1}};
+  for (auto [edge, leaving] : from_b)
+    loop.push_back({edge, edges.vertices[edge][0] == leaving ? 1 : -1});
+  for (auto it = from_a.rbegin(); it != from_a.rend(); ++it) // down to a: the reverse steps
+    loop.push_back({it->first, edges.vertices[it->first][0] == it->second ? -1 : 1});
+  return loop;
+}
+
+// Dual loop as a 1-form: across the generator from its left face to its right face, then back
+// through the face tree. Crossing an edge from its left face to its right face counts +1.
+Eigen::VectorXd dual_form(const MeshEdges &edges, const Tree &faces, int generator) {
+  Eigen::VectorXd form = Eigen::VectorXd::Zero(edges.edge_count());
+  form[generator] += 1;
+  const int left = edges.faces[generator][0], right = edges.faces[generator][1];
+  auto from_right = path_to_root(faces, right), from_left = path_to_root(faces, left);
+  strip_common_tail(from_right, from_left);
+  for (auto [edge, leaving] : from_right)
+    form[edge] += edges.faces[edge][0] == leaving ? 1 : -1;
+  for (auto [edge, leaving] : from_left)
+    form[edge] += edges.faces[edge][0] == leaving ? -1 : 1;
+  return form;
+}
+
+} // namespace
+
+double integrate(const Eigen::VectorXd &form, const std::vector<std::pair<int, int>> &loop) {
+  double sum = 0;
+  for (auto [edge, sign] : loop)
+    sum += sign * form[edge];
+  return sum;
+}
+
+HomologyBasis tree_cotree(int vertex_count, const MeshEdges &edges) {
+  const int edge_count = edges.edge_count();
+  const Tree vertices = vertex_tree(vertex_count, edges);
+  const std::vector<char> in_vertex_tree = tree_edges(vertices, edge_count);
+  const Tree faces = face_tree(edges, in_vertex_tree);
+  const std::vector<char> in_face_tree = tree_edges(faces, edge_count);
 
   HomologyBasis basis;
   for (int e = 0; e < edge_count; ++e)
@@ -99,31 +141,9 @@ HomologyBasis tree_cotree(int vertex_count, const MeshEdges &edges) {
   if (basis.generator_edges.size() % 2 != 0)
     throw InternalError("tree-cotree found an odd number of generators");
   basis.genus = int(basis.generator_edges.size()) / 2;
-
   for (int generator : basis.generator_edges) {
-    // Primal loop: along the generator from a to b, then back through the tree.
-    const int a = edges.vertices[generator][0], b = edges.vertices[generator][1];
-    auto from_b = path_to_root(vertex_tree, b), from_a = path_to_root(vertex_tree, a);
-    strip_common_tail(from_b, from_a);
-    std::vector<std::pair<int, int>> loop{{generator, +1}};
-    for (auto [edge, leaving] : from_b)
-      loop.push_back({edge, edges.vertices[edge][0] == leaving ? 1 : -1});
-    for (auto it = from_a.rbegin(); it != from_a.rend(); ++it) // down to a: the reverse steps
-      loop.push_back({it->first, edges.vertices[it->first][0] == it->second ? -1 : 1});
-    basis.primal_loops.push_back(std::move(loop));
-
-    // Dual loop: across the generator from its left face to its right face, then back through
-    // the face tree. Crossing an edge from its left face to its right face counts +1.
-    Eigen::VectorXd form = Eigen::VectorXd::Zero(edge_count);
-    form[generator] += 1;
-    const int left = edges.faces[generator][0], right = edges.faces[generator][1];
-    auto from_right = path_to_root(face_tree, right), from_left = path_to_root(face_tree, left);
-    strip_common_tail(from_right, from_left);
-    for (auto [edge, leaving] : from_right)
-      form[edge] += edges.faces[edge][0] == leaving ? 1 : -1;
-    for (auto [edge, leaving] : from_left)
-      form[edge] += edges.faces[edge][0] == leaving ? -1 : 1;
-    basis.dual_forms.push_back(std::move(form));
+    basis.primal_loops.push_back(primal_loop(edges, vertices, generator));
+    basis.dual_forms.push_back(dual_form(edges, faces, generator));
   }
   return basis;
 }

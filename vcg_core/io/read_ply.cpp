@@ -102,89 +102,113 @@ bool parse_count(std::string_view text, uint64_t &value) {
   return error == std::errc() && end == text.data() + text.size();
 }
 
-Header parse_header(const std::string &path, const std::string &bytes) {
-  Header header;
-  size_t position = bytes.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0, line_number = 0;
-  auto fail = [&](const std::string &message) -> void {
-    throw InputError(path + ":" + std::to_string(line_number) + ": " + message);
-  };
-  auto next_line = [&](std::string_view &line) {
-    if (position >= bytes.size()) return false;
-    size_t end = bytes.find('\n', position);
-    if (end == std::string::npos) end = bytes.size();
-    line = std::string_view(bytes.data() + position, end - position);
-    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-    position = end + 1;
-    ++line_number;
-    return true;
-  };
-  std::string_view line;
-  if (!next_line(line) || line != "ply")
-    throw InputError(path + ": not a PLY file (its first line is not 'ply')");
-  bool format_seen = false, ended = false;
-  while (!ended) {
-    if (!next_line(line))
-      throw InputError(path + ": the file ends inside its PLY header (no 'end_header' line)");
-    const std::vector<std::string_view> words = split_words(line);
-    if (words.empty()) continue;
-    const std::string_view keyword = words[0];
-    if (keyword == "comment" || keyword == "obj_info") continue;
-    if (keyword == "end_header") {
-      ended = true;
-    } else if (keyword == "format") {
-      if (format_seen) fail("a second 'format' line");
-      format_seen = true;
-      if (words.size() != 3 || words[2] != "1.0")
-        fail("expected 'format ascii 1.0' (or binary_little_endian / binary_big_endian)");
-      if (words[1] == "ascii")
-        header.encoding = Encoding::ascii;
-      else if (words[1] == "binary_little_endian")
-        header.encoding = Encoding::binary_little_endian;
-      else if (words[1] == "binary_big_endian")
-        header.encoding = Encoding::binary_big_endian;
+// Reads the header line by line; each keyword's line fills its part of `header`.
+class HeaderParser {
+public:
+  HeaderParser(const std::string &path, const std::string &bytes)
+      : path_(path), bytes_(bytes), position_(bytes.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0) {}
+
+  Header parse() {
+    std::string_view line;
+    if (!next_line(line) || line != "ply")
+      throw InputError(path_ + ": not a PLY file (its first line is not 'ply')");
+    for (bool ended = false; !ended;) {
+      if (!next_line(line))
+        throw InputError(path_ + ": the file ends inside its PLY header (no 'end_header' line)");
+      const std::vector<std::string_view> words = split_words(line);
+      if (words.empty()) continue;
+      const std::string_view keyword = words[0];
+      if (keyword == "comment" || keyword == "obj_info") continue;
+      if (keyword == "end_header")
+        ended = true;
+      else if (keyword == "format")
+        format(words);
+      else if (keyword == "element")
+        element(words);
+      else if (keyword == "property")
+        property(words);
       else
-        fail("unknown PLY format '" + std::string(words[1]) + "'");
-    } else if (keyword == "element") {
-      if (!format_seen) fail("'element' before the 'format' line");
-      Element element;
-      if (words.size() != 3) fail("expected 'element NAME COUNT'");
-      element.name = std::string(words[1]);
-      if (!parse_count(words[2], element.count) || element.count > uint64_t(INT32_MAX))
-        fail("element '" + element.name + "' has the count '" + std::string(words[2]) +
-             "', which is not a whole number from 0 to " + std::to_string(INT32_MAX));
-      for (const Element &other : header.elements)
-        if (other.name == element.name) fail("element '" + element.name + "' is declared twice");
-      element.header_line = line_number;
-      header.elements.push_back(element);
-    } else if (keyword == "property") {
-      if (header.elements.empty()) fail("'property' before any 'element'");
-      Property property;
-      if (words.size() == 5 && words[1] == "list") {
-        property.list = true;
-        if (!parse_type(words[2], property.count_type) || !is_integer(property.count_type))
-          fail("a list's count type must be an integer type, not '" + std::string(words[2]) + "'");
-        if (!parse_type(words[3], property.type))
-          fail("unknown property type '" + std::string(words[3]) + "'");
-        property.name = std::string(words[4]);
-      } else if (words.size() == 3) {
-        if (!parse_type(words[1], property.type))
-          fail("unknown property type '" + std::string(words[1]) + "'");
-        property.name = std::string(words[2]);
-      } else {
-        fail("expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'");
-      }
-      for (const Property &other : header.elements.back().properties)
-        if (other.name == property.name) fail("property '" + property.name + "' is declared twice");
-      header.elements.back().properties.push_back(property);
-    } else {
-      fail("unknown PLY header line '" + std::string(line.substr(0, 60)) + "'");
+        fail("unknown PLY header line '" + std::string(line.substr(0, 60)) + "'");
     }
+    if (!format_seen_) throw InputError(path_ + ": the PLY header has no 'format' line");
+    header_.data_start = std::min(position_, bytes_.size());
+    header_.lines = line_number_;
+    return header_;
   }
-  if (!format_seen) throw InputError(path + ": the PLY header has no 'format' line");
-  header.data_start = std::min(position, bytes.size());
-  header.lines = line_number;
-  return header;
-}
+
+private:
+  [[noreturn]] void fail(const std::string &message) const {
+    throw InputError(path_ + ":" + std::to_string(line_number_) + ": " + message);
+  }
+
+  bool next_line(std::string_view &line) {
+    if (position_ >= bytes_.size()) return false;
+    size_t end = bytes_.find('\n', position_);
+    if (end == std::string::npos) end = bytes_.size();
+    line = std::string_view(bytes_.data() + position_, end - position_);
+    if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    position_ = end + 1;
+    ++line_number_;
+    return true;
+  }
+
+  void format(const std::vector<std::string_view> &words) {
+    if (format_seen_) fail("a second 'format' line");
+    format_seen_ = true;
+    if (words.size() != 3 || words[2] != "1.0")
+      fail("expected 'format ascii 1.0' (or binary_little_endian / binary_big_endian)");
+    if (words[1] == "ascii")
+      header_.encoding = Encoding::ascii;
+    else if (words[1] == "binary_little_endian")
+      header_.encoding = Encoding::binary_little_endian;
+    else if (words[1] == "binary_big_endian")
+      header_.encoding = Encoding::binary_big_endian;
+    else
+      fail("unknown PLY format '" + std::string(words[1]) + "'");
+  }
+
+  void element(const std::vector<std::string_view> &words) {
+    if (!format_seen_) fail("'element' before the 'format' line");
+    Element element;
+    if (words.size() != 3) fail("expected 'element NAME COUNT'");
+    element.name = std::string(words[1]);
+    if (!parse_count(words[2], element.count) || element.count > uint64_t(INT32_MAX))
+      fail("element '" + element.name + "' has the count '" + std::string(words[2]) +
+           "', which is not a whole number from 0 to " + std::to_string(INT32_MAX));
+    for (const Element &other : header_.elements)
+      if (other.name == element.name) fail("element '" + element.name + "' is declared twice");
+    element.header_line = line_number_;
+    header_.elements.push_back(element);
+  }
+
+  void property(const std::vector<std::string_view> &words) {
+    if (header_.elements.empty()) fail("'property' before any 'element'");
+    Property property;
+    if (words.size() == 5 && words[1] == "list") {
+      property.list = true;
+      if (!parse_type(words[2], property.count_type) || !is_integer(property.count_type))
+        fail("a list's count type must be an integer type, not '" + std::string(words[2]) + "'");
+      if (!parse_type(words[3], property.type))
+        fail("unknown property type '" + std::string(words[3]) + "'");
+      property.name = std::string(words[4]);
+    } else if (words.size() == 3) {
+      if (!parse_type(words[1], property.type))
+        fail("unknown property type '" + std::string(words[1]) + "'");
+      property.name = std::string(words[2]);
+    } else {
+      fail("expected 'property TYPE NAME' or 'property list COUNT_TYPE TYPE NAME'");
+    }
+    for (const Property &other : header_.elements.back().properties)
+      if (other.name == property.name) fail("property '" + property.name + "' is declared twice");
+    header_.elements.back().properties.push_back(property);
+  }
+
+  const std::string &path_;
+  const std::string &bytes_;
+  size_t position_, line_number_ = 0;
+  bool format_seen_ = false;
+  Header header_;
+};
 
 // Reads the values of the data section one at a time, ASCII or binary, and names where a
 // problem is: the file line (ASCII) or the byte offset (binary).
@@ -360,84 +384,102 @@ const Property *find_property(const Element &element, std::initializer_list<cons
   return nullptr;
 }
 
-} // namespace
-
-MeshArrays read_ply(const std::string &path, const std::string &bytes,
-                    std::vector<std::string> &notes) {
-  if (bytes.empty()) throw InputError(path + ": the file is empty");
-  const Header header = parse_header(path, bytes);
-
+// The elements and properties a mesh is read from.
+struct MeshLayout {
   const Element *vertices = nullptr, *faces = nullptr;
+  const Property *coordinates[3] = {nullptr, nullptr, nullptr};
+  const Property *corner_list = nullptr; // faces only
+};
+
+MeshLayout mesh_layout(const std::string &path, const std::string &bytes, const Header &header,
+                       std::vector<std::string> &notes) {
+  MeshLayout layout;
   double smallest = 0;
   for (const Element &element : header.elements) {
-    if (element.name == "vertex") vertices = &element;
-    if (element.name == "face") faces = &element;
+    if (element.name == "vertex") layout.vertices = &element;
+    if (element.name == "face") layout.faces = &element;
     smallest += smallest_size(element, header.encoding) * double(element.count);
   }
   if (smallest > double(bytes.size() - header.data_start))
     throw InputError(path + ": the PLY header announces more vertices and faces than a file of " +
                      std::to_string(bytes.size()) +
                      " bytes can hold (truncated, or a wrong header)");
-  if (!vertices) throw InputError(path + ": the PLY file has no 'vertex' element");
-  const Property *coordinates[3];
+  if (!layout.vertices) throw InputError(path + ": the PLY file has no 'vertex' element");
   for (int k = 0; k < 3; ++k) {
     const char *name[] = {"x", "y", "z"};
-    coordinates[k] = find_property(*vertices, {name[k]});
-    if (!coordinates[k] || coordinates[k]->list)
-      throw InputError(path + ":" + std::to_string(vertices->header_line) +
+    layout.coordinates[k] = find_property(*layout.vertices, {name[k]});
+    if (!layout.coordinates[k] || layout.coordinates[k]->list)
+      throw InputError(path + ":" + std::to_string(layout.vertices->header_line) +
                        ": the vertex element has no scalar property '" + name[k] + "'");
   }
-  const Property *corner_list = nullptr;
-  if (faces) {
-    corner_list = find_property(*faces, {"vertex_indices", "vertex_index"});
-    if (!corner_list || !corner_list->list || !is_integer(corner_list->type))
-      throw InputError(path + ":" + std::to_string(faces->header_line) +
+  if (layout.faces) {
+    layout.corner_list = find_property(*layout.faces, {"vertex_indices", "vertex_index"});
+    if (!layout.corner_list || !layout.corner_list->list || !is_integer(layout.corner_list->type))
+      throw InputError(path + ":" + std::to_string(layout.faces->header_line) +
                        ": the face element has no integer list 'vertex_indices'");
   } else {
     notes.push_back("the PLY file has no face element (a point cloud?)");
   }
+  return layout;
+}
+
+// One instance of `element`: a vertex's position, a face's corners, or values passed over.
+void read_instance(ValueReader &reader, const MeshLayout &layout, const Element &element,
+                   const std::string &what, Point3 &position, std::vector<int> &polygon) {
+  const uint64_t vertex_count = layout.vertices->count;
+  for (const Property &property : element.properties) {
+    if (!property.list) {
+      const double number = reader.value(property.type, what);
+      if (&element == layout.vertices)
+        for (int k = 0; k < 3; ++k)
+          if (&property == layout.coordinates[k]) position[k] = number;
+      continue;
+    }
+    // A list can hold no more values than bytes are left in the file.
+    const bool corners = &property == layout.corner_list;
+    const uint64_t length = reader.count(
+        property.count_type, corners ? vertex_count : uint64_t(reader.remaining()), what);
+    if (corners && length < 3)
+      reader.fail(what + " has " + std::to_string(length) + (length == 1 ? " corner" : " corners") +
+                  "; a face needs at least 3");
+    for (uint64_t k = 0; k < length; ++k) {
+      const double number = reader.value(property.type, what);
+      if (!corners) continue;
+      if (number < 0 || number >= double(vertex_count))
+        reader.fail(what + " refers to vertex " + std::to_string(int64_t(number)) +
+                    ", but the file has vertices 0.." + std::to_string(vertex_count - 1));
+      polygon.push_back(int(number));
+    }
+  }
+}
+
+} // namespace
+
+MeshArrays read_ply(const std::string &path, const std::string &bytes,
+                    std::vector<std::string> &notes) {
+  if (bytes.empty()) throw InputError(path + ": the file is empty");
+  const Header header = HeaderParser(path, bytes).parse();
+  const MeshLayout layout = mesh_layout(path, bytes, header, notes);
 
   MeshArrays arrays;
-  arrays.positions.reserve(size_t(vertices->count));
-  if (faces) arrays.triangles.reserve(size_t(faces->count));
+  arrays.positions.reserve(size_t(layout.vertices->count));
   ValueReader reader(path, bytes, header);
-  const uint64_t vertex_count = vertices->count;
-  // A list can hold no more values than bytes are left in the file.
   // Faces are triangulated once all positions are known (an element order of faces first is
   // legal PLY).
   std::vector<std::vector<int>> polygon_list;
-  if (faces) polygon_list.reserve(size_t(faces->count));
+  if (layout.faces) {
+    arrays.triangles.reserve(size_t(layout.faces->count));
+    polygon_list.reserve(size_t(layout.faces->count));
+  }
   std::vector<int> polygon;
   for (const Element &element : header.elements) {
     for (uint64_t i = 0; i < element.count; ++i) {
-      const std::string what = element.name + " " + std::to_string(i);
       Point3 position(0, 0, 0);
       polygon.clear();
-      for (const Property &property : element.properties) {
-        if (!property.list) {
-          const double number = reader.value(property.type, what);
-          if (&element == vertices)
-            for (int k = 0; k < 3; ++k)
-              if (&property == coordinates[k]) position[k] = number;
-          continue;
-        }
-        const uint64_t length = reader.count(
-            property.count_type,
-            &property == corner_list ? vertex_count : uint64_t(reader.remaining()), what);
-        if (&property == corner_list && length < 3)
-          reader.fail(what + " has " + std::to_string(length) +
-                      (length == 1 ? " corner" : " corners") + "; a face needs at least 3");
-        for (uint64_t k = 0; k < length; ++k) {
-          const double number = reader.value(property.type, what);
-          if (&property != corner_list) continue;
-          if (number < 0 || number >= double(vertex_count))
-            reader.fail(what + " refers to vertex " + std::to_string(int64_t(number)) +
-                        ", but the file has vertices 0.." + std::to_string(vertex_count - 1));
-          polygon.push_back(int(number));
-        }
-      }
-      if (&element == vertices) arrays.positions.push_back(position);
-      if (&element == faces) polygon_list.push_back(polygon);
+      read_instance(reader, layout, element, element.name + " " + std::to_string(i), position,
+                    polygon);
+      if (&element == layout.vertices) arrays.positions.push_back(position);
+      if (&element == layout.faces) polygon_list.push_back(polygon);
     }
   }
   size_t polygons = 0;

@@ -43,7 +43,7 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   std::optional<Attempt> best;
   for (size_t attempt = 0; attempt < pairs.size(); ++attempt) {
     progress.report(0.6 + 0.1 * double(attempt) / double(pairs.size()), "meromorphic function");
-    Eigen::VectorXcd omega1 = Eigen::VectorXcd::Zero(forms.edges.edge_count());
+    Eigen::VectorXcd omega1 = Eigen::VectorXcd::Zero(prepared.edges.edge_count());
     Eigen::VectorXcd omega2 = omega1;
     for (int k = 0; k < forms.genus; ++k) {
       omega1 += pairs[attempt].first[k] * forms.normalized[k];
@@ -63,10 +63,9 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
     const Branching measured = analyse_branching(mesh, sphere, euler);
     result.generic = measured.riemann_hurwitz_ok && measured.degree == 2 * forms.genus - 2;
     result.deficit = std::abs(euler - (2 * measured.degree - measured.ramification));
-    for (const MeshFace &face : mesh.face) {
-      const Eigen::Vector3d &a = sphere[index_of(mesh, face.cV(0))],
-                            &b = sphere[index_of(mesh, face.cV(1))],
-                            &c = sphere[index_of(mesh, face.cV(2))];
+    for (const std::array<int, 3> &corners : prepared.incidence.corners) {
+      const Eigen::Vector3d &a = sphere[corners[0]], &b = sphere[corners[1]],
+                            &c = sphere[corners[2]];
       result.crowded += std::max({(a - b).norm(), (b - c).norm(), (c - a).norm()}) > 1.0;
     }
     auto rank = [](const Attempt &a) { return std::make_tuple(!a.generic, a.deficit, a.crowded); };

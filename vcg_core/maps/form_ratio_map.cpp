@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCore>
@@ -23,79 +24,91 @@ std::vector<Complex> holomorphic_coefficient(const Mesh &mesh, const MeshEdges &
   return local_coefficients(mesh, geometry, real_part, imaginary_part).f;
 }
 
-// In one chart of the sphere: values F at the vertices of `region` that fit the face samples
-// `ratio` (F at the centroid = mean of the corners, weighted by the face's share of the area and
-// 1 / (1 + |ratio|^2)^2, the sphere's metric) while keeping the piecewise-linear map conformal:
-// plus `stiffness` times the conformal energy (Dirichlet energy minus signed image area, zero for
-// a similarity on each face). A faint pull towards `guess` keeps every vertex determined.
-std::vector<Complex> solve_chart(const Mesh &mesh, const FaceIncidence &in,
-                                 const FaceGeometry &geometry, const std::vector<char> &region,
-                                 const std::vector<Complex> &ratio,
-                                 const std::vector<char> &ratio_known,
-                                 const std::vector<Complex> &guess) {
-  // Unknowns: the region's vertices only, numbered densely.
-  std::vector<int> id(region.size(), -1);
-  int n = 0;
+// A Hermitian system over the vertices of one region, numbered densely.
+struct ChartSystem {
+  std::vector<int> id; // per mesh vertex: its unknown, -1 outside the region
+  int unknowns = 0;
+  std::vector<Eigen::Triplet<Complex>> entries;
+  Eigen::VectorXcd right;
+  double largest_data_weight = 0;
+};
+
+// Face f's share: the data term (F at the centroid = mean of the corners, weighted by the face's
+// share of the area and the sphere's metric 1 / (1 + |ratio|^2)^2) when its sample is known, and
+// `stiffness` times the conformal energy (Dirichlet energy minus signed image area, zero for a
+// similarity on the face).
+void add_face(const MeshFace &face, const std::array<int, 3> &c, double area_share,
+              bool ratio_known, Complex ratio, ChartSystem &system) {
+  const double stiffness = 1.0; // conformal energy against the data's area-weighted misfit
+  // The sphere's metric over the face (1 at F = 0): both terms measure the map on the sphere.
+  const double metric = ratio_known ? 1.0 / std::pow(1.0 + std::norm(ratio), 2) : 0.0;
+  if (ratio_known) {
+    const double w = area_share * metric / 9.0;
+    system.largest_data_weight = std::max(system.largest_data_weight, w);
+    for (int a : c) {
+      for (int b : c)
+        system.entries.emplace_back(a, b, w);
+      system.right[a] += 3.0 * w * ratio;
+    }
+  }
+  for (int k = 0; k < 3; ++k) {
+    const int i = c[(k + 1) % 3], j = c[(k + 2) % 3];
+    const Point3 u = face.cP((k + 1) % 3) - face.cP(k), v = face.cP((k + 2) % 3) - face.cP(k);
+    const double cross = (u ^ v).Norm();
+    if (!(cross > 0)) continue;
+    const double weight = stiffness * metric * 0.25 * (u * v) / cross;
+    system.entries.emplace_back(i, i, weight);
+    system.entries.emplace_back(j, j, weight);
+    system.entries.emplace_back(i, j, -weight);
+    system.entries.emplace_back(j, i, -weight);
+    // minus the signed image area, 1/2 Im(conj(F_a) F_b) along the side a -> b
+    const Complex area = stiffness * metric * Complex(0, -0.25);
+    system.entries.emplace_back(c[k], c[(k + 1) % 3], -area);
+    system.entries.emplace_back(c[(k + 1) % 3], c[k], -std::conj(area));
+  }
+}
+
+ChartSystem chart_system(const Mesh &mesh, const FaceIncidence &in, const FaceGeometry &geometry,
+                         const std::vector<char> &region, const std::vector<Complex> &ratio,
+                         const std::vector<char> &ratio_known, const std::vector<Complex> &guess) {
+  ChartSystem system;
+  system.id.assign(region.size(), -1);
   for (size_t v = 0; v < region.size(); ++v)
-    if (region[v]) id[v] = n++;
+    if (region[v]) system.id[v] = system.unknowns++;
   double mean_area = 0;
   for (double a : geometry.areas)
     mean_area += a;
   mean_area /= double(std::max<size_t>(1, geometry.areas.size()));
-  const double stiffness = 1.0; // conformal energy against the data's area-weighted misfit
-  std::vector<Eigen::Triplet<Complex>> entries;
-  entries.reserve(in.corners.size() * 21 + region.size());
-  Eigen::VectorXcd right = Eigen::VectorXcd::Zero(n);
-  double largest = 0;
+  system.entries.reserve(in.corners.size() * 21 + region.size());
+  system.right = Eigen::VectorXcd::Zero(system.unknowns);
   for (size_t f = 0; f < in.corners.size(); ++f) {
     const auto &corners = in.corners[f];
     if (!region[corners[0]] || !region[corners[1]] || !region[corners[2]]) continue;
-    const std::array<int, 3> c = {id[corners[0]], id[corners[1]], id[corners[2]]};
-    // The sphere's metric over the face (1 at F = 0): both terms measure the map on the sphere.
-    const double metric = ratio_known[f] ? 1.0 / std::pow(1.0 + std::norm(ratio[f]), 2) : 0.0;
-    if (ratio_known[f]) {
-      const double w = geometry.areas[f] / mean_area * metric / 9.0;
-      largest = std::max(largest, w);
-      for (int a : c) {
-        for (int b : c)
-          entries.emplace_back(a, b, w);
-        right[a] += 3.0 * w * ratio[f];
-      }
-    }
-    const MeshFace &face = mesh.face[f];
-    for (int k = 0; k < 3; ++k) {
-      const int i = c[(k + 1) % 3], j = c[(k + 2) % 3];
-      const Point3 u = face.cP((k + 1) % 3) - face.cP(k), v = face.cP((k + 2) % 3) - face.cP(k);
-      const double cross = (u ^ v).Norm();
-      if (!(cross > 0)) continue;
-      const double weight = stiffness * metric * 0.25 * (u * v) / cross;
-      entries.emplace_back(i, i, weight);
-      entries.emplace_back(j, j, weight);
-      entries.emplace_back(i, j, -weight);
-      entries.emplace_back(j, i, -weight);
-      // minus the signed image area, 1/2 Im(conj(F_a) F_b) along the side a -> b
-      const Complex area = stiffness * metric * Complex(0, -0.25);
-      entries.emplace_back(c[k], c[(k + 1) % 3], -area);
-      entries.emplace_back(c[(k + 1) % 3], c[k], -std::conj(area));
-    }
+    add_face(mesh.face[f], {system.id[corners[0]], system.id[corners[1]], system.id[corners[2]]},
+             geometry.areas[f] / mean_area, ratio_known[f], ratio[f], system);
   }
-  const double pull = 1e-9 * (largest > 0 ? largest : 1.0);
+  // A faint pull towards `guess` keeps every vertex determined.
+  const double pull = 1e-9 * (system.largest_data_weight > 0 ? system.largest_data_weight : 1.0);
   for (size_t v = 0; v < region.size(); ++v)
-    if (id[v] >= 0) {
-      entries.emplace_back(id[v], id[v], pull);
-      right[id[v]] += pull * guess[v];
+    if (system.id[v] >= 0) {
+      system.entries.emplace_back(system.id[v], system.id[v], pull);
+      system.right[system.id[v]] += pull * guess[v];
     }
-  // The Hermitian system H x = r as the real symmetric one [[Re H, -Im H], [Im H, Re H]]
-  // [Re x; Im x] = [Re r; Im r], factored by CHOLMOD (supernodal).
+  return system;
+}
+
+// The Hermitian system H x = r as the real symmetric one [[Re H, -Im H], [Im H, Re H]]
+// [Re x; Im x] = [Re r; Im r], factored by CHOLMOD (supernodal). Empty when it cannot be solved.
+std::optional<Eigen::VectorXcd> solve_hermitian(ChartSystem &system) {
+  const int n = system.unknowns;
   // (CHOLMOD cannot analyse an empty matrix, and Eigen does not check that it could.)
-  std::vector<Complex> values(guess);
-  if (n == 0) return values;
-  for (const Eigen::Triplet<Complex> &t : entries)
+  if (n == 0) return std::nullopt;
+  for (const Eigen::Triplet<Complex> &t : system.entries)
     if (!std::isfinite(t.value().real()) || !std::isfinite(t.value().imag()))
-      return values; // the forms are not resolved here
+      return std::nullopt; // the forms are not resolved here
   Eigen::SparseMatrix<Complex> hermitian(n, n);
-  hermitian.setFromTriplets(entries.begin(), entries.end());
-  entries = {};
+  hermitian.setFromTriplets(system.entries.begin(), system.entries.end());
+  system.entries = {};
   // The lower triangle of the real form (CHOLMOD reads only that).
   std::vector<Eigen::Triplet<double>> real_entries;
   real_entries.reserve(size_t(hermitian.nonZeros()) * 2);
@@ -112,19 +125,35 @@ std::vector<Complex> solve_chart(const Mesh &mesh, const FaceIncidence &in,
   Eigen::SparseMatrix<double> normal(2 * n, 2 * n);
   normal.setFromTriplets(real_entries.begin(), real_entries.end());
   Eigen::VectorXd real_right(2 * n);
-  real_right << right.real(), right.imag();
-  if (!real_right.allFinite()) return values;
+  real_right << system.right.real(), system.right.imag();
+  if (!real_right.allFinite()) return std::nullopt;
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> factored(normal);
-  if (factored.info() != Eigen::Success) return values;
+  if (factored.info() != Eigen::Success) return std::nullopt;
   const Eigen::VectorXd real_solution = factored.solve(real_right);
-  if (factored.info() != Eigen::Success) return values;
+  if (factored.info() != Eigen::Success) return std::nullopt;
   Eigen::VectorXcd solution(n);
   for (int i = 0; i < n; ++i)
     solution[i] = Complex(real_solution[i], real_solution[i + n]);
-  for (size_t v = 0; v < region.size(); ++v)
-    if (id[v] >= 0 && std::isfinite(solution[id[v]].real()) &&
-        std::isfinite(solution[id[v]].imag()))
-      values[v] = solution[id[v]];
+  return solution;
+}
+
+// In one chart of the sphere: values F at the vertices of `region` that fit the face samples
+// `ratio` while keeping the piecewise-linear map conformal (see add_face); `guess` where the
+// system cannot be solved or a value comes out not finite.
+std::vector<Complex> solve_chart(const Mesh &mesh, const FaceIncidence &in,
+                                 const FaceGeometry &geometry, const std::vector<char> &region,
+                                 const std::vector<Complex> &ratio,
+                                 const std::vector<char> &ratio_known,
+                                 const std::vector<Complex> &guess) {
+  ChartSystem system = chart_system(mesh, in, geometry, region, ratio, ratio_known, guess);
+  std::vector<Complex> values(guess);
+  const std::optional<Eigen::VectorXcd> solution = solve_hermitian(system);
+  if (!solution) return values;
+  for (size_t v = 0; v < region.size(); ++v) {
+    const int i = system.id[v];
+    if (i >= 0 && std::isfinite((*solution)[i].real()) && std::isfinite((*solution)[i].imag()))
+      values[v] = (*solution)[i];
+  }
   return values;
 }
 

@@ -11,12 +11,11 @@ namespace meromorph {
 namespace {
 
 // Faces whose image is below double resolution (sphere_geometry.h).
-int collapsed_faces(const Mesh &mesh, const std::vector<PlaneValue> &values) {
+int collapsed_faces(const FaceIncidence &in, const std::vector<PlaneValue> &values) {
   int count = 0;
-  for (const MeshFace &face : mesh.face)
-    count += collapsed_image(to_sphere(values[size_t(index_of(mesh, face.cV(0)))]),
-                             to_sphere(values[size_t(index_of(mesh, face.cV(1)))]),
-                             to_sphere(values[size_t(index_of(mesh, face.cV(2)))]));
+  for (const std::array<int, 3> &c : in.corners)
+    count += collapsed_image(to_sphere(values[size_t(c[0])]), to_sphere(values[size_t(c[1])]),
+                             to_sphere(values[size_t(c[2])]));
   return count;
 }
 
@@ -36,7 +35,7 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
       std::set<int> near;
       for (int f : attempt.folded_faces)
         for (int k = 0; k < 3; ++k)
-          near.insert(index_of(mesh, mesh.face[f].cV(k)));
+          near.insert(prepared.incidence.corners[f][k]);
       for (int ring = 0; ring < 2; ++ring) {
         std::set<int> grown = near;
         for (int e = 0; e < edges.edge_count(); ++e)
@@ -58,7 +57,7 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
   auto solve_and_correct = [&](int pole_face) {
     Genus0Map map = solve(pole_face);
     map.values =
-        correct_genus0_map(mesh, edges, map.weights, solver, map.puncture_face, map.values).values;
+        correct_genus0_map(prepared, map.weights, solver, map.puncture_face, map.values).values;
     return map;
   };
   Genus0Map map = solve_and_correct(pole_face_asked);
@@ -68,8 +67,8 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
     // pole: the new map is nearly centred, so nothing is crowded.
     std::vector<PlaneValue> centred = map.values;
     const bool centred_ok = center_on_sphere(centred, areas).centroid_after.norm() < 1e-9;
-    const int collapsed = collapsed_faces(mesh, centred);
-    if (!centred_ok || collapsed > 0 || !folded_plane_faces(mesh, centred).empty()) {
+    const int collapsed = collapsed_faces(prepared.incidence, centred);
+    if (!centred_ok || collapsed > 0 || !folded_plane_faces(prepared.incidence, centred).empty()) {
       // Any face the centred map puts near the north pole will do; the best-shaped of those
       // models the pole most accurately.
       int pole_face = -1;
@@ -77,7 +76,7 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
       for (size_t f = 0; f < mesh.face.size(); ++f) {
         bool near_north = true;
         for (int k = 0; k < 3; ++k)
-          near_north &= to_sphere(centred[index_of(mesh, mesh.face[f].cV(k))]).z() > 0.9;
+          near_north &= to_sphere(centred[prepared.incidence.corners[f][k]]).z() > 0.9;
         if (!near_north) continue;
         const double angle = smallest_angle(mesh.face[f]);
         if (angle > best_angle) {
@@ -91,7 +90,7 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
         Genus0Map again = solve_and_correct(pole_face);
         std::vector<PlaneValue> centred_again = again.values;
         center_on_sphere(centred_again, areas);
-        if (collapsed_faces(mesh, centred_again) <= collapsed) map = std::move(again);
+        if (collapsed_faces(prepared.incidence, centred_again) <= collapsed) map = std::move(again);
       }
     }
   }

@@ -17,16 +17,17 @@ Eigen::Vector3d position(const MeshVertex &vertex) {
 
 // The Beltrami ratio nu = z_conj(w) / conj(z_w) of the linear map from face f, in its own
 // conformal coordinate w, to the values z at its corners.
-Complex face_shear(const Mesh &mesh, int f, const std::vector<PlaneValue> &values) {
-  const MeshFace &face = mesh.face[size_t(f)];
+Complex face_shear(const PreparedMesh &prepared, int f, const std::vector<PlaneValue> &values) {
+  const MeshFace &face = prepared.mesh.face[size_t(f)];
+  const std::array<int, 3> &corners = prepared.incidence.corners[size_t(f)];
   const Eigen::Vector3d p0 = position(*face.cV(0)), d1 = position(*face.cV(1)) - p0,
                         d2 = position(*face.cV(2)) - p0;
   const Eigen::Vector3d e1 = d1.normalized();
   const Eigen::Vector3d e2 = d1.cross(d2).cross(d1).normalized();
   const Complex w1(d1.dot(e1), 0), w2(d2.dot(e1), d2.dot(e2));
-  const Complex z0 = values[size_t(index_of(mesh, face.cV(0)))].w;
-  const Complex z1 = values[size_t(index_of(mesh, face.cV(1)))].w - z0;
-  const Complex z2 = values[size_t(index_of(mesh, face.cV(2)))].w - z0;
+  const Complex z0 = values[size_t(corners[0])].w;
+  const Complex z1 = values[size_t(corners[1])].w - z0;
+  const Complex z2 = values[size_t(corners[2])].w - z0;
   // z = a w + b conj(w) on the face: two equations for a and b.
   const Complex determinant = w1 * std::conj(w2) - w2 * std::conj(w1);
   const Complex a = (z1 * std::conj(w2) - z2 * std::conj(w1)) / determinant;
@@ -74,13 +75,14 @@ Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian
 
 } // namespace
 
-std::vector<int> folded_plane_faces(const Mesh &mesh, const std::vector<PlaneValue> &values) {
+std::vector<int> folded_plane_faces(const FaceIncidence &in,
+                                    const std::vector<PlaneValue> &values) {
   std::vector<int> folded;
-  for (size_t f = 0; f < mesh.face.size(); ++f) {
+  for (size_t f = 0; f < in.corners.size(); ++f) {
     PlaneValue corner[3];
     bool inside_unit_disk = true;
     for (int k = 0; k < 3; ++k) {
-      corner[k] = values[size_t(index_of(mesh, mesh.face[f].cV(k)))];
+      corner[k] = values[size_t(in.corners[f][k])];
       inside_unit_disk &= !corner[k].infinite && std::abs(corner[k].w) < 1;
     }
     Complex z[3];
@@ -106,17 +108,19 @@ std::vector<int> folded_plane_faces(const Mesh &mesh, const std::vector<PlaneVal
   return folded;
 }
 
-Genus0Correction correct_genus0_map(const Mesh &mesh, const MeshEdges &edges,
+Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
                                     const std::vector<double> &weights, SolverKind solver,
                                     int puncture_face, const std::vector<PlaneValue> &pinned_map) {
+  const MeshEdges &edges = prepared.edges;
+  const FaceIncidence &in = prepared.incidence;
   Genus0Correction out;
   out.values = pinned_map;
   const size_t n = pinned_map.size();
   for (const PlaneValue &value : pinned_map)
     if (value.infinite) return out;
-  const size_t folded_before = folded_plane_faces(mesh, pinned_map).size();
+  const size_t folded_before = folded_plane_faces(in, pinned_map).size();
   auto accept = [&](const std::vector<PlaneValue> &candidate) {
-    if (folded_plane_faces(mesh, candidate).size() > folded_before) return false;
+    if (folded_plane_faces(in, candidate).size() > folded_before) return false;
     out.values = candidate;
     ++out.steps_taken;
     return true;
@@ -130,13 +134,13 @@ Genus0Correction correct_genus0_map(const Mesh &mesh, const MeshEdges &edges,
       outer[size_t(order[i])] = 1;
   }
   std::vector<double> nu_real, nu_imag;
-  for (size_t f = 0; f < mesh.face.size(); ++f) {
+  for (size_t f = 0; f < in.corners.size(); ++f) {
     if (int(f) == puncture_face) continue;
     bool far = false;
     for (int k = 0; k < 3; ++k)
-      far |= bool(outer[size_t(index_of(mesh, mesh.face[f].cV(k)))]);
+      far |= bool(outer[size_t(in.corners[f][k])]);
     if (far) continue;
-    const Complex nu = face_shear(mesh, int(f), pinned_map);
+    const Complex nu = face_shear(prepared, int(f), pinned_map);
     if (!std::isfinite(nu.real()) || !std::isfinite(nu.imag())) continue;
     nu_real.push_back(nu.real());
     nu_imag.push_back(nu.imag());

@@ -1,6 +1,6 @@
 // Genus 0: the pinned-pole harmonic map made conformal, far from the pole and near it.
 //
-// In:  a closed genus-0 mesh, its edges, the edge weights the pinned-pole map was solved with,
+// In:  a closed genus-0 prepared mesh, the edge weights the pinned-pole map was solved with,
 //      the solver, and that map (genus0_map.h: finite values, the puncture face's corners pinned).
 // Out: the corrected values, or the input values where a correction would fold a face. Why:
 //      with three corners pinned the harmonic solution is z = A f + B conj(f) away from the pole,
@@ -25,6 +25,7 @@
 #include "forms/laplacian_solver.h"
 #include "mesh/mesh.h"
 #include "mesh/mesh_edges.h"
+#include "mesh/prepared_mesh.h"
 #include "sphere/sphere_geometry.h"
 
 namespace meromorph {
@@ -35,12 +36,12 @@ struct Genus0Correction {
   int steps_taken = 0; // 0 to 2
 };
 
-Genus0Correction correct_genus0_map(const Mesh &mesh, const MeshEdges &edges,
+Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
                                     const std::vector<double> &weights, SolverKind solver,
                                     int puncture_face, const std::vector<PlaneValue> &pinned_map);
 
 // Faces whose image turns clockwise in the plane (checked in the chart z where |z| < 1 on all
 // corners, else in 1 / z), or is flat; faces below what doubles resolve are not counted.
-std::vector<int> folded_plane_faces(const Mesh &mesh, const std::vector<PlaneValue> &values);
+std::vector<int> folded_plane_faces(const FaceIncidence &in, const std::vector<PlaneValue> &values);
 
 } // namespace meromorph

@@ -128,7 +128,7 @@ Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int punctu
     if (int(f) == puncture_face) continue;
     Complex z[3];
     for (int k = 0; k < 3; ++k)
-      z[k] = out.values[index_of(mesh, mesh.face[f].cV(k))].w;
+      z[k] = out.values[prepared.incidence.corners[f][k]].w;
     // A face smaller than about 1e-12 of its distance from 0 is below what doubles resolve: no
     // weight can unfold it (a better pole can; see parameterization.cpp).
     const double size = std::max(std::abs(z[1] - z[0]), std::abs(z[2] - z[0]));

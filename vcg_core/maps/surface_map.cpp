@@ -124,7 +124,12 @@ Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptio
     validation = validate_mesh(flat_free);
     if (const Finding *left = finding_left(validation, options.close_holes))
       throw refusal(*left, " (after zero-area faces were taken out)");
-    if (const Finding *still = validation.find(FindingKind::zero_area_faces)) throw refusal(*still);
+    // Left after the take-out: only a change of the model removes them.
+    if (const Finding *still = validation.find(FindingKind::zero_area_faces)) {
+      Finding left = *still;
+      left.remedies = {Remedy::remesh};
+      throw refusal(left, " (left after meromorph took out those it could)");
+    }
   }
   const Mesh &mesh = flat ? flat_free : whole;
   // The split copies sit on their originals by construction: of the notes, only the input's own.

@@ -80,15 +80,12 @@ std::vector<int> partners_around_edge(const MeshArrays &mesh, const std::vector<
   return partner;
 }
 
-} // namespace
-
-NonmanifoldSplit split_nonmanifold(const Mesh &input, Mesh &split) {
-  MeshArrays mesh = arrays_from_mesh(input);
-  const size_t vertex_count = mesh.positions.size(), face_count = mesh.triangles.size();
-
+// Every face's sides (faces with a repeated vertex have none), sorted so that the uses of one
+// edge are next to each other.
+std::vector<EdgeUse> sorted_edge_uses(const MeshArrays &mesh) {
   std::vector<EdgeUse> uses;
-  uses.reserve(3 * face_count);
-  for (size_t f = 0; f < face_count; ++f) {
+  uses.reserve(3 * mesh.triangles.size());
+  for (size_t f = 0; f < mesh.triangles.size(); ++f) {
     const auto &t = mesh.triangles[f];
     if (repeats_vertex(t)) continue;
     for (int k = 0; k < 3; ++k) {
@@ -97,41 +94,37 @@ NonmanifoldSplit split_nonmanifold(const Mesh &input, Mesh &split) {
     }
   }
   std::sort(uses.begin(), uses.end());
+  return uses;
+}
 
-  NonmanifoldSplit out;
-  CornerSets corners(3 * face_count);
-  auto corner_at = [&](const EdgeUse &use, int vertex) {
+// Face corners joined into sets, one set per vertex of the split mesh: two faces glued along an
+// edge share the corners at both its ends.
+struct CornerGluing {
+  const MeshArrays &mesh;
+  CornerSets corners;
+  explicit CornerGluing(const MeshArrays &m) : mesh(m), corners(3 * m.triangles.size()) {}
+
+  int corner_at(const EdgeUse &use, int vertex) const {
     const auto &t = mesh.triangles[size_t(use.face)];
     const int k = t[0] == vertex ? 0 : t[1] == vertex ? 1 : 2;
     return 3 * use.face + k;
-  };
-  auto glue = [&](const EdgeUse &one, const EdgeUse &other) {
+  }
+  int set_at(const EdgeUse &use, int vertex) { return corners.root(corner_at(use, vertex)); }
+  void glue(const EdgeUse &one, const EdgeUse &other) {
     for (int vertex : {one.low, one.high})
       corners.join(corner_at(one, vertex), corner_at(other, vertex));
-  };
-  // The faces around each edge; edges with two faces glued first, so that around an edge with
-  // more, faces already joined through their fans are known.
-  std::vector<std::vector<EdgeUse>> crowded;
-  for (size_t begin = 0, end; begin < uses.size(); begin = end) {
-    for (end = begin + 1; end < uses.size() && uses[end].low == uses[begin].low &&
-                          uses[end].high == uses[begin].high;
-         ++end) {
-    }
-    if (end - begin == 2) glue(uses[begin], uses[begin + 1]);
-    if (end - begin > 2) crowded.emplace_back(uses.begin() + long(begin), uses.begin() + long(end));
   }
-  for (const std::vector<EdgeUse> &around : crowded) {
-    out.split_edges.push_back({around[0].low, around[0].high});
-    // Two faces whose fans already meet at an end of the edge must be glued to each other (else
-    // the edge keeps more than two faces); the others are paired by their geometry.
+
+  // Around an edge with more than two faces: two faces whose fans already meet at an end of the
+  // edge must be glued to each other (else the edge keeps more than two faces); the others are
+  // paired by their geometry.
+  void glue_crowded_edge(const std::vector<EdgeUse> &around) {
     const size_t n = around.size();
     std::vector<std::vector<size_t>> joined(n);
     for (size_t i = 0; i < n; ++i)
       for (size_t j = 0; j < n; ++j)
-        if (i != j && (corners.root(corner_at(around[i], around[i].low)) ==
-                           corners.root(corner_at(around[j], around[j].low)) ||
-                       corners.root(corner_at(around[i], around[i].high)) ==
-                           corners.root(corner_at(around[j], around[j].high))))
+        if (i != j && (set_at(around[i], around[i].low) == set_at(around[j], around[j].low) ||
+                       set_at(around[i], around[i].high) == set_at(around[j], around[j].high)))
           joined[i].push_back(j);
     std::vector<EdgeUse> free;
     for (size_t i = 0; i < n; ++i) {
@@ -141,13 +134,17 @@ NonmanifoldSplit split_nonmanifold(const Mesh &input, Mesh &split) {
           around[i].from_vertex(mesh) != around[j].from_vertex(mesh))
         glue(around[i], around[j]);
     }
-    if (free.size() < 2) continue;
+    if (free.size() < 2) return;
     const std::vector<int> partner = partners_around_edge(mesh, free);
     for (size_t i = 0; i < free.size(); ++i)
       if (partner[i] > int(i)) glue(free[i], free[size_t(partner[i])]);
   }
+};
 
-  // One vertex per set of glued corners: the input's index for the fan of its first face.
+// One vertex per set of glued corners: the input's index for the fan of its first face, a new
+// vertex at the same position for every further fan. `mesh` gets the new vertices and corners.
+void give_each_fan_a_vertex(MeshArrays &mesh, CornerGluing &gluing, NonmanifoldSplit &out) {
+  const size_t vertex_count = mesh.positions.size(), face_count = mesh.triangles.size();
   std::vector<int> vertex_of_set(3 * face_count, -1);
   std::vector<char> claimed(vertex_count, 0), was_split(vertex_count, 0);
   out.source_vertex.resize(vertex_count);
@@ -157,7 +154,7 @@ NonmanifoldSplit split_nonmanifold(const Mesh &input, Mesh &split) {
     if (repeats_vertex(mesh.triangles[f])) continue;
     for (int k = 0; k < 3; ++k) {
       const int vertex = mesh.triangles[f][size_t(k)];
-      int &assigned = vertex_of_set[size_t(corners.root(int(3 * f) + k))];
+      int &assigned = vertex_of_set[size_t(gluing.corners.root(int(3 * f) + k))];
       if (assigned < 0) {
         if (!claimed[size_t(vertex)]) {
           claimed[size_t(vertex)] = 1;
@@ -176,6 +173,31 @@ NonmanifoldSplit split_nonmanifold(const Mesh &input, Mesh &split) {
     if (was_split[v]) out.split_vertices.push_back(int(v));
   out.added_vertices = int(mesh.positions.size() - vertex_count);
   mesh.triangles = std::move(triangles);
+}
+
+} // namespace
+
+NonmanifoldSplit split_nonmanifold(const Mesh &input, Mesh &split) {
+  MeshArrays mesh = arrays_from_mesh(input);
+  const std::vector<EdgeUse> uses = sorted_edge_uses(mesh);
+  NonmanifoldSplit out;
+  CornerGluing gluing(mesh);
+  // The faces around each edge; edges with two faces glued first, so that around an edge with
+  // more, faces already joined through their fans are known.
+  std::vector<std::vector<EdgeUse>> crowded;
+  for (size_t begin = 0, end; begin < uses.size(); begin = end) {
+    for (end = begin + 1; end < uses.size() && uses[end].low == uses[begin].low &&
+                          uses[end].high == uses[begin].high;
+         ++end) {
+    }
+    if (end - begin == 2) gluing.glue(uses[begin], uses[begin + 1]);
+    if (end - begin > 2) crowded.emplace_back(uses.begin() + long(begin), uses.begin() + long(end));
+  }
+  for (const std::vector<EdgeUse> &around : crowded) {
+    out.split_edges.push_back({around[0].low, around[0].high});
+    gluing.glue_crowded_edge(around);
+  }
+  give_each_fan_a_vertex(mesh, gluing, out);
   mesh_from_arrays(mesh, split);
   return out;
 }

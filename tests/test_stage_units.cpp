@@ -1,0 +1,662 @@
+// Direct tests of the older stages, each called on its own with inputs whose answer is known
+// exactly (the end-to-end tests are elsewhere): taking non-manifold spots apart, splitting into
+// parts, taking out zero-area faces, the Laplacian solver, harmonic and conjugate forms, local
+// coefficients, periods, the one-ring order, Floater's embedding, fold untangling, generic form
+// pairs, the ratio map and the pair search, genus 1's flat corners and areas, parts and the
+// texture grid, map quality, sheets and texture coordinates.
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <numeric>
+#include <set>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include "forms/harmonic_forms.h"
+#include "forms/holomorphic_forms.h"
+#include "forms/holomorphic_pipeline.h"
+#include "forms/homology_basis.h"
+#include "forms/laplacian_solver.h"
+#include "forms/periods.h"
+#include "maps/branch_star.h"
+#include "maps/floater_embedding.h"
+#include "maps/fold_untangling.h"
+#include "maps/form_pair_search.h"
+#include "maps/form_pairs.h"
+#include "maps/form_ratio_map.h"
+#include "maps/genus0_correction.h"
+#include "maps/genus1_branch_placement.h"
+#include "maps/parts_map.h"
+#include "mesh/cotan_laplacian.h"
+#include "mesh/face_vectors.h"
+#include "mesh/mesh_edges.h"
+#include "mesh/mesh_from_arrays.h"
+#include "mesh/nonmanifold_split.h"
+#include "mesh/prepared_mesh.h"
+#include "mesh/surface_parts.h"
+#include "mesh/topology.h"
+#include "mesh/validation.h"
+#include "mesh/zero_area_faces.h"
+#include "shapes/test_surfaces.h"
+#include "sphere/branch_points.h"
+#include "sphere/map_quality.h"
+#include "sphere/sheets.h"
+#include "sphere/sphere_geometry.h"
+#include "sphere/texture_coordinates.h"
+#include "test_support.h"
+
+namespace meromorph {
+namespace {
+
+MeshArrays icosphere_arrays(int subdivisions) {
+  Mesh mesh;
+  make_icosphere(mesh, subdivisions);
+  return arrays_from_mesh(mesh);
+}
+
+// Two icospheres side by side along x, the second's leftmost vertex merged into the first's
+// rightmost: one vertex where two closed surfaces touch.
+MeshArrays spheres_touching_at_a_vertex(int &shared) {
+  MeshArrays one = icosphere_arrays(1), other = one;
+  auto extreme = [](const MeshArrays &arrays, double sign) {
+    size_t best = 0;
+    for (size_t v = 0; v < arrays.positions.size(); ++v)
+      if (sign * arrays.positions[v][0] > sign * arrays.positions[best][0]) best = v;
+    return int(best);
+  };
+  shared = extreme(one, 1);
+  const int left = extreme(other, -1);
+  const Point3 shift = one.positions[size_t(shared)] - other.positions[size_t(left)];
+  std::vector<int> renumber(other.positions.size());
+  for (size_t v = 0; v < other.positions.size(); ++v) {
+    if (int(v) == left) {
+      renumber[v] = shared;
+      continue;
+    }
+    renumber[v] = int(one.positions.size());
+    one.positions.push_back(other.positions[v] + shift);
+  }
+  for (const auto &t : other.triangles)
+    one.triangles.push_back(
+        {renumber[size_t(t[0])], renumber[size_t(t[1])], renumber[size_t(t[2])]});
+  return one;
+}
+
+std::vector<Eigen::Vector3d> vertex_positions(const Mesh &mesh) {
+  std::vector<Eigen::Vector3d> positions;
+  for (const MeshVertex &vertex : mesh.vert)
+    positions.push_back(vertex.cP().ToEigenVector<Eigen::Vector3d>());
+  return positions;
+}
+
+int folded_count(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere) {
+  int count = 0;
+  for (size_t f = 0; f < in.corners.size(); ++f)
+    count += folded_face(in, sphere, int(f));
+  return count;
+}
+
+TEST(NonmanifoldSplit, TwoSpheresTouchingAtAVertexComeApart) {
+  int shared = -1;
+  const MeshArrays arrays = spheres_touching_at_a_vertex(shared);
+  Mesh touching, split;
+  mesh_from_arrays(arrays, touching);
+  EXPECT_EQ(compute_topology(touching).euler, 3); // two spheres less a vertex
+  const NonmanifoldSplit result = split_nonmanifold(touching, split);
+  EXPECT_EQ(result.added_vertices, 1);
+  EXPECT_EQ(result.split_vertices, std::vector<int>{shared});
+  EXPECT_TRUE(result.split_edges.empty());
+  ASSERT_EQ(result.source_vertex.size(), touching.vert.size() + 1);
+  EXPECT_EQ(result.source_vertex.back(), shared);
+  const Topology topology = compute_topology(split);
+  EXPECT_EQ(topology.euler, 4);
+  EXPECT_EQ(topology.component_faces.size(), 2u);
+  EXPECT_TRUE(topology.boundary_loops.empty());
+  EXPECT_EQ(topology.non_manifold_edges, 0);
+  ASSERT_EQ(split.face.size(), touching.face.size());
+  // The faces keep their order, and each corner's position.
+  for (size_t f = 0; f < split.face.size(); ++f)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ(split.face[f].cP(k), touching.face[f].cP(k)) << "face " << f;
+}
+
+TEST(NonmanifoldSplit, TwoCubesSharingAnEdgeBecomeTwoClosedCubes) {
+  const std::string path = ::testing::TempDir() + "cubes_sharing_an_edge.off";
+  { std::ofstream(path) << test::cubes_sharing_an_edge_off(); }
+  Mesh cubes, split;
+  test::load(path, cubes);
+  EXPECT_GT(compute_topology(cubes).non_manifold_edges, 0);
+  const NonmanifoldSplit result = split_nonmanifold(cubes, split);
+  ASSERT_EQ(result.split_edges.size(), 1u);
+  EXPECT_EQ(result.added_vertices, 2); // both ends of the edge
+  const Topology topology = compute_topology(split);
+  EXPECT_EQ(topology.non_manifold_edges, 0);
+  EXPECT_TRUE(topology.boundary_loops.empty());
+  EXPECT_EQ(topology.component_faces, (std::vector<int>{12, 12}));
+  EXPECT_EQ(topology.euler, 4);
+}
+
+TEST(SurfaceParts, TwoSpheresAreTwoPartsAndAHoleIsClosed) {
+  MeshArrays arrays = icosphere_arrays(1);
+  const size_t first_vertices = arrays.positions.size(), first_faces = arrays.triangles.size();
+  const MeshArrays second = icosphere_arrays(2);
+  for (const Point3 &p : second.positions)
+    arrays.positions.push_back(p + Point3(3, 0, 0));
+  for (const auto &t : second.triangles)
+    arrays.triangles.push_back(
+        {t[0] + int(first_vertices), t[1] + int(first_vertices), t[2] + int(first_vertices)});
+  arrays.triangles.erase(arrays.triangles.begin() + long(first_faces)); // a hole in the second
+  Mesh two;
+  mesh_from_arrays(arrays, two);
+  const SurfaceParts parts = split_into_closed_parts(two, true);
+  ASSERT_EQ(parts.parts.size(), 2u);
+  EXPECT_EQ(parts.parts[0].mesh.face.size(), first_faces);
+  ASSERT_EQ(parts.holes.size(), 1u);
+  EXPECT_EQ(parts.holes[0].part, 1);
+  EXPECT_EQ(parts.holes[0].edges, 3);
+  for (const SurfacePart &part : parts.parts) {
+    const Topology topology = compute_topology(part.mesh);
+    EXPECT_TRUE(topology.closed_manifold());
+    EXPECT_EQ(topology.genus, std::optional<int>(0));
+  }
+  // Every input vertex and face is in its part, and comes back from there.
+  for (size_t v = 0; v < two.vert.size(); ++v) {
+    const SurfacePart &part = parts.parts[size_t(parts.part_of_vertex[v])];
+    EXPECT_EQ(part.source_vertex[size_t(parts.vertex_in_part[v])], int(v));
+  }
+  for (size_t f = 0; f < two.face.size(); ++f) {
+    const SurfacePart &part = parts.parts[size_t(parts.part_of_face[f])];
+    EXPECT_EQ(part.source_face[size_t(parts.face_in_part[f])], int(f));
+  }
+}
+
+// An edge (a, b) of an icosphere split at a point: a new vertex m on the edge, its two faces
+// split in four.
+MeshArrays with_edge_split(double where) {
+  MeshArrays arrays = icosphere_arrays(2);
+  const std::array<int, 3> first = arrays.triangles[0];
+  const int a = first[0], b = first[1], c = first[2];
+  size_t across = 0;
+  int d = -1;
+  for (size_t f = 1; f < arrays.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k)
+      if (arrays.triangles[f][size_t(k)] == b && arrays.triangles[f][size_t((k + 1) % 3)] == a) {
+        across = f;
+        d = arrays.triangles[f][size_t((k + 2) % 3)];
+      }
+  const int m = int(arrays.positions.size());
+  arrays.positions.push_back(arrays.positions[size_t(a)] * (1 - where) +
+                             arrays.positions[size_t(b)] * where);
+  arrays.triangles[0] = {a, m, c};
+  arrays.triangles[across] = {m, a, d};
+  arrays.triangles.push_back({m, b, c});
+  arrays.triangles.push_back({b, m, d});
+  return arrays;
+}
+
+int zero_area_count(const Mesh &mesh) {
+  int count = 0;
+  for (const MeshFace &face : mesh.face)
+    count += has_zero_area(face);
+  return count;
+}
+
+TEST(ZeroAreaFaces, ANeedleIsCollapsedAndTheSurfaceKept) {
+  Mesh needled, work;
+  mesh_from_arrays(with_edge_split(0.0), needled); // m on a: two needles
+  ASSERT_EQ(zero_area_count(needled), 2);
+  const ZeroAreaFix fix = take_out_zero_area_faces(needled, work);
+  EXPECT_EQ(fix.zero_area_faces.size(), 2u);
+  EXPECT_EQ(fix.collapsed_edges, 1);
+  EXPECT_EQ(zero_area_count(work), 0);
+  EXPECT_EQ(work.face.size(), needled.face.size() - 2);
+  EXPECT_EQ(compute_topology(work).genus, std::optional<int>(0));
+  ASSERT_EQ(fix.vertex_in_work.size(), needled.vert.size());
+  ASSERT_EQ(fix.face_in_work.size(), needled.face.size());
+  for (size_t v = 0; v < needled.vert.size(); ++v)
+    if (fix.vertex_in_work[v] >= 0)
+      EXPECT_EQ(work.vert[size_t(fix.vertex_in_work[v])].cP(), needled.vert[v].cP());
+}
+
+TEST(ZeroAreaFaces, ACapIsFlippedAway) {
+  // The face (a, m, c) with m at the middle of a long side: move c onto the side (a, b) of its
+  // other face, which makes that face a cap.
+  MeshArrays arrays = icosphere_arrays(2);
+  const std::array<int, 3> face = arrays.triangles[0];
+  arrays.positions[size_t(face[2])] =
+      (arrays.positions[size_t(face[0])] + arrays.positions[size_t(face[1])]) * 0.5;
+  Mesh capped, work;
+  mesh_from_arrays(arrays, capped);
+  ASSERT_GE(zero_area_count(capped), 1);
+  const ZeroAreaFix fix = take_out_zero_area_faces(capped, work);
+  EXPECT_GE(fix.flipped_edges + fix.collapsed_edges, 1);
+  EXPECT_EQ(zero_area_count(work), 0);
+  EXPECT_EQ(compute_topology(work).genus, std::optional<int>(0));
+  EXPECT_EQ(fix.face_in_work[0], -1); // the cap itself changed
+}
+
+TEST(LaplacianSolver, BothFactorizationsSolveThePinnedSystem) {
+  EXPECT_EQ(solver_from_name("cholmod"), SolverKind::cholmod);
+  EXPECT_EQ(solver_from_name("ldlt"), SolverKind::eigen_ldlt);
+  EXPECT_STREQ(solver_name(SolverKind::eigen_ldlt), "ldlt");
+  Mesh mesh;
+  make_icosphere(mesh, 3);
+  const PreparedMesh prepared = prepare_mesh(mesh);
+  const int n = int(mesh.vert.size());
+  const Eigen::SparseMatrix<double> laplacian =
+      cotan_laplacian(n, prepared.edges, prepared.weights);
+  Eigen::VectorXd expected(n);
+  for (int v = 0; v < n; ++v)
+    expected[v] = std::sin(3.0 * mesh.vert[size_t(v)].cP()[0]) + mesh.vert[size_t(v)].cP()[2];
+  expected.array() -= expected[0]; // vertex 0 pinned at 0
+  const Eigen::VectorXd right = laplacian * expected;
+  for (SolverKind kind : {SolverKind::cholmod, SolverKind::eigen_ldlt}) {
+    const Eigen::VectorXd solved = factor_laplacian(laplacian, kind)->solve(right);
+    EXPECT_LT((solved - expected).cwiseAbs().maxCoeff(), 1e-8) << solver_name(kind);
+  }
+  // A Dirichlet problem: the pinned values are the caller's, put into the right-hand side.
+  const std::vector<int> pinned = {0, 5, 17};
+  Eigen::VectorXd boundary = Eigen::VectorXd::Zero(n);
+  for (int v : pinned)
+    boundary[v] = expected[v] + 1.0;
+  Eigen::VectorXd with_boundary = expected;
+  for (int v : pinned)
+    with_boundary[v] = boundary[v];
+  Eigen::VectorXd rhs = laplacian * with_boundary - laplacian * boundary;
+  for (int v : pinned)
+    rhs[v] = 0;
+  const Eigen::VectorXd free = factor_laplacian(laplacian, SolverKind::cholmod, pinned)->solve(rhs);
+  for (int v = 0; v < n; ++v)
+    if (std::find(pinned.begin(), pinned.end(), v) == pinned.end())
+      EXPECT_NEAR(free[v], with_boundary[v], 1e-8) << v;
+}
+
+struct TorusForms {
+  Mesh mesh;
+  std::unique_ptr<PreparedMesh> prepared;
+  HomologyBasis homology;
+  std::vector<Eigen::VectorXd> harmonic;
+};
+
+void torus_forms(TorusForms &out, int segments = 48) {
+  make_grid_torus(out.mesh, 2.0, 1.0, segments, segments / 2);
+  out.prepared = std::make_unique<PreparedMesh>(prepare_mesh(out.mesh));
+  const int n = int(out.mesh.vert.size());
+  out.homology = tree_cotree(n, out.prepared->edges);
+  const auto solver =
+      factor_laplacian(cotan_laplacian(n, out.prepared->edges, out.prepared->weights));
+  out.harmonic = harmonic_forms(out.homology.dual_forms, n, out.prepared->edges,
+                                out.prepared->weights, *solver);
+}
+
+TEST(HarmonicForms, CoClosedClosedAndWithTheSamePeriods) {
+  TorusForms torus;
+  torus_forms(torus);
+  const MeshEdges &edges = torus.prepared->edges;
+  ASSERT_EQ(torus.harmonic.size(), 2u);
+  for (size_t j = 0; j < 2; ++j) {
+    const Eigen::VectorXd &h = torus.harmonic[j], &omega = torus.homology.dual_forms[j];
+    const Eigen::VectorXd divergence =
+        weighted_divergence(int(torus.mesh.vert.size()), edges, torus.prepared->weights, h);
+    EXPECT_LT(divergence.cwiseAbs().maxCoeff(), 1e-9 * h.cwiseAbs().maxCoeff());
+    for (size_t f = 0; f < edges.face_edges.size(); ++f) {
+      double sum = 0;
+      for (int k = 0; k < 3; ++k)
+        sum += edges.face_signs[f][k] * h[edges.face_edges[f][k]];
+      ASSERT_LT(std::abs(sum), 1e-12) << "face " << f;
+    }
+    for (const auto &loop : torus.homology.primal_loops)
+      EXPECT_NEAR(integrate(h, loop), integrate(omega, loop), 1e-12);
+  }
+}
+
+TEST(HolomorphicForms, TheConjugateSquaredIsMinusOneInTheLimit) {
+  // The Hodge star of a torus's harmonic forms squares to -1: the discrete C^2 + 1 goes to zero
+  // in the square of the edge length, the fit's residual in the edge length (measured: 2.7e-2,
+  // 6.8e-3, 1.7e-3 and 0.137, 0.069, 0.035 at 24, 48, 96 segments).
+  double previous_residual = 0, previous_error = 0;
+  for (int segments : {24, 48, 96}) {
+    TorusForms torus;
+    torus_forms(torus, segments);
+    std::vector<Eigen::MatrixX3d> vectors;
+    for (const Eigen::VectorXd &h : torus.harmonic)
+      vectors.push_back(
+          face_vectors(torus.mesh, torus.prepared->edges, torus.prepared->geometry, h));
+    const ConjugateFit fit = conjugate_coefficients(vectors, torus.prepared->geometry);
+    const Eigen::MatrixXd square = fit.coefficients * fit.coefficients;
+    const double error = (square + Eigen::MatrixXd::Identity(2, 2)).norm();
+    EXPECT_LT(error, 0.03) << segments << "\n" << square;
+    if (previous_residual > 0) {
+      EXPECT_LT(fit.relative_residual, 0.6 * previous_residual) << segments;
+      EXPECT_LT(error, 0.3 * previous_error) << segments;
+    }
+    previous_residual = fit.relative_residual;
+    previous_error = error;
+  }
+}
+
+TEST(HolomorphicForms, LocalCoefficientsOfDzAndDzBar) {
+  MeshArrays arrays;
+  arrays.positions = {Point3(0, 0, 0), Point3(1, 0, 0), Point3(0.3, 0.8, 0)};
+  arrays.triangles = {{0, 1, 2}};
+  Mesh triangle;
+  mesh_from_arrays(arrays, triangle);
+  const FaceGeometry geometry = face_geometry(triangle);
+  Eigen::MatrixX3d dx(1, 3), dy(1, 3), minus_dy(1, 3);
+  dx << 1, 0, 0;
+  dy << 0, 1, 0;
+  minus_dy << 0, -1, 0;
+  const LocalCoefficients dz = local_coefficients(triangle, geometry, dx, dy);
+  EXPECT_NEAR(std::abs(dz.f[0]), 1.0, 1e-12);
+  EXPECT_NEAR(std::abs(dz.g[0]), 0.0, 1e-12);
+  const LocalCoefficients dzbar = local_coefficients(triangle, geometry, dx, minus_dy);
+  EXPECT_NEAR(std::abs(dzbar.f[0]), 0.0, 1e-12);
+  EXPECT_NEAR(std::abs(dzbar.g[0]), 1.0, 1e-12);
+}
+
+TEST(Periods, ModulusReductionAndSymplecticBasis) {
+  // 2.3 + 0.5i: less 2, then -1/tau (its modulus is below 1), then plus 1.
+  const std::complex<double> reduced = reduce_modulus({2.3, 0.5});
+  EXPECT_NEAR(reduced.real(), 1.0 - 0.3 / 0.34, 1e-12);
+  EXPECT_NEAR(reduced.imag(), 0.5 / 0.34, 1e-12);
+  EXPECT_NEAR(std::abs(reduce_modulus({0, 0.5}) - std::complex<double>(0, 2)), 0, 1e-12);
+  EXPECT_NEAR(std::abs(reduce_modulus({0, 1}) - std::complex<double>(0, 1)), 0, 1e-12);
+  // W = Q^T J Q for a unimodular Q: P^T W P = J.
+  Eigen::MatrixXi J = Eigen::MatrixXi::Zero(4, 4);
+  J.topRightCorner(2, 2) = Eigen::MatrixXi::Identity(2, 2);
+  J.bottomLeftCorner(2, 2) = -Eigen::MatrixXi::Identity(2, 2);
+  Eigen::MatrixXi Q(4, 4);
+  Q << 1, 2, 0, 1, 0, 1, 3, 0, 0, 0, 1, 0, 1, 2, 0, 2;
+  const Eigen::MatrixXi W = Q.transpose() * J * Q;
+  const Eigen::MatrixXi P = symplectic_basis(W);
+  EXPECT_EQ(P.transpose() * W * P, J);
+  EXPECT_EQ(std::abs(std::lround(P.cast<double>().determinant())), 1);
+  // The torus's two loops meet once.
+  TorusForms torus;
+  torus_forms(torus);
+  const Eigen::MatrixXi wedge = wedge_matrix(torus.homology.dual_forms, torus.prepared->edges);
+  EXPECT_EQ(wedge(0, 0), 0);
+  EXPECT_EQ(std::abs(wedge(0, 1)), 1);
+  EXPECT_EQ(wedge(1, 0), -wedge(0, 1));
+}
+
+TEST(BranchStar, TheOneRingInOrder) {
+  Mesh mesh;
+  make_icosphere(mesh, 2);
+  const FaceIncidence in = face_incidence(mesh);
+  std::set<std::array<int, 3>> faces;
+  for (const auto &c : in.corners)
+    for (int k = 0; k < 3; ++k)
+      faces.insert({c[size_t(k)], c[size_t((k + 1) % 3)], c[size_t((k + 2) % 3)]});
+  for (int v : {0, 11, 40}) {
+    const std::vector<int> ring = ordered_ring(in, v);
+    ASSERT_EQ(ring.size(), in.faces_of_vertex[size_t(v)].size()) << v;
+    for (size_t j = 0; j < ring.size(); ++j)
+      EXPECT_TRUE(faces.count({v, ring[j], ring[(j + 1) % ring.size()]})) << v << " " << j;
+  }
+}
+
+TEST(FloaterEmbedding, ADiskInTheGnomonicChartHasNoFold) {
+  Mesh mesh;
+  make_icosphere(mesh, 3);
+  const FaceIncidence in = face_incidence(mesh);
+  const Eigen::Vector3d centre = mesh.vert[0].cP().ToEigenVector<Eigen::Vector3d>().normalized();
+  const GnomonicChart chart(centre);
+  Eigen::Vector2d x;
+  ASSERT_TRUE(chart.to_chart(centre, x));
+  EXPECT_LT(x.norm(), 1e-12);
+  const Eigen::Vector3d p = Eigen::Vector3d(0.3, 0.2, 1.0).normalized();
+  const GnomonicChart at_p(p);
+  Eigen::Vector3d q = Eigen::Vector3d(0.5, -0.1, 0.9).normalized();
+  ASSERT_TRUE(at_p.to_chart(q, x));
+  EXPECT_LT((at_p.to_sphere(x) - q).norm(), 1e-12);
+  // Two rings around vertex 0 free, started all at the centre; the third ring fixed.
+  std::set<int> free_set = {0}, rim;
+  for (int ring = 0; ring < 2; ++ring) {
+    std::set<int> grown = free_set;
+    for (int v : free_set)
+      for (int f : in.faces_of_vertex[size_t(v)])
+        for (int w : in.corners[size_t(f)])
+          grown.insert(w);
+    free_set = grown;
+  }
+  for (int v : free_set)
+    for (int f : in.faces_of_vertex[size_t(v)])
+      for (int w : in.corners[size_t(f)])
+        if (!free_set.count(w)) rim.insert(w);
+  std::map<int, Eigen::Vector2d> positions;
+  for (int v : rim) {
+    ASSERT_TRUE(chart.to_chart(
+        mesh.vert[size_t(v)].cP().ToEigenVector<Eigen::Vector3d>().normalized(), positions[v]));
+  }
+  for (int v : free_set)
+    positions[v] = Eigen::Vector2d::Zero();
+  const std::vector<int> free(free_set.begin(), free_set.end());
+  ASSERT_TRUE(floater_embedding(mesh, in, free, positions));
+  for (size_t f = 0; f < in.corners.size(); ++f) {
+    const auto &c = in.corners[f];
+    if (!free_set.count(c[0]) && !free_set.count(c[1]) && !free_set.count(c[2])) continue;
+    const Eigen::Vector2d a = positions.at(c[0]), b = positions.at(c[1]), d = positions.at(c[2]);
+    const double turn = (b - a).x() * (d - a).y() - (b - a).y() * (d - a).x();
+    EXPECT_GT(turn, 0) << "face " << f;
+  }
+}
+
+TEST(FoldUntangling, AVertexPulledAcrossItsRingComesBack) {
+  Mesh mesh;
+  make_icosphere(mesh, 3);
+  const PreparedMesh prepared = prepare_mesh(mesh);
+  std::vector<Eigen::Vector3d> sphere = vertex_positions(mesh);
+  for (Eigen::Vector3d &p : sphere)
+    p.normalize();
+  ASSERT_EQ(folded_count(prepared.incidence, sphere), 0);
+  // Vertex 0 pushed over its first neighbour: the faces around it turn over.
+  const int neighbour = ordered_ring(prepared.incidence, 0)[0];
+  sphere[0] = (sphere[size_t(neighbour)] * 2 - sphere[0]).normalized();
+  ASSERT_GT(folded_count(prepared.incidence, sphere), 0);
+  EXPECT_GE(untangle_folds(prepared, sphere, {}), 1);
+  EXPECT_EQ(folded_count(prepared.incidence, sphere), 0);
+  // The fixed vertices stay where they are.
+  std::vector<Eigen::Vector3d> again = vertex_positions(mesh);
+  for (Eigen::Vector3d &p : again)
+    p.normalize();
+  again[0] = (again[size_t(neighbour)] * 2 - again[0]).normalized();
+  const Eigen::Vector3d held = again[0];
+  untangle_folds(prepared, again, {0});
+  EXPECT_EQ(again[0], held);
+}
+
+TEST(FormPairs, GenericAndTheSameOnEveryCall) {
+  for (int genus : {2, 3, 5}) {
+    const std::vector<FormPair> pairs = generic_form_pairs(genus);
+    ASSERT_GE(pairs.size(), 3u);
+    for (const FormPair &pair : pairs) {
+      ASSERT_EQ(pair.first.size(), genus);
+      ASSERT_EQ(pair.second.size(), genus);
+      std::vector<std::complex<double>> ratios;
+      for (int k = 0; k < genus; ++k) {
+        EXPECT_GT(std::abs(pair.first[k]), 1e-3);
+        EXPECT_GT(std::abs(pair.second[k]), 1e-3);
+        ratios.push_back(pair.first[k] / pair.second[k]);
+      }
+      for (int i = 0; i < genus; ++i)
+        for (int j = i + 1; j < genus; ++j)
+          EXPECT_GT(std::abs(ratios[size_t(i)] - ratios[size_t(j)]), 1e-3) << genus;
+    }
+    const std::vector<FormPair> again = generic_form_pairs(genus);
+    for (size_t i = 0; i < pairs.size(); ++i)
+      EXPECT_EQ(pairs[i].first, again[i].first);
+  }
+}
+
+TEST(FormRatioMap, GenusTwoRatioHasDegreeTwoAndTheSearchKeepsIt) {
+  Mesh eight;
+  test::load(test::data_path("eight.off"), eight);
+  const PreparedMesh prepared = prepare_mesh(eight);
+  const HolomorphicForms forms = compute_holomorphic_forms(prepared, SolverKind::cholmod, {});
+  ASSERT_EQ(forms.genus, 2);
+  const Eigen::VectorXcd sum = forms.normalized[0] + forms.normalized[1];
+  const Eigen::VectorXcd difference = forms.normalized[0] - forms.normalized[1];
+  const std::vector<PlaneValue> values = form_ratio_map(prepared, sum, difference);
+  ASSERT_EQ(values.size(), eight.vert.size());
+  std::vector<Eigen::Vector3d> sphere;
+  for (const PlaneValue &value : values)
+    sphere.push_back(to_sphere(value));
+  // The signed image area is twice the sphere's before any branch point is placed.
+  const std::vector<double> solid = face_solid_angles(eight, sphere);
+  EXPECT_NEAR(std::accumulate(solid.begin(), solid.end(), 0.0) / (4 * M_PI), 2.0, 0.05);
+
+  const PairSearch search = search_form_pairs(prepared, forms, {-1, -1}, true, Progress{});
+  EXPECT_GE(search.attempts, 1);
+  sphere.clear();
+  for (const PlaneValue &value : search.values)
+    sphere.push_back(to_sphere(value));
+  const Branching branching = analyse_branching(eight, sphere, -2);
+  EXPECT_EQ(branching.degree, 2);
+  EXPECT_TRUE(branching.riemann_hurwitz_ok);
+  EXPECT_EQ(branching.branch_vertices.size(), 6u);
+}
+
+TEST(Genus1Placement, FlatCornersAndAreasOfAGridTorus) {
+  Mesh mesh;
+  make_grid_torus(mesh, 2.0, 1.0, 48, 24);
+  const PreparedMesh prepared = prepare_mesh(mesh);
+  const HolomorphicForms forms = compute_holomorphic_forms(prepared, SolverKind::cholmod, {});
+  const Eigen::VectorXcd &psi = forms.normalized[0];
+  // The grid's quads are conformal rectangles: every widest corner is a right angle.
+  for (double corner : widest_flat_corners(prepared, psi))
+    EXPECT_NEAR(corner, M_PI / 2, 0.05);
+  // The flat area of the stars adds up to three times the flat torus's, Im tau (A-period 1).
+  const std::vector<double> ratio = flat_area_ratios(prepared, psi);
+  std::vector<double> star(mesh.vert.size(), 0.0);
+  for (size_t f = 0; f < mesh.face.size(); ++f)
+    for (int v : prepared.incidence.corners[f])
+      star[size_t(v)] += prepared.geometry.areas[f];
+  double flat = 0;
+  for (size_t v = 0; v < star.size(); ++v)
+    flat += ratio[v] * star[v];
+  EXPECT_NEAR(flat, 3 * std::abs(forms.riemann_matrix(0, 0).imag()), 1e-9);
+}
+
+TEST(Genus0Correction, FoldedPlaneFacesByOrientationInTheirChart) {
+  FaceIncidence in;
+  in.corners = {{0, 1, 2}, {0, 2, 1}, {3, 4, 5}};
+  const std::vector<PlaneValue> values = {{{0, 0}},  {{0.5, 0}}, {{0, 0.5}},
+                                          {{10, 0}}, {{0, -10}}, {{20, 0}}};
+  // The third face, outside the unit circle, is judged in 1 / z: (0.1, 0.1i, 0.05) turns
+  // counter-clockwise there. The second is the first turned over.
+  EXPECT_EQ(folded_plane_faces(in, values), std::vector<int>{1});
+}
+
+TEST(PartsMap, TextureGridAndEachPartMappedOnItsOwn) {
+  EXPECT_EQ(texture_grid_cells(1), 1);
+  EXPECT_EQ(texture_grid_cells(2), 2);
+  EXPECT_EQ(texture_grid_cells(4), 2);
+  EXPECT_EQ(texture_grid_cells(5), 3);
+  MeshArrays arrays = icosphere_arrays(2);
+  const size_t first = arrays.positions.size();
+  Mesh torus;
+  make_grid_torus(torus, 2.0, 1.0, 32, 16);
+  const MeshArrays second = arrays_from_mesh(torus);
+  for (const Point3 &p : second.positions)
+    arrays.positions.push_back(p + Point3(6, 0, 0));
+  for (const auto &t : second.triangles)
+    arrays.triangles.push_back({t[0] + int(first), t[1] + int(first), t[2] + int(first)});
+  Mesh two;
+  mesh_from_arrays(arrays, two);
+  const Parameterization map =
+      parameterize_parts(two, validate_mesh(two), ParameterizeOptions{}, Progress{});
+  ASSERT_EQ(map.components.size(), 2u);
+  EXPECT_EQ(map.components[0].genus, 0);
+  EXPECT_EQ(map.components[1].genus, 1);
+  EXPECT_EQ(map.components[0].degree, 1);
+  EXPECT_EQ(map.components[1].degree, 2);
+  EXPECT_EQ(map.branch_points.size(), 4u); // the torus's
+  ASSERT_EQ(map.sphere.size(), two.vert.size());
+  for (const Eigen::Vector3d &p : map.sphere)
+    EXPECT_NEAR(p.norm(), 1.0, 1e-9);
+}
+
+TEST(MapQuality, TheIdentityIsExactAndAMirrorFoldsEverything) {
+  Mesh mesh;
+  make_icosphere(mesh, 3);
+  const std::vector<Eigen::Vector3d> sphere = vertex_positions(mesh);
+  const MapQuality identity = measure_map_quality(mesh, sphere, {});
+  EXPECT_NEAR(identity.overall.angle_error_mean_degrees, 0.0, 1e-9);
+  EXPECT_NEAR(identity.overall.quasi_conformal_max, 1.0, 1e-9);
+  EXPECT_EQ(identity.overall.folded_faces, 0);
+  EXPECT_NEAR(face_angle_error_degrees(mesh, sphere, 7), 0.0, 1e-9);
+  std::vector<Eigen::Vector3d> mirrored = sphere;
+  for (Eigen::Vector3d &p : mirrored)
+    p.x() = -p.x();
+  const MapQuality mirror = measure_map_quality(mesh, mirrored, {});
+  EXPECT_EQ(mirror.overall.folded_faces, int(mesh.face.size()));
+  EXPECT_EQ(mirror.folded_face_indices.size(), mesh.face.size());
+}
+
+TEST(Sheets, TheSquareOfAMoebiusMapHasTwoLayersEachCoveringTheSphere) {
+  // z -> (chart at p)^2 on an icosphere: degree 2, branched at p and its antipode -p.
+  Mesh mesh;
+  make_icosphere(mesh, 4);
+  const std::vector<Eigen::Vector3d> positions = vertex_positions(mesh);
+  const int p = 0;
+  int antipode = -1;
+  for (size_t v = 0; v < positions.size(); ++v)
+    if ((positions[v] + positions[size_t(p)]).norm() < 1e-9) antipode = int(v);
+  ASSERT_GE(antipode, 0);
+  std::vector<Eigen::Vector3d> sphere;
+  const Eigen::Vector3d north(0, 0, 1);
+  for (const Eigen::Vector3d &q : positions) {
+    const Complex w = chart_at(positions[size_t(p)].normalized(), q.normalized());
+    sphere.push_back(from_chart(north, w * w));
+  }
+  const std::vector<int> branch = {p, antipode};
+  const Sheets sheets = label_sheets(mesh, build_mesh_edges(mesh), sphere, branch, 2);
+  ASSERT_EQ(sheets.count, 2);
+  ASSERT_EQ(sheets.coverage.size(), 2u);
+  for (double coverage : sheets.coverage)
+    EXPECT_NEAR(coverage, 1.0, 0.02);
+  ASSERT_EQ(sheets.face_layer.size(), mesh.face.size());
+  ASSERT_EQ(sheets.vertex_layer.size(), mesh.vert.size());
+  const Branching branching = analyse_branching(mesh, sphere, 2);
+  EXPECT_EQ(branching.degree, 2);
+  EXPECT_EQ(branching.branch_vertices.size(), 2u);
+}
+
+TEST(TextureCoordinates, LongitudeLatitudeAndTheSeam) {
+  auto uv = [](double x, double y, double z) {
+    return texture_coordinate(Eigen::Vector3d(x, y, z), UvKind::spherical);
+  };
+  EXPECT_NEAR(uv(1, 0, 0)[0], 0.5, 1e-12);
+  EXPECT_NEAR(uv(1, 0, 0)[1], 0.5, 1e-12);
+  EXPECT_NEAR(uv(0, 1, 0)[0], 0.75, 1e-12);
+  EXPECT_NEAR(uv(0, 0, 1)[1], 0.0, 1e-12);
+  EXPECT_NEAR(uv(0, 0, -1)[1], 1.0, 1e-12);
+  const Eigen::Vector3d w(0.3, -0.4, 0.5);
+  const std::array<double, 2> plane = texture_coordinate(w.normalized(), UvKind::stereographic);
+  const Complex expected = to_plane(w.normalized());
+  EXPECT_NEAR(plane[0], expected.real(), 1e-12);
+  EXPECT_NEAR(plane[1], expected.imag(), 1e-12);
+  // A face across longitude 180 degrees: its wedges are unwrapped, no corner a whole turn away.
+  MeshArrays arrays;
+  arrays.positions = {Point3(-1, 0.05, 0), Point3(-1, -0.05, 0), Point3(-1, 0, 0.1)};
+  arrays.triangles = {{0, 1, 2}};
+  Mesh triangle;
+  mesh_from_arrays(arrays, triangle);
+  std::vector<Eigen::Vector3d> sphere = vertex_positions(triangle);
+  for (Eigen::Vector3d &p : sphere)
+    p.normalize();
+  const TextureCoordinates texture = texture_coordinates(triangle, sphere, UvKind::spherical);
+  EXPECT_GT(std::abs(texture.vertex[0][0] - texture.vertex[1][0]), 0.9); // the seam
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      EXPECT_LT(std::abs(texture.wedge[0][size_t(i)][0] - texture.wedge[0][size_t(j)][0]), 0.1);
+}
+
+} // namespace
+} // namespace meromorph
