@@ -35,13 +35,8 @@ int run_forms(const FormsOptions &options) {
   const JobInput input = read_job_input(options.input, options.repair, mesh);
 
   TerminalProgress bar(options.quiet);
-  const HolomorphicForms forms = [&] {
-    try {
-      return compute_holomorphic_forms(mesh, solver, bar.progress());
-    } catch (const InputError &error) { // what is wrong with the mesh: say which file
-      throw InputError(options.input + ": " + error.what());
-    }
-  }();
+  const HolomorphicForms forms = naming_the_input(
+      options.input, [&] { return compute_holomorphic_forms(mesh, solver, bar.progress()); });
   bar.finish();
 
   nlohmann::json timings = {{"read", input.read_ms}};

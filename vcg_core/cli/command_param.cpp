@@ -126,13 +126,8 @@ int run_param(const ParamOptions &options) {
   const JobInput input = read_job_input(options.input, options.repair, mesh);
 
   TerminalProgress bar(options.quiet);
-  const Parameterization map = [&] {
-    try {
-      return parameterize_surface(mesh, settings, bar.progress());
-    } catch (const InputError &error) { // what is wrong with the mesh: say which file
-      throw InputError(options.input + ": " + error.what(), error.remedies());
-    }
-  }();
+  const Parameterization map = naming_the_input(
+      options.input, [&] { return parameterize_surface(mesh, settings, bar.progress()); });
   bar.finish();
   if (!map.valid) {
     std::cerr << "meromorph: error: " << options.input

@@ -1,13 +1,15 @@
 // The input of a CLI job: the mesh read (and repaired, when asked), with what that took.
 //
 // In:  the input path and whether to apply the safe repairs.
-// Out: the mesh, where it came from, the repairs made and the reading time in milliseconds.
+// Out: the mesh, where it came from, the repairs made and the reading time in milliseconds; and
+//      `naming_the_input`: a computation on it whose InputError says which file it is about.
 #pragma once
 
 #include <chrono>
 #include <string>
 #include <vector>
 
+#include "common/errors.h"
 #include "io/mesh_reader.h"
 #include "mesh/repair.h"
 
@@ -27,6 +29,14 @@ inline JobInput read_job_input(const std::string &path, bool repair, Mesh &mesh)
   input.read_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return input;
+}
+
+template <typename Compute> auto naming_the_input(const std::string &path, Compute compute) {
+  try {
+    return compute();
+  } catch (const InputError &error) { // what is wrong with the mesh: say which file
+    throw InputError(path + ": " + error.what(), error.remedies());
+  }
 }
 
 } // namespace meromorph::cli
