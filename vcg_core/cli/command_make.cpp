@@ -1,9 +1,11 @@
 // `meromorph make sphere|torus|genus -o OUT ...`: the project's deterministic test surfaces.
+#include <filesystem>
 #include <iostream>
 
 #include "cli/exit_codes.h"
 #include "commands.h"
 #include "common/errors.h"
+#include "io/mesh_reader.h"
 #include "io/mesh_writer.h"
 #include "mesh/topology.h"
 #include "shapes/rigid_motion.h"
@@ -33,6 +35,9 @@ struct MakeOptions {
   int tentacles = 6;
   double tentacle_length = 4.0;
   bool hole = false;
+  // subdivide
+  std::string input;
+  int steps = 1;
 };
 
 int finish(Mesh &mesh, const MakeOptions &options) {
@@ -132,6 +137,17 @@ CLI::App *add_blob(CLI::App *make, MakeOptions &options) {
   return blob;
 }
 
+CLI::App *add_subdivide(CLI::App *make, MakeOptions &options) {
+  CLI::App *subdivide = make->add_subcommand(
+      "subdivide", "A mesh subdivided flat: every face into four, the same surface (the "
+                   "benchmark's larger meshes).");
+  subdivide->add_option("INPUT", options.input, "mesh file (.ply, .obj, .off, .stl)")->required();
+  add_common(subdivide, options);
+  subdivide->add_option("-s,--steps", options.steps, "subdivision steps (0..8)")
+      ->capture_default_str();
+  return subdivide;
+}
+
 void make_torus(Mesh &mesh, const MakeOptions &options) {
   if (options.method == "implicit") {
     make_implicit_torus(mesh, options.major_radius, options.minor_radius, options.resolution,
@@ -159,10 +175,18 @@ Command add_make_command(CLI::App &app) {
                        "keep marching cubes' triangles (many obtuse and needle-shaped ones): a "
                        "stress test; default remeshes them isotropically");
   CLI::App *blob = add_blob(make, *options);
+  CLI::App *subdivide = add_subdivide(make, *options);
 
-  return [options, sphere, torus, blob]() {
+  return [options, sphere, torus, blob, subdivide]() {
     Mesh mesh;
-    if (sphere->parsed())
+    if (subdivide->parsed()) {
+      std::error_code error;
+      if (std::filesystem::equivalent(options->input, options->output, error))
+        throw ArgumentError(options->output + " is the input: write the subdivided mesh to "
+                                              "another file");
+      read_mesh(options->input, mesh);
+      subdivide_flat(mesh, options->steps);
+    } else if (sphere->parsed())
       make_icosphere(mesh, options->subdivisions, options->radius);
     else if (torus->parsed())
       make_torus(mesh, *options);

@@ -233,4 +233,15 @@ void inject_needles(Mesh &mesh, double fraction) {
   vcg::tri::UpdateBounding<Mesh>::Box(mesh);
 }
 
+void subdivide_flat(Mesh &mesh, int steps) {
+  if (steps < 0 || steps > 8) throw ArgumentError("subdivision steps must be between 0 and 8");
+  for (int step = 0; step < steps; ++step) {
+    vcg::tri::UpdateTopology<Mesh>::FaceFace(mesh);
+    vcg::tri::Refine(mesh, vcg::tri::MidPoint<Mesh>(&mesh), 0.0);
+    vcg::tri::Allocator<Mesh>::CompactEveryVector(mesh);
+  }
+  vcg::tri::UpdateTopology<Mesh>::FaceFace(mesh);
+  vcg::tri::UpdateBounding<Mesh>::Box(mesh);
+}
+
 } // namespace meromorph

@@ -44,4 +44,8 @@ void make_tentacle_blob(Mesh &mesh, int tentacles, double length, int resolution
 // The shape does not change.
 void inject_needles(Mesh &mesh, double fraction);
 
+// Flat midpoint subdivision, `steps` times: every edge split at its midpoint and every face into
+// four (vcglib's Refine): the same surface, with 4^steps times the faces.
+void subdivide_flat(Mesh &mesh, int steps);
+
 } // namespace meromorph

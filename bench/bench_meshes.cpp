@@ -1,0 +1,266 @@
+// Benchmark on meshes like users': the shared meshes of genus 0, 1 and 2 (maxplanck, kitten,
+// eight) and a generated genus-5 surface (no shared mesh has genus 5), each subdivided flat (every
+// face into four, the same surface) three times, the largest nearest 1M vertices (so about
+// 50k, 200k and 800k: each step multiplies by four). Per
+// mesh, each job in a process of its own (so its peak memory is its own):
+// - the floor: reading the file, the cotangent Laplacian, one CHOLMOD factorization and 2g solves
+//   (two for genus 0, the map's two coordinates);
+// - the main job as `meromorph param` runs it: reading the file and `parameterize_surface`, with
+//   the time of every stage, the rest (validation, copies) and the total, the ratio of the total
+//   to the floor, and the peak memory.
+// Then per genus and stage the scaling exponent: the slope of log time against log vertices over
+// the sizes (least squares). Prints Markdown tables.
+//
+// Usage: bench_meshes SHARED_MESHES_DIR [SIZES LARGEST_VERTICES]
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "forms/laplacian_solver.h"
+#include "io/mesh_reader.h"
+#include "io/mesh_writer.h"
+#include "maps/surface_map.h"
+#include "mesh/cotan_laplacian.h"
+#include "mesh/mesh_edges.h"
+#include "shapes/test_surfaces.h"
+
+using namespace meromorph;
+
+namespace {
+
+using Figures = std::map<std::string, double>;
+
+// The stages of the table, in the order `parameterize_surface` runs them.
+const std::vector<std::string> stages = {
+    "read",          "prepare",          "laplacian",   "homology",
+    "factorization", "harmonic",         "holomorphic", "meromorphic",
+    "mobius",        "branch_placement", "branching",   "texture_and_quality",
+    "rest"};
+
+double milliseconds(const std::function<void()> &work) {
+  const auto start = std::chrono::steady_clock::now();
+  work();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+double peak_megabytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / 1024.0; // kilobytes on Linux
+}
+
+// `job` in a child process; the figures it returns come back through a pipe.
+Figures in_child(const std::function<Figures()> &job) {
+  int ends[2];
+  if (pipe(ends) != 0) std::abort();
+  std::fflush(stdout);
+  const pid_t child = fork();
+  if (child == 0) {
+    close(ends[0]);
+    std::ostringstream text;
+    try {
+      for (const auto &[name, value] : job())
+        text << name << " " << value << "\n";
+    } catch (const std::exception &error) {
+      std::fprintf(stderr, "bench: %s\n", error.what());
+      std::_Exit(1);
+    }
+    text << "peak_mb " << peak_megabytes() << "\n";
+    const std::string bytes = text.str();
+    if (write(ends[1], bytes.data(), bytes.size()) != ssize_t(bytes.size())) std::_Exit(1);
+    std::_Exit(0);
+  }
+  close(ends[1]);
+  std::string bytes;
+  char buffer[4096];
+  for (ssize_t n; (n = read(ends[0], buffer, sizeof buffer)) > 0;)
+    bytes.append(buffer, size_t(n));
+  close(ends[0]);
+  int status = 0;
+  waitpid(child, &status, 0);
+  Figures figures;
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return figures;
+  std::istringstream lines(bytes);
+  std::string name;
+  for (double value; lines >> name >> value;)
+    figures[name] = value;
+  return figures;
+}
+
+struct Source {
+  std::string name;
+  int genus;
+  std::function<void(Mesh &)> make;
+};
+
+Figures floor_job(const std::string &path, int genus) {
+  Figures out;
+  Mesh mesh;
+  out["read"] = milliseconds([&] { read_mesh(path, mesh); });
+  Eigen::SparseMatrix<double> laplacian;
+  out["laplacian"] = milliseconds([&] {
+    const MeshEdges edges = build_mesh_edges(mesh);
+    laplacian = cotan_laplacian(mesh.VN(), edges, cotan_weights(mesh, edges));
+  });
+  std::unique_ptr<LaplacianSolver> solver;
+  out["factorization"] = milliseconds([&] { solver = factor_laplacian(laplacian); });
+  Eigen::VectorXd right = Eigen::VectorXd::Random(mesh.VN());
+  right.array() -= right.mean();
+  out["solves"] = milliseconds([&] {
+    for (int k = 0; k < std::max(2, 2 * genus); ++k)
+      solver->solve(right);
+  });
+  out["floor"] = out["read"] + out["laplacian"] + out["factorization"] + out["solves"];
+  return out;
+}
+
+Figures param_job(const std::string &path) {
+  Figures out;
+  const auto start = std::chrono::steady_clock::now();
+  Mesh mesh;
+  out["read"] = milliseconds([&] { read_mesh(path, mesh); });
+  const Parameterization map = parameterize_surface(mesh);
+  out["total"] =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  double staged = out["read"];
+  for (const auto &[stage, ms] : map.timings_ms) {
+    out[stage] += ms;
+    staged += ms;
+  }
+  out["rest"] = out["total"] - staged;
+  out["vertices"] = mesh.VN();
+  out["degree"] = map.degree;
+  out["valid"] = map.valid;
+  return out;
+}
+
+// Least-squares slope of log y against log x.
+double slope(const std::vector<double> &x, const std::vector<double> &y) {
+  const size_t n = x.size();
+  double mx = 0, my = 0;
+  for (size_t i = 0; i < n; ++i) {
+    mx += std::log(x[i]) / double(n);
+    my += std::log(std::max(y[i], 1e-3)) / double(n);
+  }
+  double sxy = 0, sxx = 0;
+  for (size_t i = 0; i < n; ++i) {
+    sxy += (std::log(x[i]) - mx) * (std::log(std::max(y[i], 1e-3)) - my);
+    sxx += (std::log(x[i]) - mx) * (std::log(x[i]) - mx);
+  }
+  return sxx > 0 ? sxy / sxx : 0.0;
+}
+
+// `sizes` subdivision steps one after the other, the last one's vertex count (about 4^k times
+// the base) nearest `largest` on a log scale.
+std::vector<int> steps_for(double base_vertices, int sizes, double largest) {
+  const int top = std::max(0, int(std::lround(std::log(largest / base_vertices) / std::log(4.0))));
+  std::vector<int> steps;
+  for (int k = std::max(0, top - sizes + 1); k <= top; ++k)
+    steps.push_back(k);
+  return steps;
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: bench_meshes SHARED_MESHES_DIR [SIZES LARGEST_VERTICES]\n");
+    return 2;
+  }
+  const std::string shared = argv[1];
+  const int sizes = argc > 2 ? std::max(1, std::atoi(argv[2])) : 3;
+  const double largest = argc > 3 ? std::atof(argv[3]) : 1e6;
+  const std::vector<Source> sources = {
+      {"maxplanck", 0, [&](Mesh &m) { read_mesh(shared + "/maxplanck.nf25k.off", m); }},
+      {"kitten", 1, [&](Mesh &m) { read_mesh(shared + "/kitten.nv40k.off", m); }},
+      {"eight", 2, [&](Mesh &m) { read_mesh(shared + "/eight.off", m); }},
+      {"genus 5 (generated)", 5, [](Mesh &m) { make_genus_surface(m, 5, 24); }},
+  };
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("meromorph-bench-" + std::to_string(getpid()) + ".ply"))
+                               .string();
+
+  std::printf("| mesh | vertices | genus |");
+  for (const std::string &stage : stages)
+    std::printf(" %s |", stage.c_str());
+  std::printf(" param | floor | ratio | factorization | degree | peak memory |\n|---|---|---|");
+  for (size_t i = 0; i < stages.size() + 6; ++i)
+    std::printf("---|");
+  std::printf("\n");
+  std::map<int, std::vector<Figures>> by_genus;
+  for (const Source &source : sources) {
+    Mesh base;
+    source.make(base);
+    const double base_vertices = base.VN();
+    for (int steps : steps_for(base_vertices, sizes, largest)) {
+      const Figures made = in_child([&]() -> Figures {
+        Mesh mesh;
+        source.make(mesh);
+        subdivide_flat(mesh, steps);
+        write_mesh(mesh, path);
+        return {{"vertices", double(mesh.VN())}};
+      });
+      if (made.empty()) {
+        std::printf("| %s x%d | could not be made |\n", source.name.c_str(), 1 << (2 * steps));
+        continue;
+      }
+      const Figures floor = in_child([&] { return floor_job(path, source.genus); });
+      Figures param = in_child([&] { return param_job(path); });
+      if (floor.empty() || param.empty()) {
+        std::printf("| %s x%d | %.0f | failed |\n", source.name.c_str(), 1 << (2 * steps),
+                    made.at("vertices"));
+        continue;
+      }
+      std::printf("| %s x%d | %.0f | %d |", source.name.c_str(), 1 << (2 * steps),
+                  param["vertices"], source.genus);
+      for (const std::string &stage : stages)
+        std::printf(" %.0f |", param[stage]);
+      std::printf(" %.0f ms | %.0f ms | %.1f | %.0f ms | %.0f%s | %.0f MB |\n", param["total"],
+                  floor.at("floor"), param["total"] / floor.at("floor"), floor.at("factorization"),
+                  param["degree"], param["valid"] ? "" : " (invalid)", param["peak_mb"]);
+      param["floor"] = floor.at("floor");
+      param["floor_factorization"] = floor.at("factorization");
+      by_genus[source.genus].push_back(param);
+    }
+  }
+  std::filesystem::remove(path);
+
+  std::printf("\nScaling exponent (time ~ vertices^p, fitted over the sizes):\n\n| genus |");
+  for (const std::string &stage : stages)
+    std::printf(" %s |", stage.c_str());
+  std::printf(" param | floor | floor factorization |\n|---|");
+  for (size_t i = 0; i < stages.size() + 3; ++i)
+    std::printf("---|");
+  std::printf("\n");
+  for (const auto &[genus, rows] : by_genus) {
+    if (rows.size() < 2) continue;
+    std::vector<double> vertices;
+    for (const Figures &row : rows)
+      vertices.push_back(row.at("vertices"));
+    auto exponent = [&](const std::string &key) {
+      std::vector<double> times;
+      for (const Figures &row : rows)
+        times.push_back(row.count(key) ? row.at(key) : 0.0);
+      return slope(vertices, times);
+    };
+    std::printf("| %d |", genus);
+    for (const std::string &stage : stages)
+      std::printf(" %.2f |", exponent(stage));
+    std::printf(" %.2f | %.2f | %.2f |\n", exponent("total"), exponent("floor"),
+                exponent("floor_factorization"));
+  }
+  return 0;
+}
