@@ -97,8 +97,8 @@ ChartSystem chart_system(const Mesh &mesh, const FaceIncidence &in, const FaceGe
   return system;
 }
 
-// The Hermitian system H x = r as the real symmetric one [[Re H, -Im H], [Im H, Re H]]
-// [Re x; Im x] = [Re r; Im r], factored by CHOLMOD (supernodal). Empty when it cannot be solved.
+// The Hermitian positive definite system H x = r, factored by CHOLMOD (supernodal, complex:
+// it reads the lower triangle). Empty when it cannot be solved.
 std::optional<Eigen::VectorXcd> solve_hermitian(ChartSystem &system) {
   const int n = system.unknowns;
   // (CHOLMOD cannot analyse an empty matrix, and Eigen does not check that it could.)
@@ -106,34 +106,14 @@ std::optional<Eigen::VectorXcd> solve_hermitian(ChartSystem &system) {
   for (const Eigen::Triplet<Complex> &t : system.entries)
     if (!std::isfinite(t.value().real()) || !std::isfinite(t.value().imag()))
       return std::nullopt; // the forms are not resolved here
+  if (!system.right.allFinite()) return std::nullopt;
   Eigen::SparseMatrix<Complex> hermitian(n, n);
   hermitian.setFromTriplets(system.entries.begin(), system.entries.end());
   system.entries = {};
-  // The lower triangle of the real form (CHOLMOD reads only that).
-  std::vector<Eigen::Triplet<double>> real_entries;
-  real_entries.reserve(size_t(hermitian.nonZeros()) * 2);
-  for (int column = 0; column < n; ++column)
-    for (Eigen::SparseMatrix<Complex>::InnerIterator it(hermitian, column); it; ++it) {
-      const int i = int(it.row()), j = column;
-      const double re = it.value().real(), im = it.value().imag();
-      if (i >= j) {
-        real_entries.emplace_back(i, j, re);
-        real_entries.emplace_back(i + n, j + n, re);
-      }
-      if (im != 0) real_entries.emplace_back(i + n, j, im); // Im H below, -Im H above
-    }
-  Eigen::SparseMatrix<double> normal(2 * n, 2 * n);
-  normal.setFromTriplets(real_entries.begin(), real_entries.end());
-  Eigen::VectorXd real_right(2 * n);
-  real_right << system.right.real(), system.right.imag();
-  if (!real_right.allFinite()) return std::nullopt;
-  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> factored(normal);
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<Complex>, Eigen::Lower> factored(hermitian);
   if (factored.info() != Eigen::Success) return std::nullopt;
-  const Eigen::VectorXd real_solution = factored.solve(real_right);
+  Eigen::VectorXcd solution = factored.solve(system.right);
   if (factored.info() != Eigen::Success) return std::nullopt;
-  Eigen::VectorXcd solution(n);
-  for (int i = 0; i < n; ++i)
-    solution[i] = Complex(real_solution[i], real_solution[i + n]);
   return solution;
 }
 
