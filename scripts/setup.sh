@@ -29,9 +29,20 @@ done
 src_list=/etc/apt/sources.list.d/meromorph-src.sources
 need_update=0
 if [ ! -f "$src_list" ]; then
-  sudo_if_needed tee "$src_list" >/dev/null <<'SRC'
+  # The mirror this machine's own binary packages come from (deb822 or one-line format).
+  mirror=$(sed -n 's/^URIs:[[:space:]]*\([^[:space:]]*\).*/\1/p' /etc/apt/sources.list.d/*.sources \
+             2>/dev/null | grep -v -- '-security' | head -n 1 || true)
+  if [ -z "$mirror" ] && [ -f /etc/apt/sources.list ]; then
+    mirror=$(awk '$1 == "deb" && $0 !~ /security/ { for (i = 2; i <= NF; ++i) if ($i ~ /:\/\//) { print $i; exit } }' \
+               /etc/apt/sources.list)
+  fi
+  if [ -z "$mirror" ]; then
+    echo "meromorph setup: no Debian package source found in /etc/apt to add its source packages from" >&2
+    exit 1
+  fi
+  sudo_if_needed tee "$src_list" >/dev/null <<SRC
 Types: deb-src
-URIs: http://deb.debian.org/debian
+URIs: $mirror
 Suites: bookworm
 Components: main
 Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
