@@ -25,6 +25,18 @@ Eigen::Vector3d translated_centroid(const std::vector<Eigen::Vector3d> &points,
   return sum / total;
 }
 
+// The derivative of the translated centroid with respect to the translation, at 0.
+Eigen::Matrix3d centroid_jacobian(const std::vector<Eigen::Vector3d> &points,
+                                  const std::vector<double> &weights) {
+  Eigen::Matrix3d moment = Eigen::Matrix3d::Zero();
+  double total = 0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    moment.noalias() += weights[i] * points[i] * points[i].transpose();
+    total += weights[i];
+  }
+  return 2 * moment / total - 2 * Eigen::Matrix3d::Identity();
+}
+
 } // namespace
 
 Eigen::Vector3d centroid(const std::vector<Eigen::Vector3d> &points,
@@ -83,16 +95,9 @@ MobiusCentering center_on_sphere(std::vector<PlaneValue> &values,
   out.centroid_before = centroid(points, weights);
   Eigen::Vector3d current = out.centroid_before;
   for (; out.steps < 100 && current.norm() > 1e-12; ++out.steps) {
-    // Newton step on c -> centroid after translating by c, Jacobian by central differences.
-    Eigen::Matrix3d jacobian;
-    const double h = 1e-6;
-    for (int k = 0; k < 3; ++k) {
-      const Eigen::Vector3d step = h * Eigen::Vector3d::Unit(k);
-      jacobian.col(k) = (translated_centroid(points, weights, step) -
-                         translated_centroid(points, weights, -step)) /
-                        (2 * h);
-    }
-    Eigen::Vector3d newton = -jacobian.fullPivLu().solve(current);
+    // Newton step on c -> centroid after translating by c. At c = 0 the translation moves x by
+    // -2 c + 2 (x . c) x to first order, so the Jacobian is 2 sum w x x^T / sum w - 2 I.
+    Eigen::Vector3d newton = -centroid_jacobian(points, weights).fullPivLu().solve(current);
     if (!newton.allFinite()) newton = Eigen::Vector3d::Zero();
     if (newton.norm() > 0.95) newton *= 0.95 / newton.norm();
     // Far from centred (mass crowded at one spot), Newton's model is poor: also try pushing
@@ -110,6 +115,9 @@ MobiusCentering center_on_sphere(std::vector<PlaneValue> &values,
         best = norm;
         c = candidate;
       }
+      // Newton's own step that halves the distance: in its region of quadratic convergence,
+      // where none of the others does better.
+      if (&candidate == &candidates.front() && norm < 0.5 * current.norm()) break;
     }
     if (c.norm() == 0) break;
     out.transformation = translation_matrix(c).after(out.transformation);
