@@ -115,8 +115,8 @@ MobiusCentering center_on_sphere(std::vector<PlaneValue> &values,
         best = norm;
         c = candidate;
       }
-      // Newton's own step that halves the distance: in its region of quadratic convergence,
-      // where none of the others does better.
+      // Newton's own step, where it halves the distance, is taken at once: that is its region of
+      // quadratic convergence (the others are for where its model is poor).
       if (&candidate == &candidates.front() && norm < 0.5 * current.norm()) break;
     }
     if (c.norm() == 0) break;
