@@ -1,7 +1,5 @@
 #include "maps/genus0_best_map.h"
 
-#include <set>
-
 #include "maps/genus0_correction.h"
 #include "maps/genus0_map.h"
 #include "mesh/face_vectors.h"
@@ -19,6 +17,20 @@ int collapsed_faces(const FaceIncidence &in, const std::vector<PlaneValue> &valu
   return count;
 }
 
+// Marks the vertices within `rings` edges of the marked ones.
+void grow_by_rings(const MeshEdges &edges, std::vector<char> &marked, int rings) {
+  for (int ring = 0; ring < rings; ++ring) {
+    std::vector<char> grown = marked;
+    for (const auto &ends : edges.vertices)
+      if (marked[size_t(ends[0])] || marked[size_t(ends[1])])
+        grown[size_t(ends[0])] = grown[size_t(ends[1])] = 1;
+    marked = std::move(grown);
+  }
+}
+
+// How far around raised weights the map is solved again first.
+constexpr int local_rings = 10;
+
 } // namespace
 
 Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, int pole_face_asked) {
@@ -32,22 +44,20 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
     std::vector<char> raise(edges.edge_count(), 0);
     Genus0Map attempt = genus0_map(prepared, solver, pole_face, raise);
     for (int round = 0; round < 4 && !attempt.folded_faces.empty(); ++round) {
-      std::set<int> near;
+      std::vector<char> near(mesh.vert.size(), 0);
       for (int f : attempt.folded_faces)
-        for (int k = 0; k < 3; ++k)
-          near.insert(prepared.incidence.corners[f][k]);
-      for (int ring = 0; ring < 2; ++ring) {
-        std::set<int> grown = near;
-        for (int e = 0; e < edges.edge_count(); ++e)
-          if (near.count(edges.vertices[e][0]) || near.count(edges.vertices[e][1])) {
-            grown.insert(edges.vertices[e][0]);
-            grown.insert(edges.vertices[e][1]);
-          }
-        near = grown;
-      }
+        for (int v : prepared.incidence.corners[f])
+          near[size_t(v)] = 1;
+      grow_by_rings(edges, near, 2);
       for (int e = 0; e < edges.edge_count(); ++e)
-        if (near.count(edges.vertices[e][0]) && near.count(edges.vertices[e][1])) raise[e] = 1;
-      attempt = genus0_map(prepared, solver, pole_face, raise);
+        if (near[size_t(edges.vertices[e][0])] && near[size_t(edges.vertices[e][1])]) raise[e] = 1;
+      // The weights change only there: solve again within a few rings of them first, the rest
+      // of the map kept; the whole map again where that still folds.
+      std::vector<char> region = near;
+      grow_by_rings(edges, region, local_rings);
+      Genus0Map local = genus0_map_again_in(prepared, solver, attempt, raise, region);
+      attempt = local.folded_faces.empty() ? std::move(local)
+                                           : genus0_map(prepared, solver, pole_face, raise);
     }
     if (!attempt.folded_faces.empty()) attempt = genus0_map(prepared, solver, pole_face, {});
     return attempt;

@@ -77,6 +77,25 @@ std::vector<int> pole_triangle(const Mesh &mesh, const FaceGeometry &geometry, i
   return corners;
 }
 
+// Orientation in the plane: every face but the pole face must turn counter-clockwise.
+std::vector<int> folds_in_the_plane(const FaceIncidence &in, const std::vector<PlaneValue> &values,
+                                    int puncture_face) {
+  std::vector<int> folded;
+  for (size_t f = 0; f < in.corners.size(); ++f) {
+    if (int(f) == puncture_face) continue;
+    Complex z[3];
+    for (int k = 0; k < 3; ++k)
+      z[k] = values[size_t(in.corners[f][k])].w;
+    // A face smaller than about 1e-12 of its distance from 0 is below what doubles resolve: no
+    // weight can unfold it (a better pole can; see parameterization.cpp).
+    const double size = std::max(std::abs(z[1] - z[0]), std::abs(z[2] - z[0]));
+    const double distance = std::max({std::abs(z[0]), std::abs(z[1]), std::abs(z[2])});
+    if (size < 1e-12 * distance) continue;
+    if (std::imag(std::conj(z[1] - z[0]) * (z[2] - z[0])) <= 0) folded.push_back(int(f));
+  }
+  return folded;
+}
+
 } // namespace
 
 Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int puncture_face,
@@ -123,19 +142,42 @@ Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int punctu
   out.values.reserve(mesh.vert.size());
   for (size_t i = 0; i < mesh.vert.size(); ++i)
     out.values.push_back({Complex(u[long(i)], v[long(i)]) * scale, false});
-  // Orientation in the plane: every face but the pole face must turn counter-clockwise.
-  for (size_t f = 0; f < mesh.face.size(); ++f) {
-    if (int(f) == puncture_face) continue;
-    Complex z[3];
-    for (int k = 0; k < 3; ++k)
-      z[k] = out.values[prepared.incidence.corners[f][k]].w;
-    // A face smaller than about 1e-12 of its distance from 0 is below what doubles resolve: no
-    // weight can unfold it (a better pole can; see parameterization.cpp).
-    const double size = std::max(std::abs(z[1] - z[0]), std::abs(z[2] - z[0]));
-    const double distance = std::max({std::abs(z[0]), std::abs(z[1]), std::abs(z[2])});
-    if (size < 1e-12 * distance) continue;
-    if (std::imag(std::conj(z[1] - z[0]) * (z[2] - z[0])) <= 0) out.folded_faces.push_back(int(f));
+  out.folded_faces = folds_in_the_plane(prepared.incidence, out.values, puncture_face);
+  out.weights = positive;
+  return out;
+}
+
+Genus0Map genus0_map_again_in(const PreparedMesh &prepared, SolverKind solver,
+                              const Genus0Map &first, const std::vector<char> &raise,
+                              const std::vector<char> &region) {
+  const MeshEdges &edges = prepared.edges;
+  const int n = int(prepared.mesh.vert.size());
+  Genus0Map out;
+  out.puncture_face = first.puncture_face;
+  const std::vector<double> positive = raised_weights(prepared.weights, raise, out.raised_weights);
+  const Eigen::SparseMatrix<double> laplacian = cotan_laplacian(n, edges, positive);
+  std::vector<int> pinned;
+  for (int v = 0; v < n; ++v)
+    if (!region[size_t(v)]) pinned.push_back(v);
+  for (int v : prepared.incidence.corners[size_t(first.puncture_face)])
+    if (region[size_t(v)]) pinned.push_back(v);
+  std::sort(pinned.begin(), pinned.end());
+  Eigen::VectorXd fixed_u = Eigen::VectorXd::Zero(n), fixed_v = fixed_u;
+  for (int v : pinned) {
+    fixed_u[v] = first.values[size_t(v)].w.real();
+    fixed_v[v] = first.values[size_t(v)].w.imag();
   }
+  const std::unique_ptr<LaplacianSolver> factored = factor_laplacian(laplacian, solver, pinned);
+  auto harmonic_extension = [&](const Eigen::VectorXd &fixed) {
+    Eigen::VectorXd x = factored->solve(-(laplacian * fixed)) + fixed;
+    x -= factored->solve(laplacian_of_differences(edges, positive, x));
+    return x;
+  };
+  const Eigen::VectorXd u = harmonic_extension(fixed_u), v = harmonic_extension(fixed_v);
+  out.values.reserve(size_t(n));
+  for (int i = 0; i < n; ++i)
+    out.values.push_back({Complex(u[i], v[i]), false});
+  out.folded_faces = folds_in_the_plane(prepared.incidence, out.values, out.puncture_face);
   out.weights = positive;
   return out;
 }
