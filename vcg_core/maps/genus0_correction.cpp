@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "maps/genus0_map.h"
 #include "mesh/cotan_laplacian.h"
 
 namespace meromorph {
@@ -49,27 +50,6 @@ std::vector<int> by_distance_from(const std::vector<PlaneValue> &values, Complex
   std::vector<int> out;
   for (const auto &entry : order)
     out.push_back(entry.second);
-  return out;
-}
-
-// The harmonic extension of complex values given at `pinned` (the rest ignored) to every other
-// vertex, with one step of iterative refinement (residual summed over edge differences).
-Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian,
-                                    const MeshEdges &edges, const std::vector<double> &weights,
-                                    SolverKind solver, const std::vector<int> &pinned,
-                                    const Eigen::VectorXcd &fixed) {
-  const std::unique_ptr<LaplacianSolver> factored = factor_laplacian(laplacian, solver, pinned);
-  Eigen::VectorXcd out(fixed.size());
-  for (int part = 0; part < 2; ++part) {
-    const Eigen::VectorXd given =
-        part == 0 ? Eigen::VectorXd(fixed.real()) : Eigen::VectorXd(fixed.imag());
-    Eigen::VectorXd x = factored->solve(-(laplacian * given)) + given;
-    x -= factored->solve(laplacian_of_differences(edges, weights, x));
-    if (part == 0)
-      out.real() = x;
-    else
-      out.imag() = x;
-  }
   return out;
 }
 

@@ -98,6 +98,26 @@ std::vector<int> folds_in_the_plane(const FaceIncidence &in, const std::vector<P
 
 } // namespace
 
+Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian,
+                                    const MeshEdges &edges, const std::vector<double> &weights,
+                                    SolverKind solver, const std::vector<int> &pinned,
+                                    const Eigen::VectorXcd &fixed, int refinement_steps) {
+  const std::unique_ptr<LaplacianSolver> factored = factor_laplacian(laplacian, solver, pinned);
+  Eigen::VectorXcd out(fixed.size());
+  for (int part = 0; part < 2; ++part) {
+    const Eigen::VectorXd given =
+        part == 0 ? Eigen::VectorXd(fixed.real()) : Eigen::VectorXd(fixed.imag());
+    Eigen::VectorXd x = factored->solve(-(laplacian * given)) + given;
+    for (int step = 0; step < refinement_steps; ++step)
+      x -= factored->solve(laplacian_of_differences(edges, weights, x));
+    if (part == 0)
+      out.real() = x;
+    else
+      out.imag() = x;
+  }
+  return out;
+}
+
 Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int puncture_face,
                      const std::vector<char> &raise) {
   const Mesh &mesh = prepared.mesh;
@@ -118,20 +138,16 @@ Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int punctu
   Eigen::VectorXd fixed_u, fixed_v;
   const std::vector<int> corners = pole_triangle(mesh, geometry, puncture_face, fixed_u, fixed_v);
 
-  // Dirichlet problem: L_free z_free = -L_free,pinned z_pinned.
-  const std::unique_ptr<LaplacianSolver> factored = factor_laplacian(laplacian, solver, corners);
-  // Long thin parts crowd into spots far smaller than the map's own scale, where one solve's
-  // error (relative to the whole map) can exceed the faces. Iterative refinement with the
-  // residual summed over edge differences (exact there) makes each spot accurate relative to its
-  // own size, down to the spacing of doubles.
-  auto harmonic_extension = [&](const Eigen::VectorXd &fixed) {
-    Eigen::VectorXd x = factored->solve(-(laplacian * fixed)) + fixed;
-    for (int step = 0; step < refinement_steps; ++step)
-      x -= factored->solve(laplacian_of_differences(edges, positive, x));
-    return x;
-  };
-  const Eigen::VectorXd u = harmonic_extension(fixed_u);
-  const Eigen::VectorXd v = harmonic_extension(fixed_v);
+  // Dirichlet problem: L_free z_free = -L_free,pinned z_pinned. Long thin parts crowd into spots
+  // far smaller than the map's own scale, where one solve's error (relative to the whole map)
+  // can exceed the faces: two steps of iterative refinement make each spot accurate relative to
+  // its own size, down to the spacing of doubles.
+  Eigen::VectorXcd fixed(long(mesh.vert.size()));
+  fixed.real() = fixed_u;
+  fixed.imag() = fixed_v;
+  const Eigen::VectorXcd z =
+      harmonic_extension(laplacian, edges, positive, solver, corners, fixed, refinement_steps);
+  const Eigen::VectorXd u = z.real(), v = z.imag();
 
   // Scale so that the median |z| is 1 (a Moebius scaling; centring comes later).
   std::vector<double> radii(mesh.vert.size());
@@ -162,21 +178,13 @@ Genus0Map genus0_map_again_in(const PreparedMesh &prepared, SolverKind solver,
   for (int v : prepared.incidence.corners[size_t(first.puncture_face)])
     if (region[size_t(v)]) pinned.push_back(v);
   std::sort(pinned.begin(), pinned.end());
-  Eigen::VectorXd fixed_u = Eigen::VectorXd::Zero(n), fixed_v = fixed_u;
-  for (int v : pinned) {
-    fixed_u[v] = first.values[size_t(v)].w.real();
-    fixed_v[v] = first.values[size_t(v)].w.imag();
-  }
-  const std::unique_ptr<LaplacianSolver> factored = factor_laplacian(laplacian, solver, pinned);
-  auto harmonic_extension = [&](const Eigen::VectorXd &fixed) {
-    Eigen::VectorXd x = factored->solve(-(laplacian * fixed)) + fixed;
-    x -= factored->solve(laplacian_of_differences(edges, positive, x));
-    return x;
-  };
-  const Eigen::VectorXd u = harmonic_extension(fixed_u), v = harmonic_extension(fixed_v);
+  Eigen::VectorXcd fixed = Eigen::VectorXcd::Zero(n);
+  for (int v : pinned)
+    fixed[v] = first.values[size_t(v)].w;
+  const Eigen::VectorXcd z = harmonic_extension(laplacian, edges, positive, solver, pinned, fixed);
   out.values.reserve(size_t(n));
   for (int i = 0; i < n; ++i)
-    out.values.push_back({Complex(u[i], v[i]), false});
+    out.values.push_back({z[i], false});
   out.folded_faces = folds_in_the_plane(prepared.incidence, out.values, out.puncture_face);
   out.weights = positive;
   return out;

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include "forms/laplacian_solver.h"
 #include "mesh/mesh.h"
@@ -32,6 +33,14 @@ struct Genus0Map {
   std::vector<double> weights;   // the edge weights solved with (some raised)
   std::vector<int> folded_faces; // in the plane, before projection, among faces doubles resolve
 };
+
+// The harmonic extension of complex values given at `pinned` (the rest ignored) to every other
+// vertex, with steps of iterative refinement (the residual summed over edge differences, exact
+// where the values crowd): one factorization of the free vertices' Laplacian, two solves a step.
+Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian,
+                                    const MeshEdges &edges, const std::vector<double> &weights,
+                                    SolverKind solver, const std::vector<int> &pinned,
+                                    const Eigen::VectorXcd &fixed, int refinement_steps = 1);
 
 // `raise` (one flag per edge; empty: every edge) says which weights get the positive floor: the
 // plain cotangent map is the most conformal, but with negative weights it may fold;
