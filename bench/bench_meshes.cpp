@@ -257,8 +257,15 @@ int main(int argc, char **argv) {
       return slope(vertices, times);
     };
     std::printf("| %d |", genus);
-    for (const std::string &stage : stages)
-      std::printf(" %.2f |", exponent(stage));
+    for (const std::string &stage : stages) {
+      bool ran = false; // a stage this genus does not have is shown as "-"
+      for (const Figures &row : rows)
+        ran = ran || (row.count(stage) && row.at(stage) > 0);
+      if (ran)
+        std::printf(" %.2f |", exponent(stage));
+      else
+        std::printf(" - |");
+    }
     std::printf(" %.2f | %.2f | %.2f |\n", exponent("total"), exponent("floor"),
                 exponent("floor_factorization"));
   }
