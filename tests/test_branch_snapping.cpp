@@ -30,9 +30,7 @@ TEST(BranchSnapping, FindsTheCriticalPointsOfPAtTheHalfPeriods) {
     for (int pass = 0; pass < 4; ++pass)
       if (!snap_branch_points(prepared, {&forms.normalized[0]}, values)) break;
 
-    std::vector<Eigen::Vector3d> sphere;
-    for (const PlaneValue &value : values)
-      sphere.push_back(to_sphere(value));
+    const std::vector<Eigen::Vector3d> sphere = to_sphere(values);
     const Branching branching = analyse_branching(mesh, sphere, 0);
     EXPECT_TRUE(branching.riemann_hurwitz_ok) << resolution;
     EXPECT_EQ(branching.degree, 2) << resolution;

@@ -94,6 +94,14 @@ std::vector<Eigen::Vector3d> vertex_positions(const Mesh &mesh) {
   return positions;
 }
 
+// The vertex positions pushed out onto the unit sphere.
+std::vector<Eigen::Vector3d> unit_positions(const Mesh &mesh) {
+  std::vector<Eigen::Vector3d> positions = vertex_positions(mesh);
+  for (Eigen::Vector3d &p : positions)
+    p.normalize();
+  return positions;
+}
+
 int folded_count(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere) {
   int count = 0;
   for (size_t f = 0; f < in.corners.size(); ++f)
@@ -451,9 +459,7 @@ TEST(FoldUntangling, AVertexPulledAcrossItsRingComesBack) {
   Mesh mesh;
   make_icosphere(mesh, 3);
   const PreparedMesh prepared = prepare_mesh(mesh);
-  std::vector<Eigen::Vector3d> sphere = vertex_positions(mesh);
-  for (Eigen::Vector3d &p : sphere)
-    p.normalize();
+  std::vector<Eigen::Vector3d> sphere = unit_positions(mesh);
   ASSERT_EQ(folded_count(prepared.incidence, sphere), 0);
   // Vertex 0 pushed over its first neighbour: the faces around it turn over.
   const int neighbour = ordered_ring(prepared.incidence, 0)[0];
@@ -462,9 +468,7 @@ TEST(FoldUntangling, AVertexPulledAcrossItsRingComesBack) {
   EXPECT_GE(untangle_folds(prepared, sphere, {}), 1);
   EXPECT_EQ(folded_count(prepared.incidence, sphere), 0);
   // The fixed vertices stay where they are.
-  std::vector<Eigen::Vector3d> again = vertex_positions(mesh);
-  for (Eigen::Vector3d &p : again)
-    p.normalize();
+  std::vector<Eigen::Vector3d> again = unit_positions(mesh);
   again[0] = (again[size_t(neighbour)] * 2 - again[0]).normalized();
   const Eigen::Vector3d held = again[0];
   untangle_folds(prepared, again, {0});
@@ -504,18 +508,14 @@ TEST(FormRatioMap, GenusTwoRatioHasDegreeTwoAndTheSearchKeepsIt) {
   const Eigen::VectorXcd difference = forms.normalized[0] - forms.normalized[1];
   const std::vector<PlaneValue> values = form_ratio_map(prepared, sum, difference);
   ASSERT_EQ(values.size(), eight.vert.size());
-  std::vector<Eigen::Vector3d> sphere;
-  for (const PlaneValue &value : values)
-    sphere.push_back(to_sphere(value));
+  std::vector<Eigen::Vector3d> sphere = to_sphere(values);
   // The signed image area is twice the sphere's before any branch point is placed.
   const std::vector<double> solid = face_solid_angles(eight, sphere);
   EXPECT_NEAR(std::accumulate(solid.begin(), solid.end(), 0.0) / (4 * M_PI), 2.0, 0.05);
 
   const PairSearch search = search_form_pairs(prepared, forms, {-1, -1}, true, Progress{});
   EXPECT_GE(search.attempts, 1);
-  sphere.clear();
-  for (const PlaneValue &value : search.values)
-    sphere.push_back(to_sphere(value));
+  sphere = to_sphere(search.values);
   const Branching branching = analyse_branching(eight, sphere, -2);
   EXPECT_EQ(branching.degree, 2);
   EXPECT_TRUE(branching.riemann_hurwitz_ok);
@@ -648,9 +648,7 @@ TEST(TextureCoordinates, LongitudeLatitudeAndTheSeam) {
   arrays.triangles = {{0, 1, 2}};
   Mesh triangle;
   mesh_from_arrays(arrays, triangle);
-  std::vector<Eigen::Vector3d> sphere = vertex_positions(triangle);
-  for (Eigen::Vector3d &p : sphere)
-    p.normalize();
+  std::vector<Eigen::Vector3d> sphere = unit_positions(triangle);
   const TextureCoordinates texture = texture_coordinates(triangle, sphere, UvKind::spherical);
   EXPECT_GT(std::abs(texture.vertex[0][0] - texture.vertex[1][0]), 0.9); // the seam
   for (int i = 0; i < 3; ++i)

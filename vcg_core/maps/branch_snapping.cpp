@@ -301,9 +301,7 @@ int snap_branch_points(const PreparedMesh &prepared,
   constexpr int fit_rings = 2;       // around the spot, where the model is fitted
   constexpr int max_shift_rings = 5; // around the chosen vertex, where the map is changed
   const FaceIncidence &in = prepared.incidence;
-  std::vector<Eigen::Vector3d> sphere;
-  for (const PlaneValue &v : plane_values)
-    sphere.push_back(to_sphere(v));
+  std::vector<Eigen::Vector3d> sphere = to_sphere(plane_values);
 
   int repaired = 0;
   for (const std::vector<int> &vertices : trouble_spots(in, sphere)) {

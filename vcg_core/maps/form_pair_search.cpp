@@ -57,9 +57,7 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
       result.snapped += repaired;
       if (!repaired) break;
     }
-    std::vector<Eigen::Vector3d> sphere;
-    for (const PlaneValue &value : result.values)
-      sphere.push_back(to_sphere(value));
+    const std::vector<Eigen::Vector3d> sphere = to_sphere(result.values);
     const Branching measured = analyse_branching(mesh, sphere, euler);
     result.generic = measured.riemann_hurwitz_ok && measured.degree == 2 * forms.genus - 2;
     result.deficit = std::abs(euler - (2 * measured.degree - measured.ramification));

@@ -39,9 +39,7 @@ void finish_on_sphere(const PreparedMesh &prepared, bool mobius, const Genus1Map
         int(std::count(placed.fold_free.begin(), placed.fold_free.end(), true));
     clock.done("branch_placement");
   }
-  out.sphere.reserve(values.size());
-  for (const PlaneValue &value : values)
-    out.sphere.push_back(to_sphere(value));
+  out.sphere = to_sphere(values);
 
   progress.report(0.8, "branch points and layers");
   // Everything below is measured on the map as written: vertex values, linear on each face.

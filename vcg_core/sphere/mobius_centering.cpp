@@ -46,14 +46,6 @@ Eigen::Vector3d centroid(const std::vector<Eigen::Vector3d> &points,
 
 namespace {
 
-std::vector<Eigen::Vector3d> project(const std::vector<PlaneValue> &values) {
-  std::vector<Eigen::Vector3d> points;
-  points.reserve(values.size());
-  for (const PlaneValue &v : values)
-    points.push_back(to_sphere(v));
-  return points;
-}
-
 // The plane form of the ball translation by c: fitted through three points of the 26 cube
 // directions whose points and images stay farthest from infinity (a strong translation pushes
 // nearly everything towards one spot, which may be the north pole).
@@ -91,7 +83,7 @@ MobiusCentering center_on_sphere(std::vector<PlaneValue> &values,
                                  const std::vector<double> &weights) {
   MobiusCentering out;
   const std::vector<PlaneValue> original = values;
-  std::vector<Eigen::Vector3d> points = project(values);
+  std::vector<Eigen::Vector3d> points = to_sphere(values);
   out.centroid_before = centroid(points, weights);
   Eigen::Vector3d current = out.centroid_before;
   for (; out.steps < 100 && current.norm() > 1e-12; ++out.steps) {
@@ -123,7 +115,7 @@ MobiusCentering center_on_sphere(std::vector<PlaneValue> &values,
     out.transformation = translation_matrix(c).after(out.transformation);
     for (size_t i = 0; i < values.size(); ++i)
       values[i] = out.transformation.apply(original[i]);
-    points = project(values);
+    points = to_sphere(values);
     const Eigen::Vector3d next = centroid(points, weights);
     if (next.norm() >= current.norm()) {
       current = next;

@@ -18,6 +18,14 @@ Eigen::Vector3d to_sphere(const PlaneValue &value) {
   return value.infinite ? Eigen::Vector3d(0, 0, 1) : to_sphere(value.w);
 }
 
+std::vector<Eigen::Vector3d> to_sphere(const std::vector<PlaneValue> &values) {
+  std::vector<Eigen::Vector3d> points;
+  points.reserve(values.size());
+  for (const PlaneValue &value : values)
+    points.push_back(to_sphere(value));
+  return points;
+}
+
 Complex to_plane(const Eigen::Vector3d &p) {
   const double denominator = std::max(1.0 - p.z(), 1e-300);
   return {p.x() / denominator, -p.y() / denominator};

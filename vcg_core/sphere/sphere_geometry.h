@@ -12,6 +12,7 @@
 #pragma once
 
 #include <complex>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -27,6 +28,7 @@ struct PlaneValue {
 
 Eigen::Vector3d to_sphere(const Complex &w);
 Eigen::Vector3d to_sphere(const PlaneValue &value);
+std::vector<Eigen::Vector3d> to_sphere(const std::vector<PlaneValue> &values); // each value
 Complex to_plane(const Eigen::Vector3d &p); // the north pole itself maps to a huge value
 
 double signed_solid_angle(const Eigen::Vector3d &a, const Eigen::Vector3d &b,
