@@ -30,7 +30,7 @@ struct ParamOptions {
   std::string uv = "spherical";
   std::string solver = "cholmod";
   bool no_mobius = false, repair = false, keep_invalid = false, close_holes = false,
-       pack_uv = false, split_nonmanifold = false, quiet = false;
+       pack_uv = false, split_nonmanifold = false, quiet = false, area_correct = false;
   int origin = -1;
   std::vector<int> forms{-1, -1};
   double layer_gap = 0.0;
@@ -50,6 +50,7 @@ ParameterizeOptions settings_from(const ParamOptions &options) {
   settings.close_holes = options.close_holes;
   settings.pack_uv = options.pack_uv;
   settings.split_nonmanifold = options.split_nonmanifold;
+  settings.area_correct = options.area_correct;
 
   return settings;
 }
@@ -195,6 +196,9 @@ Command add_param_command(CLI::App &app) {
                    "place layer k on the sphere of radius 1 + G*k so the layers can be seen")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
+  param->add_flag("--area-correct", options->area_correct,
+                  "after centring, apply the Moebius transformation that makes the map most even "
+                  "in area (the texture density spreads more evenly; angles are unchanged)");
   param->add_option("--pole-face", options->puncture_face,
                     "genus 0: the face mapped around the north pole (default: the best-shaped face "
                     "of about median area)");

@@ -18,5 +18,6 @@ Command add_info_command(CLI::App &app);
 Command add_make_command(CLI::App &app);
 Command add_forms_command(CLI::App &app);
 Command add_param_command(CLI::App &app);
+Command add_remesh_command(CLI::App &app);
 
 } // namespace meromorph::cli

@@ -47,7 +47,8 @@ void save_mesh(const Mesh &mesh, MeshFormat format, const std::string &file,
   case MeshFormat::ply: {
     vcg::tri::io::PlyInfo info;
     Mesh copy; // named attributes go on a copy: the caller's mesh is not changed
-    const bool extra = !options.vertex_properties.empty() || options.vertex_texcoords;
+    const bool extra = !options.vertex_properties.empty() ||
+                       !options.float_vertex_properties.empty() || options.vertex_texcoords;
     if (extra) vcg::tri::Append<Mesh, Mesh>::MeshCopy(copy, writable);
     // Every extra property is described here (with names that outlive the save), so nothing is
     // allocated for the exporter to leak.
@@ -83,6 +84,12 @@ void save_mesh(const Mesh &mesh, MeshFormat format, const std::string &file,
         for (size_t v = 0; v < copy.vert.size(); ++v)
           handle[v] = property.values.at(v);
       }
+    }
+    for (const FloatVertexProperty &property : options.float_vertex_properties) {
+      describe(property.name.c_str(), vcg::ply::T_FLOAT);
+      auto handle = vcg::tri::Allocator<Mesh>::AddPerVertexAttribute<float>(copy, property.name);
+      for (size_t v = 0; v < copy.vert.size(); ++v)
+        handle[v] = property.values.at(v);
     }
     code = vcg::tri::io::ExporterPLY<Mesh>::Save(extra ? copy : writable, file.c_str(),
                                                  options.binary, info);

@@ -2,8 +2,8 @@
 //
 // In:  a mesh, an output path (.ply, .obj, .off or .stl), and the paths that must not be written.
 // Out: the file, through vcglib's exporters (binary PLY by default, with per-vertex texture
-//      coordinates, quality, per-wedge texture coordinates and extra integer per-vertex
-//      properties when asked for).
+//      coordinates, quality, per-wedge texture coordinates and extra integer and float
+//      per-vertex properties when asked for).
 // Errors: ArgumentError when the output is one of the protected inputs (same file, even through
 //      another path or a link) or has an unsupported extension; WriteError (with the system's
 //      reason) when writing fails.
@@ -24,12 +24,19 @@ struct VertexProperty {
   bool byte = false;
 };
 
+// An extra per-vertex float property written to PLY files.
+struct FloatVertexProperty {
+  std::string name;
+  std::vector<float> values;
+};
+
 struct WriteOptions {
   bool binary = true;
   bool vertex_texcoords = false;
   bool vertex_quality = false;
   bool wedge_texcoords = false;
-  std::vector<VertexProperty> vertex_properties; // PLY only
+  std::vector<VertexProperty> vertex_properties;            // PLY only
+  std::vector<FloatVertexProperty> float_vertex_properties; // PLY only
 };
 
 // Throws ArgumentError if `output` names the same file as any of `inputs`.

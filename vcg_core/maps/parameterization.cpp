@@ -13,6 +13,7 @@
 #include "mesh/prepared_mesh.h"
 #include "mesh/unit_scale.h"
 #include "mesh/validation.h"
+#include "sphere/area_correction.h"
 
 namespace meromorph {
 namespace {
@@ -129,6 +130,15 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
   }
   Branching branching;
   adopt(std::move(written), out, branching);
+  if (options.area_correct) {
+    out.area_correction = correct_area(mesh, out.sphere, branching.degree);
+    if (out.area_correction.applied) {
+      out.mobius.transformation =
+          translation_matrix(out.area_correction.translation).after(out.mobius.transformation);
+      branching = analyse_branching(mesh, out.sphere, out.euler);
+    }
+    clock.done("area_correction");
+  }
   describe_written_map(input, mesh, prepared.edges, options, branching, out, progress, clock);
   progress.report(1.0, "done");
   return out;

@@ -5,10 +5,10 @@
 //      genus 1: the Weierstrass P-function of the flat coordinate, degree 2; genus g >= 2: the
 //      ratio (omega1 + omega2) / (omega1 - omega2) of two holomorphic forms, by default the first
 //      of a fixed list of generic pairs that the mesh resolves, degree 2g - 2), Moebius-centred
-//      unless asked not to; its degree, branch points with local degrees and the Riemann-Hurwitz
-//      check; layers (sheets) and the layered-sphere positions; texture coordinates per vertex and
-//      per wedge; distortion; modulus or Riemann matrix; timings. Nothing is forced: what is
-//      reported is what was measured.
+//      unless asked not to (and area-corrected when asked); its degree, branch points with local
+//      degrees and the Riemann-Hurwitz check; layers (sheets) and the layered-sphere positions;
+//      texture coordinates per vertex and per wedge; distortion; modulus or Riemann matrix;
+//      timings. Nothing is forced: what is reported is what was measured.
 #pragma once
 
 #include <array>
@@ -24,6 +24,7 @@
 #include "forms/laplacian_solver.h"
 #include "maps/form_pairs.h"
 #include "mesh/mesh.h"
+#include "sphere/area_correction.h"
 #include "sphere/map_quality.h"
 #include "sphere/mobius_centering.h"
 #include "sphere/sheets.h"
@@ -49,6 +50,9 @@ struct ParameterizeOptions {
   // parameterize_surface: take non-manifold vertices and edges apart for the computation
   // (nonmanifold_split.h) instead of refusing the mesh.
   bool split_nonmanifold = false;
+  // After centring: the Moebius transformation that makes the map most even in area
+  // (area_correction.h); conformality is unchanged, the texture density spreads more evenly.
+  bool area_correct = false;
 };
 
 // What parameterize_surface took apart (nonmanifold_split.h): input vertices that were split,
@@ -88,6 +92,7 @@ struct Parameterization {
   double non_holomorphicity_mean = 0;
   bool mobius_applied = false;
   MobiusCentering mobius;
+  AreaCorrection area_correction; // with options.area_correct
   MapQuality quality;
   Sheets sheets;
   std::vector<Eigen::Vector3d> sphere;  // unit sphere

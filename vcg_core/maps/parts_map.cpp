@@ -118,6 +118,7 @@ void finish_parts(const SurfaceParts &split, const ParameterizeOptions &options,
     out.pair_attempts = only.pair_attempts;
     out.origin_attempts = only.origin_attempts;
     out.sheets.coverage = only.sheets.coverage;
+    out.area_correction = only.area_correction;
   } else {
     out.method = "each part on its own (components)";
     if (options.pack_uv) {

@@ -126,6 +126,54 @@ void add_form_pair_json(const Parameterization &map, nlohmann::json &report) {
 
 } // namespace
 
+nlohmann::json area_correction_json(const AreaCorrection &correction) {
+  return {{"applied", correction.applied},
+          {"area_distortion_before", correction.distortion_before},
+          {"area_distortion_after", correction.distortion_after},
+          {"ball_translation", vector_json(correction.translation)}};
+}
+
+nlohmann::json remesh_json(const SurfaceRemesh &remesh) {
+  const RemeshQuality &q = remesh.quality;
+  nlohmann::json parts = nlohmann::json::array();
+  for (const RemeshPart &part : remesh.parts)
+    parts.push_back({{"frequency", part.frequency},
+                     {"degree", part.degree},
+                     {"ramification", part.ramification},
+                     {"target_vertices", part.target_vertices}});
+  nlohmann::json valence = nlohmann::json::array();
+  for (const auto &[count, vertices] : q.valence_histogram)
+    valence.push_back({count, vertices});
+  nlohmann::json sparse = nlohmann::json::array();
+  for (const SparseRegion &region : remesh.sparse_regions)
+    sparse.push_back({{"faces", region.faces},
+                      {"area_share", region.area_share},
+                      {"sample_share", region.sample_share},
+                      {"vertex", region.vertex}});
+  return {{"vertices", q.vertices},
+          {"edges", q.edges},
+          {"faces", q.faces},
+          {"euler", q.euler},
+          {"target_vertices", remesh.target_vertices},
+          {"parts", parts},
+          {"boundary_edges", q.boundary_edges},
+          {"nonmanifold_edges", q.nonmanifold_edges},
+          {"nonmanifold_vertices", q.nonmanifold_vertices},
+          {"unlifted_faces", remesh.unlifted_faces},
+          {"unclosed_faces", remesh.unclosed_faces},
+          {"folded_lifts", remesh.folded_lifts},
+          {"hausdorff_over_diagonal",
+           {{"to_input", q.hausdorff_to_input}, {"from_input", q.hausdorff_from_input}}},
+          {"mean_distance_over_diagonal",
+           {{"to_input", q.mean_distance_to_input}, {"from_input", q.mean_distance_from_input}}},
+          {"angles_degrees",
+           {{"min", q.min_angle_degrees},
+            {"mean", q.mean_angle_degrees},
+            {"min_away_from_branch_vertices", q.min_angle_away_from_branch_degrees}}},
+          {"valence_histogram", valence},
+          {"sparsely_sampled_regions", sparse}};
+}
+
 nlohmann::json parameterization_json(const Parameterization &map) {
   nlohmann::json timings = nlohmann::json::object();
   for (const auto &[stage, ms] : map.timings_ms) // a stage run more than once: its total
@@ -166,6 +214,8 @@ nlohmann::json parameterization_json(const Parameterization &map) {
     report["origin_vertex"] = map.origin_vertex;
     report["origin_attempts"] = map.origin_attempts;
   }
+  if (map.area_correction.applied || map.area_correction.distortion_before > 0)
+    report["area_correction"] = area_correction_json(map.area_correction);
   report["valid"] = map.valid;
   report["invalid"] = map.invalid;
   if (!map.advice.empty()) {

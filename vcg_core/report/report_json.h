@@ -1,6 +1,6 @@
 // JSON views of the core's results, shared by the CLI reports and the C ABI.
 //
-// In:  a Topology, a Validation, a MeshSource, a Parameterization.
+// In:  a Topology, a Validation, a MeshSource, a Parameterization, a SurfaceRemesh.
 // Out: nlohmann::json objects with the field names documented in the README (`info --json`), and
 //      their text.
 #pragma once
@@ -14,6 +14,7 @@
 #include "maps/parameterization.h"
 #include "mesh/topology.h"
 #include "mesh/validation.h"
+#include "remesh/surface_remesh.h"
 
 namespace meromorph {
 
@@ -25,6 +26,10 @@ nlohmann::json source_json(const MeshSource &source);
 
 // The REPORT.json of `meromorph param` (design.md section 3), without input, repairs and version.
 nlohmann::json parameterization_json(const Parameterization &map);
+
+// The `remesh` part of the REPORT.json of `meromorph remesh`, and the area correction's figures.
+nlohmann::json remesh_json(const SurfaceRemesh &remesh);
+nlohmann::json area_correction_json(const AreaCorrection &correction);
 
 // The text of a report, indented by 2. Bytes that are not UTF-8 (a file name, or file content
 // quoted in a message) are replaced by U+FFFD rather than failing.

@@ -5,21 +5,22 @@
 #include <Eigen/Dense>
 
 namespace meromorph {
-namespace {
 
-Eigen::Vector3d translate(const Eigen::Vector3d &x, const Eigen::Vector3d &c) {
+Eigen::Vector3d ball_translate(const Eigen::Vector3d &x, const Eigen::Vector3d &c) {
   const Eigen::Vector3d d = x - c;
   const double d2 = d.squaredNorm();
   if (d2 < 1e-300) return -c.normalized(); // the point at c goes to the antipode of c's direction
   return ((1 - c.squaredNorm()) * d / d2 - c).normalized();
 }
 
+namespace {
+
 Eigen::Vector3d translated_centroid(const std::vector<Eigen::Vector3d> &points,
                                     const std::vector<double> &weights, const Eigen::Vector3d &c) {
   Eigen::Vector3d sum = Eigen::Vector3d::Zero();
   double total = 0;
   for (size_t i = 0; i < points.size(); ++i) {
-    sum += weights[i] * translate(points[i], c);
+    sum += weights[i] * ball_translate(points[i], c);
     total += weights[i];
   }
   return sum / total;
@@ -44,8 +45,6 @@ Eigen::Vector3d centroid(const std::vector<Eigen::Vector3d> &points,
   return translated_centroid(points, weights, Eigen::Vector3d::Zero());
 }
 
-namespace {
-
 // The plane form of the ball translation by c: fitted through three points of the 26 cube
 // directions whose points and images stay farthest from infinity (a strong translation pushes
 // nearly everything towards one spot, which may be the north pole).
@@ -56,7 +55,7 @@ Mobius translation_matrix(const Eigen::Vector3d &c) {
       for (int z = -1; z <= 1; ++z)
         if (x || y || z) {
           const Eigen::Vector3d p = Eigen::Vector3d(x, y, z).normalized();
-          samples.push_back({std::max(p.z(), translate(p, c).z()), p});
+          samples.push_back({std::max(p.z(), ball_translate(p, c).z()), p});
         }
   std::sort(samples.begin(), samples.end(),
             [](const auto &a, const auto &b) { return a.first < b.first; });
@@ -64,7 +63,7 @@ Mobius translation_matrix(const Eigen::Vector3d &c) {
   int found = 0;
   for (const auto &[height, p] : samples) {
     if (height > 0.999) break;
-    const Complex w = to_plane(p), image = to_plane(translate(p, c));
+    const Complex w = to_plane(p), image = to_plane(ball_translate(p, c));
     bool apart = true;
     for (int k = 0; k < found; ++k)
       apart &= std::abs(w - from[k]) > 1e-3 && std::abs(image - to[k]) > 1e-9;
@@ -76,8 +75,6 @@ Mobius translation_matrix(const Eigen::Vector3d &c) {
   if (found < 3) return Mobius{};
   return Mobius::through(from, to);
 }
-
-} // namespace
 
 MobiusCentering center_on_sphere(std::vector<PlaneValue> &values,
                                  const std::vector<double> &weights) {

@@ -29,6 +29,11 @@ struct MobiusCentering {
 MobiusCentering center_on_sphere(std::vector<PlaneValue> &values,
                                  const std::vector<double> &weights);
 
+// The hyperbolic translation of the ball by c (|c| < 1) on a unit vector x, and the same as a
+// transformation of the extended plane (stereographic coordinates).
+Eigen::Vector3d ball_translate(const Eigen::Vector3d &x, const Eigen::Vector3d &c);
+Mobius translation_matrix(const Eigen::Vector3d &c);
+
 // Weighted centroid.
 Eigen::Vector3d centroid(const std::vector<Eigen::Vector3d> &points,
                          const std::vector<double> &weights);

@@ -1,0 +1,161 @@
+// `meromorph remesh INPUT -o OUT [--resolution N | --vertices K] [--report R.json] ...`: a new
+// triangulation of the surface sampled through its layered sphere (surface_remesh.h).
+#include <chrono>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "cli/exit_codes.h"
+#include "cli/remedy_words.h"
+#include "commands.h"
+#include "common/errors.h"
+#include "common/wording.h"
+#include "io/mesh_writer.h"
+#include "io/staged_outputs.h"
+#include "job_input.h"
+#include "maps/surface_map.h"
+#include "remesh/surface_remesh.h"
+#include "report/report_json.h"
+#include "terminal_progress.h"
+
+namespace meromorph::cli {
+namespace {
+
+struct RemeshCommandOptions {
+  std::string input, output, report;
+  int resolution = -1;
+  long long vertices = -1;
+  bool no_area_correct = false, repair = false, close_holes = false, split_nonmanifold = false,
+       quiet = false;
+};
+
+// OUT: the remeshed surface; as PLY with per-vertex layer, branch (local degree), part and the
+// sphere position (sphere_x, sphere_y, sphere_z).
+void write_remesh(const SurfaceRemesh &remesh, MeshFormat format, const std::string &file) {
+  WriteOptions options;
+  if (format == MeshFormat::ply) {
+    options.vertex_properties = {{"layer", remesh.layer, false},
+                                 {"branch", remesh.local_degree, true},
+                                 {"part", remesh.part, false}};
+    for (int axis = 0; axis < 3; ++axis) {
+      FloatVertexProperty coordinate{std::string("sphere_") + char('x' + axis), {}};
+      for (const Eigen::Vector3d &p : remesh.sphere)
+        coordinate.values.push_back(float(p[axis]));
+      options.float_vertex_properties.push_back(coordinate);
+    }
+  }
+  save_mesh(remesh.mesh, format, file, options);
+}
+
+std::string remesh_summary(const std::string &input, const Parameterization &map,
+                           const SurfaceRemesh &remesh) {
+  const RemeshQuality &q = remesh.quality;
+  std::ostringstream line;
+  line << std::fixed << std::setprecision(2) << input << ": remeshed through " << map.degree
+       << (map.degree == 1 ? " layer" : " layers") << ": " << q.vertices << " vertices (target "
+       << remesh.target_vertices << "), " << q.faces << " faces, Euler characteristic " << q.euler
+       << " (input " << map.euler << "); Hausdorff distance " << std::setprecision(3)
+       << 100 * q.hausdorff_to_input << "% / " << 100 * q.hausdorff_from_input
+       << "% of the diagonal; angles min " << std::setprecision(1) << q.min_angle_degrees
+       << " (away from branch vertices " << q.min_angle_away_from_branch_degrees << "), mean "
+       << q.mean_angle_degrees << " deg; folded lifts " << remesh.folded_lifts;
+  if (remesh.unlifted_faces) line << "; faces not lifted " << remesh.unlifted_faces;
+  if (map.area_correction.applied)
+    line << "; area distortion " << std::setprecision(3) << map.area_correction.distortion_before
+         << " -> " << map.area_correction.distortion_after;
+  return line.str();
+}
+
+void warn_sparse_regions(const SurfaceRemesh &remesh) {
+  for (const SparseRegion &region : remesh.sparse_regions)
+    std::cerr << "meromorph: warning: a region of " << region.faces << " faces ("
+              << std::setprecision(3) << 100 * region.area_share << "% of the surface, near vertex "
+              << region.vertex << ") gets only " << 100 * region.sample_share
+              << "% of its fair share of samples: its triangles are larger there\n";
+}
+
+int run_remesh(const RemeshCommandOptions &options) {
+  StagedOutputs outputs({options.input});
+  const MeshFormat output_format = format_from_extension(options.output);
+  const std::string output_file = outputs.add(options.output);
+  const std::string report_file = options.report.empty() ? "" : outputs.add(options.report);
+  if (options.resolution >= 0 && options.vertices > 0)
+    throw ArgumentError("--resolution and --vertices both set the sphere's size: give one");
+
+  ParameterizeOptions settings;
+  settings.area_correct = !options.no_area_correct;
+  settings.close_holes = options.close_holes;
+  settings.split_nonmanifold = options.split_nonmanifold;
+  RemeshOptions remesh_options;
+  remesh_options.resolution = options.resolution;
+  remesh_options.vertices = options.vertices;
+
+  Mesh mesh;
+  const JobInput input = read_job_input(options.input, options.repair, mesh);
+  TerminalProgress bar(options.quiet);
+  const Parameterization map = naming_the_input(options.input, [&] {
+    return parameterize_surface(mesh, settings, bar.progress().range(0.0, 0.6));
+  });
+  if (!map.valid) {
+    bar.finish();
+    std::cerr << "meromorph: error: " << options.input
+              << ": no valid map on this triangulation, so nothing to remesh through: "
+              << join_phrases(map.invalid) << ". What to do: " << advice_words(map.advice) << "\n";
+    return int(ExitCode::cannot_parameterize);
+  }
+  SurfaceRemesh remesh;
+  remesh_through_sphere(mesh, map, remesh_options, bar.progress().range(0.6, 1.0), remesh);
+  bar.finish();
+
+  write_remesh(remesh, output_format, output_file);
+  nlohmann::json report = parameterization_json(map);
+  report["input"] = source_json(input.source);
+  report["repairs"] = input.repairs;
+  report["remesh"] = remesh_json(remesh);
+  report["version"] = MEROMORPH_VERSION;
+  if (!options.report.empty()) write_text_file(report_file, json_text(report) + "\n");
+  outputs.commit();
+  if (!options.quiet) {
+    warn_sparse_regions(remesh);
+    std::cout << remesh_summary(options.input, map, remesh) << "\n";
+  }
+  return int(ExitCode::done);
+}
+
+} // namespace
+
+Command add_remesh_command(CLI::App &app) {
+  auto options = std::make_shared<RemeshCommandOptions>();
+  CLI::App *remesh = app.add_subcommand(
+      "remesh", "A new triangulation of the surface, sampled through its layered sphere: "
+                "semi-regular, with vertices where the map branches, for any genus.");
+  remesh->add_option("INPUT", options->input, "mesh file (.ply, .obj, .off, .stl)")->required();
+  remesh
+      ->add_option("-o,--output", options->output,
+                   "the remeshed surface; as .ply with per-vertex 'layer', 'branch' (local degree "
+                   "at branch vertices), 'part' and the sphere position sphere_x, sphere_y, "
+                   "sphere_z")
+      ->required();
+  remesh->add_option("--report", options->report,
+                     "JSON report: the map's and the remesh's figures");
+  remesh
+      ->add_option("--resolution", options->resolution,
+                   "sample the icosphere of N subdivisions (10 * 4^N + 2 vertices per layer)")
+      ->check(CLI::Range(0, 12));
+  remesh
+      ->add_option("--vertices", options->vertices,
+                   "about this many vertices in the result (default: as many as the input)")
+      ->check(CLI::Range(12LL, 2000000000LL));
+  remesh->add_flag("--no-area-correct", options->no_area_correct,
+                   "sample the map as centred, without the Moebius area correction (long parts "
+                   "then get fewer samples)");
+  remesh->add_flag("--repair", options->repair, "apply the safe repairs first (see info --help)");
+  remesh->add_flag("--close-holes", options->close_holes,
+                   "close every hole for the map only (the remesh keeps a hole there)");
+  remesh->add_flag("--split-nonmanifold", options->split_nonmanifold,
+                   "take non-manifold vertices and edges apart for the map");
+  remesh->add_flag("--quiet", options->quiet, "no progress bar and no summary line");
+  return [options] { return run_remesh(*options); };
+}
+
+} // namespace meromorph::cli

@@ -1,0 +1,36 @@
+// The sphere mesh that a remesh samples: a geodesic icosphere with the branch values on vertices.
+//
+// In:  the frequency k >= 1 (each face of the icosahedron cut into k^2 triangles; k = 2^N gives
+//      the icosphere of N midpoint subdivisions) and the branch values (unit vectors; values
+//      closer than 1e-12 count as one).
+// Out: `GeodesicSphere`: 10 k^2 + 2 unit vectors (+ one per branch value that needed a face split)
+//      and faces counter-clockwise seen from outside; every branch value is a vertex: the nearest
+//      vertex moved onto it (inside its Voronoi cell, so its faces keep their orientation), or,
+//      when that vertex already carries another value, the face holding the value split in
+//      three, and an edge joining two branch values split at its midpoint; per vertex the index of
+//      the branch value it carries (among the distinct ones), -1 elsewhere; and its neighbours
+//      (counter-clockwise order not promised).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace meromorph {
+
+struct GeodesicSphere {
+  int frequency = 1;
+  std::vector<Eigen::Vector3d> vertices;
+  std::vector<std::array<int, 3>> faces;
+  std::vector<int> branch_value; // per vertex
+  std::vector<std::vector<int>> neighbours;
+};
+
+GeodesicSphere geodesic_sphere(int frequency, const std::vector<Eigen::Vector3d> &branch_values);
+
+// The frequency whose sphere, taken `sheets` times less `ramification` vertices, comes nearest
+// to `vertices` vertices (at least 1).
+int frequency_for_vertices(long long vertices, int sheets, int ramification);
+
+} // namespace meromorph

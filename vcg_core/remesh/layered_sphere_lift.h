@@ -1,0 +1,43 @@
+// The layered sphere mesh lifted to the surface: the remeshed surface of one part.
+//
+// In:  the mapped surface (path_lifting.h), the layer of each of its faces, the local degree of
+//      each of its vertices (>= 2 at branch points), the degree d of the map, the sphere mesh to
+//      sample (geodesic_sphere.h, branch values on vertices) and progress (cancellable).
+// Out: `LiftedSphere`: every vertex of the sphere mesh lifted d times (the points of the surface
+//      over it; fewer at a branch value, where sheets meet), found by path lifting from one vertex
+//      over which d points are found directly, along the sphere mesh's edges (walks start only
+//      at vertices that carry no branch value, so every lift is unambiguous); every sphere face
+//      lifted d times, its corners joined the way the lifts of its edges join them, which glues
+//      the d copies across the cuts as the map's sheets are glued (the monodromy around each
+//      branch value) without cutting anything. Per lifted vertex its surface position (on a
+//      face of the surface, interpolated), sphere value, layer (of the surface face it lies in),
+//      local degree (at a surface branch vertex, else 0) and surface point; faces oriented as the
+//      surface. Also what did not lift: sphere faces with a corner that has no lift (the walk ran
+//      off a boundary: a hole's gap on the sphere) and faces whose three edge lifts do not close
+//      (a folded image), and folded lifts: faces whose normal points against the surface's.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "common/progress.h"
+#include "remesh/geodesic_sphere.h"
+#include "remesh/path_lifting.h"
+
+namespace meromorph {
+
+struct LiftedSphere {
+  std::vector<Eigen::Vector3d> positions, sphere;
+  std::vector<int> layer, local_degree;
+  std::vector<SurfacePoint> surface_point;
+  std::vector<std::array<int, 3>> faces;
+  int unlifted_faces = 0, unclosed_faces = 0, folded_lifts = 0;
+};
+
+LiftedSphere lift_sphere(const MappedSurface &surface, const std::vector<int> &face_layer,
+                         const std::vector<int> &local_degree, int degree,
+                         const GeodesicSphere &sphere, const Progress &progress = {});
+
+} // namespace meromorph

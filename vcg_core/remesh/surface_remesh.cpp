@@ -1,0 +1,146 @@
+#include "remesh/surface_remesh.h"
+
+#include <cmath>
+
+#include <vcg/complex/algorithms/update/topology.h>
+
+#include "common/errors.h"
+#include "remesh/geodesic_sphere.h"
+#include "remesh/layered_sphere_lift.h"
+#include "sphere/area_correction.h"
+
+namespace meromorph {
+namespace {
+
+// The mesh the map is on: the input's vertices and faces, or the split mesh's.
+struct MappedMesh {
+  std::vector<Eigen::Vector3d> positions;
+  std::vector<std::array<int, 3>> faces;
+  std::vector<int> part; // per vertex
+};
+
+MappedMesh mapped_mesh(const Mesh &input, const Parameterization &map) {
+  MappedMesh out;
+  const size_t count = map.sphere.size();
+  out.positions.resize(count);
+  out.part.assign(count, 0);
+  for (size_t v = 0; v < count; ++v) {
+    const size_t source = map.sphere_source_vertex.empty() ? v : map.sphere_source_vertex[v];
+    out.positions[v] = input.vert[source].cP().ToEigenVector<Eigen::Vector3d>();
+    if (!map.vertex_component.empty())
+      out.part[v] = map.vertex_component[v < map.vertex_component.size() ? v : source];
+  }
+  if (!map.sphere_faces.empty()) {
+    out.faces = map.sphere_faces;
+  } else {
+    for (const auto &face : input.face)
+      out.faces.push_back(
+          {index_of(input, face.cV(0)), index_of(input, face.cV(1)), index_of(input, face.cV(2))});
+  }
+  return out;
+}
+
+// Part k of the mapped mesh as a mapped surface (path_lifting.h), with its faces' layers and its
+// vertices' local degrees.
+struct PartSurface {
+  MappedSurface surface;
+  std::vector<int> face_layer, local_degree, global_vertex;
+  std::vector<Eigen::Vector3d> branch_values;
+  int ramification = 0;
+};
+
+PartSurface part_surface(const MappedMesh &mapped, const Parameterization &map, int part) {
+  PartSurface out;
+  std::vector<int> local(mapped.positions.size(), -1);
+  for (size_t v = 0; v < mapped.positions.size(); ++v)
+    if (mapped.part[v] == part) {
+      local[v] = int(out.global_vertex.size());
+      out.global_vertex.push_back(int(v));
+      out.surface.positions.push_back(mapped.positions[v]);
+      out.surface.image.push_back(map.sphere[v]);
+      const int e = v < map.branch_flag.size() ? map.branch_flag[v] : 0;
+      out.local_degree.push_back(e);
+      if (e >= 2) {
+        out.branch_values.push_back(map.sphere[v]);
+        out.ramification += e - 1;
+      }
+    }
+  Mesh mesh; // for vcglib's face-face adjacency
+  vcg::tri::Allocator<Mesh>::AddVertices(mesh, out.global_vertex.size());
+  for (size_t f = 0; f < mapped.faces.size(); ++f) {
+    const auto &c = mapped.faces[f];
+    if (local[c[0]] < 0) continue;
+    out.surface.faces.push_back({local[c[0]], local[c[1]], local[c[2]]});
+    out.face_layer.push_back(f < map.sheets.face_layer.size() ? map.sheets.face_layer[f] : 0);
+    vcg::tri::Allocator<Mesh>::AddFace(mesh, &mesh.vert[local[c[0]]], &mesh.vert[local[c[1]]],
+                                       &mesh.vert[local[c[2]]]);
+  }
+  vcg::tri::UpdateTopology<Mesh>::FaceFace(mesh);
+  out.surface.across.resize(mesh.face.size());
+  for (size_t f = 0; f < mesh.face.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const auto *other = mesh.face[f].cFFp(k);
+      out.surface.across[f][k] = other == &mesh.face[f] ? -1 : index_of(mesh, other);
+    }
+  return out;
+}
+
+void append_part(const LiftedSphere &lifted, int part, SurfaceRemesh &out) {
+  const int offset = int(out.mesh.vert.size());
+  auto vertex = vcg::tri::Allocator<Mesh>::AddVertices(out.mesh, lifted.positions.size());
+  for (size_t v = 0; v < lifted.positions.size(); ++v, ++vertex) {
+    vertex->P() = Point3(lifted.positions[v].x(), lifted.positions[v].y(), lifted.positions[v].z());
+    out.layer.push_back(lifted.layer[v]);
+    out.local_degree.push_back(lifted.local_degree[v]);
+    out.part.push_back(part);
+    out.sphere.push_back(lifted.sphere[v]);
+  }
+  for (const auto &face : lifted.faces)
+    vcg::tri::Allocator<Mesh>::AddFace(out.mesh, &out.mesh.vert[offset + face[0]],
+                                       &out.mesh.vert[offset + face[1]],
+                                       &out.mesh.vert[offset + face[2]]);
+  out.unlifted_faces += lifted.unlifted_faces;
+  out.unclosed_faces += lifted.unclosed_faces;
+  out.folded_lifts += lifted.folded_lifts;
+}
+
+} // namespace
+
+void remesh_through_sphere(const Mesh &input, const Parameterization &map,
+                           const RemeshOptions &options, const Progress &progress,
+                           SurfaceRemesh &out) {
+  if (options.resolution > 12)
+    throw ArgumentError("the resolution is at most 12 (167 million sphere vertices)");
+  if (map.sphere.empty() || input.vert.empty()) throw ArgumentError("remesh: the mesh is empty");
+  const MappedMesh mapped = mapped_mesh(input, map);
+  const int parts = map.components.empty() ? 1 : int(map.components.size());
+  const long long target = options.vertices > 0 ? options.vertices : (long long)input.vert.size();
+  for (int part = 0; part < parts; ++part) {
+    const Progress step = progress.range(0.8 * part / parts, 0.8 * (part + 1) / parts);
+    PartSurface surface = part_surface(mapped, map, part);
+    RemeshPart figures;
+    figures.degree = map.components.empty() ? map.degree : map.components[part].degree;
+    figures.ramification = surface.ramification;
+    const double vertex_share = double(surface.global_vertex.size()) / double(mapped.part.size());
+    figures.frequency = options.resolution >= 0
+                            ? 1 << options.resolution
+                            : frequency_for_vertices(std::llround(target * vertex_share),
+                                                     figures.degree, figures.ramification);
+    const GeodesicSphere sphere = geodesic_sphere(figures.frequency, surface.branch_values);
+    figures.target_vertices =
+        (long long)figures.degree * (long long)sphere.vertices.size() - figures.ramification;
+    out.target_vertices += figures.target_vertices;
+    const LiftedSphere lifted = lift_sphere(surface.surface, surface.face_layer,
+                                            surface.local_degree, figures.degree, sphere, step);
+    append_part(lifted, part, out);
+    out.parts.push_back(figures);
+  }
+  progress.report(0.8, "remesh quality");
+  out.quality = measure_remesh(input, out.mesh, out.local_degree);
+  if (parts == 1 && map.sphere_faces.empty())
+    out.sparse_regions = sparsely_sampled_regions(
+        input, sample_shares(input, map.sphere, map.degree), options.sparse_below, 0.005);
+  progress.report(1.0, "done");
+}
+
+} // namespace meromorph

@@ -1,0 +1,57 @@
+// The remesh job: a new triangulation of the surface sampled through its layered sphere.
+//
+// In:  the surface as parameterized (parameterize_surface's input) and its map (valid: a
+//      branched cover on every part; made with `area_correct` for an even sampling), options (the
+//      sphere's frequency from `resolution` N as k = 2^N, or from a vertex target, by default the
+//      input's vertex count, shared among the parts by their vertex counts) and progress.
+// Out: `SurfaceRemesh`: per part, a geodesic sphere (geodesic_sphere.h) with the part's branch
+//      values on vertices, lifted to the part (layered_sphere_lift.h); the parts' lifts together
+//      as one mesh (part by part), with per vertex its layer, sphere value, local degree at branch
+//      vertices (0 elsewhere) and part; per part its frequency, degree and ramification; the
+//      target vertex count (what the lifted spheres hold when everything lifts); what did not
+//      lift and the folded lifts; the quality against the input (remesh_quality.h); the regions
+//      short of samples (sample_coverage.h: under a quarter of their fair share, 0.5% of the
+//      area or more; one part without non-manifold splits). A hole closed for the map is a gap on
+//      the sphere: its faces do not lift, and the remesh has a hole there too.
+#pragma once
+
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "common/progress.h"
+#include "maps/parameterization.h"
+#include "mesh/mesh.h"
+#include "remesh/remesh_quality.h"
+#include "remesh/sample_coverage.h"
+
+namespace meromorph {
+
+struct RemeshOptions {
+  int resolution = -1;     // N >= 0: frequency 2^N; -1: from the vertex target
+  long long vertices = -1; // the vertex target; -1: the input's vertex count
+  double sparse_below = 0.25;
+};
+
+struct RemeshPart {
+  int frequency = 0, degree = 0, ramification = 0;
+  long long target_vertices = 0;
+};
+
+struct SurfaceRemesh {
+  Mesh mesh;
+  std::vector<int> layer, local_degree, part;
+  std::vector<Eigen::Vector3d> sphere;
+  std::vector<RemeshPart> parts;
+  long long target_vertices = 0;
+  int unlifted_faces = 0, unclosed_faces = 0, folded_lifts = 0;
+  RemeshQuality quality;
+  std::vector<SparseRegion> sparse_regions;
+};
+
+// `out` must be new (a vcglib mesh cannot be returned by value).
+void remesh_through_sphere(const Mesh &input, const Parameterization &map,
+                           const RemeshOptions &options, const Progress &progress,
+                           SurfaceRemesh &out);
+
+} // namespace meromorph
