@@ -25,8 +25,8 @@ struct RemeshCommandOptions {
   std::string input, output, report;
   int resolution = -1;
   long long vertices = -1;
-  bool no_area_correct = false, repair = false, close_holes = false, split_nonmanifold = false,
-       quiet = false;
+  bool no_area_correct = false, uniform = false, repair = false, close_holes = false,
+       split_nonmanifold = false, quiet = false;
 };
 
 // OUT: the remeshed surface; as PLY with per-vertex layer, branch (local degree), part and the
@@ -89,6 +89,7 @@ int run_remesh(const RemeshCommandOptions &options) {
   RemeshOptions remesh_options;
   remesh_options.resolution = options.resolution;
   remesh_options.vertices = options.vertices;
+  remesh_options.even_out = !options.uniform;
 
   Mesh mesh;
   const JobInput input = read_job_input(options.input, options.repair, mesh);
@@ -149,6 +150,9 @@ Command add_remesh_command(CLI::App &app) {
   remesh->add_flag("--no-area-correct", options->no_area_correct,
                    "sample the map as centred, without the Moebius area correction (long parts "
                    "then get fewer samples)");
+  remesh->add_flag("--uniform", options->uniform,
+                   "keep the sphere's triangles as they lift, without splitting those that lift "
+                   "large (the result is then exactly semi-regular)");
   remesh->add_flag("--repair", options->repair, "apply the safe repairs first (see info --help)");
   remesh->add_flag("--close-holes", options->close_holes,
                    "close every hole for the map only (the remesh keeps a hole there)");

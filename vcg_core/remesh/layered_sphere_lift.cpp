@@ -129,6 +129,19 @@ int local_degree_at(const MappedSurface &surface, const SurfacePoint &point,
 
 } // namespace
 
+int count_folded_lifts(const MappedSurface &surface, const LiftedSphere &lifted) {
+  int folded = 0;
+  for (const auto &face : lifted.faces) {
+    const Eigen::Vector3d &p = lifted.positions[face[0]], &q = lifted.positions[face[1]],
+                          &r = lifted.positions[face[2]];
+    Eigen::Vector3d reference = Eigen::Vector3d::Zero();
+    for (int corner : face)
+      reference += surface_normal_at(surface, lifted.surface_point[corner]);
+    folded += (q - p).cross(r - p).dot(reference) < 0;
+  }
+  return folded;
+}
+
 LiftedSphere lift_sphere(const MappedSurface &surface, const std::vector<int> &face_layer,
                          const std::vector<int> &local_degree, int degree,
                          const GeodesicSphere &sphere, const Progress &progress) {
@@ -174,14 +187,9 @@ LiftedSphere lift_sphere(const MappedSurface &surface, const std::vector<int> &f
       for (int m = 0; m < 3; ++m)
         rotated[(base + m) % 3] = lifted[m];
       out.faces.push_back(rotated);
-      const Eigen::Vector3d &p = out.positions[rotated[0]], &q = out.positions[rotated[1]],
-                            &r = out.positions[rotated[2]];
-      Eigen::Vector3d reference = Eigen::Vector3d::Zero();
-      for (int corner : rotated)
-        reference += surface_normal_at(surface, out.surface_point[corner]);
-      if ((q - p).cross(r - p).dot(reference) < 0) ++out.folded_lifts;
     }
   }
+  out.folded_lifts = count_folded_lifts(surface, out);
   progress.report(1.0, "lifted");
   return out;
 }

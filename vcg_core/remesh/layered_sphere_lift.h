@@ -40,4 +40,7 @@ LiftedSphere lift_sphere(const MappedSurface &surface, const std::vector<int> &f
                          const std::vector<int> &local_degree, int degree,
                          const GeodesicSphere &sphere, const Progress &progress = {});
 
+// Lifted faces whose normal points against the surface's normals at their corners' points.
+int count_folded_lifts(const MappedSurface &surface, const LiftedSphere &lifted);
+
 } // namespace meromorph

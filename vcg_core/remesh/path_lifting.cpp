@@ -61,7 +61,7 @@ std::vector<SurfacePoint> points_over(const MappedSurface &surface, const Eigen:
 
 std::optional<SurfacePoint> lift_arc(const MappedSurface &surface, const SurfacePoint &start,
                                      const Eigen::Vector3d &a, const Eigen::Vector3d &b,
-                                     int max_steps) {
+                                     int max_steps, std::vector<PathPoint> *path) {
   // The chord x(t) = (1 - t) a + t b projects onto the arc; side k of a face is crossed where
   // det(s_k, s_k+1, x(t)), linear in t, turns negative. The lift leaves each face by the side
   // crossed first and enters the face across it.
@@ -82,12 +82,17 @@ std::optional<SurfacePoint> lift_arc(const MappedSurface &surface, const Surface
         exit = k;
       }
     }
-    if (exit < 0) return settled(surface, face, b);
+    if (exit < 0) {
+      const SurfacePoint end = settled(surface, face, b);
+      if (path) path->push_back({end, 1.0});
+      return end;
+    }
     const int next = surface.across[face][exit];
     if (next < 0) return std::nullopt;
     came_from = face;
     face = next;
     t = std::max(t, exit_t);
+    if (path) path->push_back({settled(surface, face, (1 - t) * a + t * b), t});
   }
   return std::nullopt;
 }

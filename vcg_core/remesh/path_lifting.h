@@ -39,8 +39,15 @@ Eigen::Vector3d position_of(const MappedSurface &surface, const SurfacePoint &po
 
 std::vector<SurfacePoint> points_over(const MappedSurface &surface, const Eigen::Vector3d &q);
 
+// `path`, when given, gets the lift's points where it enters each face after the first, and its
+// end: the surface point and the parameter t of the chord (1 - t) a + t b there.
+struct PathPoint {
+  SurfacePoint point;
+  double t = 0;
+};
+
 std::optional<SurfacePoint> lift_arc(const MappedSurface &surface, const SurfacePoint &start,
                                      const Eigen::Vector3d &a, const Eigen::Vector3d &b,
-                                     int max_steps);
+                                     int max_steps, std::vector<PathPoint> *path = nullptr);
 
 } // namespace meromorph

@@ -7,6 +7,7 @@
 #include "common/errors.h"
 #include "remesh/geodesic_sphere.h"
 #include "remesh/layered_sphere_lift.h"
+#include "remesh/lifted_refinement.h"
 #include "sphere/area_correction.h"
 
 namespace meromorph {
@@ -85,6 +86,56 @@ PartSurface part_surface(const MappedMesh &mapped, const Parameterization &map, 
   return out;
 }
 
+// The part's geodesic sphere of `figures.frequency`, lifted; the vertex count it holds when
+// everything lifts goes into `figures`.
+LiftedSphere lift_part(const PartSurface &surface, RemeshPart &figures, const Progress &progress) {
+  const GeodesicSphere sphere = geodesic_sphere(figures.frequency, surface.branch_values);
+  figures.target_vertices =
+      (long long)figures.degree * (long long)sphere.vertices.size() - figures.ramification;
+  return lift_sphere(surface.surface, surface.face_layer, surface.local_degree, figures.degree,
+                     sphere, progress);
+}
+
+double surface_area(const MappedSurface &surface) {
+  double total = 0;
+  for (const auto &c : surface.faces)
+    total += 0.5 * (surface.positions[c[1]] - surface.positions[c[0]])
+                       .cross(surface.positions[c[2]] - surface.positions[c[0]])
+                       .norm();
+  return total;
+}
+
+constexpr int refinement_rounds = 4;
+
+// The vertices a lift at `frequency` would hold after refinement, estimated from a lift at
+// `lifted_frequency`: each face there stands for (k / k0)^2 faces of 1 / (k / k0)^2 its area,
+// each split 1-to-4 until at most 2.5 times the target (refine_lifted_sphere's rule).
+double vertices_after_refinement(const std::vector<double> &areas, int lifted_frequency,
+                                 int frequency, double face_area) {
+  const double scale = double(frequency) / double(lifted_frequency);
+  double faces = 0;
+  for (double area : areas) {
+    double pieces = scale * scale, each = area / (scale * scale);
+    for (int round = 0; round < refinement_rounds && each > 2.5 * face_area; ++round) {
+      pieces *= 4;
+      each /= 4;
+    }
+    faces += pieces;
+  }
+  return faces / 2;
+}
+
+// The highest frequency up to the lifted one whose refined lift holds about the target.
+int frequency_after_refinement(const LiftedSphere &lifted, int lifted_frequency, double face_area,
+                               long long target) {
+  const std::vector<double> areas = lifted_face_areas(lifted);
+  int frequency = lifted_frequency;
+  while (frequency > 1 && vertices_after_refinement(areas, lifted_frequency, frequency, face_area) >
+                              1.03 * double(target))
+    frequency = std::max(1, int(frequency * 0.97));
+  return frequency;
+}
+
 void append_part(const LiftedSphere &lifted, int part, SurfaceRemesh &out) {
   const int offset = int(out.mesh.vert.size());
   auto vertex = vcg::tri::Allocator<Mesh>::AddVertices(out.mesh, lifted.positions.size());
@@ -117,21 +168,32 @@ void remesh_through_sphere(const Mesh &input, const Parameterization &map,
   const long long target = options.vertices > 0 ? options.vertices : (long long)input.vert.size();
   for (int part = 0; part < parts; ++part) {
     const Progress step = progress.range(0.8 * part / parts, 0.8 * (part + 1) / parts);
-    PartSurface surface = part_surface(mapped, map, part);
+    const PartSurface surface = part_surface(mapped, map, part);
     RemeshPart figures;
     figures.degree = map.components.empty() ? map.degree : map.components[part].degree;
     figures.ramification = surface.ramification;
     const double vertex_share = double(surface.global_vertex.size()) / double(mapped.part.size());
-    figures.frequency = options.resolution >= 0
-                            ? 1 << options.resolution
-                            : frequency_for_vertices(std::llround(target * vertex_share),
-                                                     figures.degree, figures.ramification);
-    const GeodesicSphere sphere = geodesic_sphere(figures.frequency, surface.branch_values);
-    figures.target_vertices =
-        (long long)figures.degree * (long long)sphere.vertices.size() - figures.ramification;
+    const long long part_target = std::llround(double(target) * vertex_share);
+    figures.frequency =
+        options.resolution >= 0
+            ? 1 << options.resolution
+            : frequency_for_vertices(part_target, figures.degree, figures.ramification);
+    LiftedSphere lifted = lift_part(surface, figures, step.range(0.0, 0.5));
+    if (options.even_out) {
+      const long long even_target = options.resolution >= 0 ? figures.target_vertices : part_target;
+      const double face_area = surface_area(surface.surface) / (2.0 * double(even_target));
+      if (options.resolution < 0) {
+        const int frequency =
+            frequency_after_refinement(lifted, figures.frequency, face_area, even_target);
+        if (frequency != figures.frequency) {
+          figures.frequency = frequency;
+          lifted = lift_part(surface, figures, step.range(0.5, 0.9));
+        }
+      }
+      refine_lifted_sphere(surface.surface, face_area, refinement_rounds, lifted);
+      figures.target_vertices = even_target;
+    }
     out.target_vertices += figures.target_vertices;
-    const LiftedSphere lifted = lift_sphere(surface.surface, surface.face_layer,
-                                            surface.local_degree, figures.degree, sphere, step);
     append_part(lifted, part, out);
     out.parts.push_back(figures);
   }

@@ -3,9 +3,12 @@
 // In:  the surface as parameterized (parameterize_surface's input) and its map (valid: a
 //      branched cover on every part; made with `area_correct` for an even sampling), options (the
 //      sphere's frequency from `resolution` N as k = 2^N, or from a vertex target, by default the
-//      input's vertex count, shared among the parts by their vertex counts) and progress.
+//      input's vertex count, shared among the parts by their vertex counts; whether to even out
+//      the triangles' sizes) and progress.
 // Out: `SurfaceRemesh`: per part, a geodesic sphere (geodesic_sphere.h) with the part's branch
-//      values on vertices, lifted to the part (layered_sphere_lift.h); the parts' lifts together
+//      values on vertices, lifted to the part (layered_sphere_lift.h), evened out where its
+//      triangles lift large (lifted_refinement.h; the frequency chosen so the result holds about
+//      the target); the parts' lifts together
 //      as one mesh (part by part), with per vertex its layer, sphere value, local degree at branch
 //      vertices (0 elsewhere) and part; per part its frequency, degree and ramification; the
 //      target vertex count (what the lifted spheres hold when everything lifts); what did not
@@ -31,6 +34,9 @@ struct RemeshOptions {
   int resolution = -1;     // N >= 0: frequency 2^N; -1: from the vertex target
   long long vertices = -1; // the vertex target; -1: the input's vertex count
   double sparse_below = 0.25;
+  // Split lifted faces larger than the target (lifted_refinement.h); with a vertex target the
+  // sphere's frequency is lowered so that the refined result holds about the target.
+  bool even_out = true;
 };
 
 struct RemeshPart {

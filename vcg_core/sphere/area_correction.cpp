@@ -58,9 +58,9 @@ double distortion_after(const FaceAreas &faces, const std::vector<Eigen::Vector3
 int turned_over_faces(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere) {
   int count = 0;
   for (const auto &face : mesh.face)
-    count += signed_solid_angle(sphere[index_of(mesh, face.cV(0))],
-                                sphere[index_of(mesh, face.cV(1))],
-                                sphere[index_of(mesh, face.cV(2))]) < 0;
+    count +=
+        signed_solid_angle(sphere[index_of(mesh, face.cV(0))], sphere[index_of(mesh, face.cV(1))],
+                           sphere[index_of(mesh, face.cV(2))]) < 0;
   return count;
 }
 
