@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 
+#include "sphere/branch_points.h"
 #include "sphere/mobius_centering.h"
 #include "sphere/sphere_geometry.h"
 
@@ -56,12 +57,8 @@ double distortion_after(const FaceAreas &faces, const std::vector<Eigen::Vector3
 }
 
 int turned_over_faces(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere) {
-  int count = 0;
-  for (const auto &face : mesh.face)
-    count +=
-        signed_solid_angle(sphere[index_of(mesh, face.cV(0))], sphere[index_of(mesh, face.cV(1))],
-                           sphere[index_of(mesh, face.cV(2))]) < 0;
-  return count;
+  const std::vector<double> solid = face_solid_angles(mesh, sphere);
+  return int(std::count_if(solid.begin(), solid.end(), [](double angle) { return angle < 0; }));
 }
 
 Eigen::Vector3d in_ball(const Eigen::Vector3d &y) {
@@ -126,13 +123,10 @@ std::vector<double> sample_shares(const Mesh &mesh, const std::vector<Eigen::Vec
     surface_total += vcg::DoubleArea(face) / 2;
   std::vector<double> shares(mesh.face.size(), 0.0);
   const double image_total = 4 * M_PI * std::max(degree, 1);
+  const std::vector<double> solid = face_solid_angles(mesh, sphere);
   for (size_t f = 0; f < mesh.face.size(); ++f) {
-    const auto &face = mesh.face[f];
-    const double area = vcg::DoubleArea(face) / 2;
-    const double image =
-        signed_solid_angle(sphere[index_of(mesh, face.cV(0))], sphere[index_of(mesh, face.cV(1))],
-                           sphere[index_of(mesh, face.cV(2))]);
-    if (area > 0 && image > 0) shares[f] = (image / image_total) / (area / surface_total);
+    const double area = vcg::DoubleArea(mesh.face[f]) / 2;
+    if (area > 0 && solid[f] > 0) shares[f] = (solid[f] / image_total) / (area / surface_total);
   }
   return shares;
 }
