@@ -129,16 +129,20 @@ int local_degree_at(const MappedSurface &surface, const SurfacePoint &point,
 
 } // namespace
 
+bool lifted_face_folds(const MappedSurface &surface, const LiftedSphere &lifted,
+                       const std::array<int, 3> &face) {
+  const Eigen::Vector3d &p = lifted.positions[face[0]], &q = lifted.positions[face[1]],
+                        &r = lifted.positions[face[2]];
+  Eigen::Vector3d reference = Eigen::Vector3d::Zero();
+  for (int corner : face)
+    reference += surface_normal_at(surface, lifted.surface_point[corner]);
+  return (q - p).cross(r - p).dot(reference) < 0;
+}
+
 int count_folded_lifts(const MappedSurface &surface, const LiftedSphere &lifted) {
   int folded = 0;
-  for (const auto &face : lifted.faces) {
-    const Eigen::Vector3d &p = lifted.positions[face[0]], &q = lifted.positions[face[1]],
-                          &r = lifted.positions[face[2]];
-    Eigen::Vector3d reference = Eigen::Vector3d::Zero();
-    for (int corner : face)
-      reference += surface_normal_at(surface, lifted.surface_point[corner]);
-    folded += (q - p).cross(r - p).dot(reference) < 0;
-  }
+  for (const auto &face : lifted.faces)
+    folded += lifted_face_folds(surface, lifted, face);
   return folded;
 }
 

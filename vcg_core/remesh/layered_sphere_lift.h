@@ -40,6 +40,10 @@ LiftedSphere lift_sphere(const MappedSurface &surface, const std::vector<int> &f
                          const std::vector<int> &local_degree, int degree,
                          const GeodesicSphere &sphere, const Progress &progress = {});
 
+// Whether a lifted face's normal points against the surface's normals at its corners' points.
+bool lifted_face_folds(const MappedSurface &surface, const LiftedSphere &lifted,
+                       const std::array<int, 3> &face);
+
 // Lifted faces whose normal points against the surface's normals at their corners' points.
 int count_folded_lifts(const MappedSurface &surface, const LiftedSphere &lifted);
 

@@ -19,10 +19,12 @@ Side side(int a, int b) {
 std::map<Side, int> sides_to_split(const LiftedSphere &lifted, double largest_area,
                                    std::map<Side, int> split) {
   const std::vector<double> areas = lifted_face_areas(lifted);
-  for (size_t f = 0; f < lifted.faces.size(); ++f)
+  for (size_t f = 0; f < lifted.faces.size(); ++f) {
+    const auto &face = lifted.faces[f];
     if (areas[f] > largest_area)
       for (int k = 0; k < 3; ++k)
-        split.emplace(side(lifted.faces[f][k], lifted.faces[f][(k + 1) % 3]), -1);
+        split.emplace(side(face[k], face[(k + 1) % 3]), -1);
+  }
   for (bool changed = !split.empty(); changed;) {
     changed = false;
     for (const auto &face : lifted.faces) {

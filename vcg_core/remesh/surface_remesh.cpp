@@ -7,7 +7,9 @@
 #include "common/errors.h"
 #include "remesh/geodesic_sphere.h"
 #include "remesh/layered_sphere_lift.h"
+#include "remesh/lifted_edge_flips.h"
 #include "remesh/lifted_refinement.h"
+#include "remesh/lifted_relaxation.h"
 #include "sphere/area_correction.h"
 
 namespace meromorph {
@@ -191,6 +193,10 @@ void remesh_through_sphere(const Mesh &input, const Parameterization &map,
         }
       }
       refine_lifted_sphere(surface.surface, face_area, refinement_rounds, lifted);
+      for (int round = 0; round < options.relaxation_rounds; ++round) {
+        flip_lifted_edges(surface.surface, 4, lifted);
+        relax_lifted_sphere(surface.surface, surface.face_layer, 2, lifted);
+      }
       figures.target_vertices = even_target;
     }
     out.target_vertices += figures.target_vertices;

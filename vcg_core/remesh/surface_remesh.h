@@ -8,10 +8,11 @@
 // Out: `SurfaceRemesh`: per part, a geodesic sphere (geodesic_sphere.h) with the part's branch
 //      values on vertices, lifted to the part (layered_sphere_lift.h), evened out where its
 //      triangles lift large (lifted_refinement.h; the frequency chosen so the result holds about
-//      the target); the parts' lifts together
-//      as one mesh (part by part), with per vertex its layer, sphere value, local degree at branch
-//      vertices (0 elsewhere) and part; per part its frequency, degree and ramification; the
-//      target vertex count (what the lifted spheres hold when everything lifts); what did not
+//      the target), then rounds of edge flips (lifted_edge_flips.h) and tangential relaxation
+//      through the sphere (lifted_relaxation.h) for the triangles' shapes; the parts' lifts
+//      together as one mesh (part by part), with per vertex its layer, sphere value, local degree
+//      at branch vertices (0 elsewhere) and part; per part its frequency, degree and ramification;
+//      the target vertex count (what the lifted spheres hold when everything lifts); what did not
 //      lift and the folded lifts; the quality against the input (remesh_quality.h); the regions
 //      short of samples (sample_coverage.h: under a quarter of their fair share, 0.5% of the
 //      area or more; one part without non-manifold splits). A hole closed for the map is a gap on
@@ -37,6 +38,9 @@ struct RemeshOptions {
   // Split lifted faces larger than the target (lifted_refinement.h); with a vertex target the
   // sphere's frequency is lowered so that the refined result holds about the target.
   bool even_out = true;
+  // Rounds of edge flips and tangential relaxation after evening out (lifted_edge_flips.h,
+  // lifted_relaxation.h).
+  int relaxation_rounds = 12;
 };
 
 struct RemeshPart {
