@@ -87,14 +87,17 @@ int flip_lifted_edges(const MappedSurface &surface, int passes, LiftedSphere &li
       const double opposite =
           corner_angle(lifted.positions[c], lifted.positions[a], lifted.positions[b]) +
           corner_angle(lifted.positions[d], lifted.positions[b], lifted.positions[a]);
-      if (opposite <= M_PI) continue;
+      // A folded pair is flipped whenever the flip unfolds it.
+      const bool unfolds =
+          lifted_face_folds(surface, lifted, f) || lifted_face_folds(surface, lifted, g);
+      if (opposite <= M_PI && !unfolds) continue;
       const std::array<int, 3> nf{a, d, c}, ng{d, b, c};
       if (!positive_on_sphere(lifted, nf) || !positive_on_sphere(lifted, ng)) continue;
       if (lifted_face_folds(surface, lifted, nf) || lifted_face_folds(surface, lifted, ng))
         continue;
-      if (bend(lifted, nf, ng) > bend(lifted, f, g) + 10.0 * M_PI / 180.0) continue;
-      if (std::min(smallest_angle(lifted, nf), smallest_angle(lifted, ng)) <=
-          std::min(smallest_angle(lifted, f), smallest_angle(lifted, g)))
+      if (!unfolds && (bend(lifted, nf, ng) > bend(lifted, f, g) + 10.0 * M_PI / 180.0 ||
+                       std::min(smallest_angle(lifted, nf), smallest_angle(lifted, ng)) <=
+                           std::min(smallest_angle(lifted, f), smallest_angle(lifted, g))))
         continue;
       lifted.faces[pair[0]] = nf;
       lifted.faces[pair[1]] = ng;

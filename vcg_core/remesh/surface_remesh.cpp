@@ -107,7 +107,7 @@ double surface_area(const MappedSurface &surface) {
   return total;
 }
 
-constexpr int refinement_rounds = 4;
+constexpr int refinement_rounds = 6;
 
 // The vertices a lift at `frequency` would hold after refinement, estimated from a lift at
 // `lifted_frequency`: each face there stands for (k / k0)^2 faces of 1 / (k / k0)^2 its area,
