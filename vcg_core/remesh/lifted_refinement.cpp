@@ -14,37 +14,17 @@ Side side(int a, int b) {
   return a < b ? Side{a, b} : Side{b, a};
 }
 
-// The sides to split this round: those of every large face, closed so that no face has exactly
-// two.
-std::map<Side, int> sides_to_split(const LiftedSphere &lifted, double largest_area,
-                                   std::map<Side, int> split) {
-  const std::vector<double> areas = lifted_face_areas(lifted);
-  for (size_t f = 0; f < lifted.faces.size(); ++f) {
-    const auto &face = lifted.faces[f];
-    if (areas[f] > largest_area)
-      for (int k = 0; k < 3; ++k)
-        split.emplace(side(face[k], face[(k + 1) % 3]), -1);
-  }
-  for (bool changed = !split.empty(); changed;) {
-    changed = false;
-    for (const auto &face : lifted.faces) {
-      int count = 0;
-      for (int k = 0; k < 3; ++k)
-        count += split.count(side(face[k], face[(k + 1) % 3])) > 0;
-      if (count != 2) continue;
-      for (int k = 0; k < 3; ++k)
-        split.emplace(side(face[k], face[(k + 1) % 3]), -1);
-      changed = true;
-    }
-  }
-  return split;
-}
-
 // The point halfway along the lift of side (a, b), measured on the surface (a conformal map's
 // scale changes fast where it shrinks the surface, so the sphere's midpoint would lift far off
 // the middle), walked from an end that is no branch vertex.
-void add_midpoint(const MappedSurface &surface, const Side &ends, int max_steps,
-                  LiftedSphere &lifted) {
+struct Midpoint {
+  Eigen::Vector3d sphere, position;
+  SurfacePoint at;
+  int layer = 0;
+};
+
+Midpoint midpoint_of(const MappedSurface &surface, const Side &ends, int max_steps,
+                     const LiftedSphere &lifted) {
   int from = ends.first, to = ends.second;
   if (lifted.local_degree[from] >= 2) std::swap(from, to);
   const Eigen::Vector3d &a = lifted.sphere[from], &b = lifted.sphere[to];
@@ -64,17 +44,49 @@ void add_midpoint(const MappedSurface &surface, const Side &ends, int max_steps,
     const double along = span > 0 ? (0.5 * length.back() - length[k - 1]) / span : 0.5;
     t = path[k - 1].t + std::clamp(along, 0.0, 1.0) * (path[k].t - path[k - 1].t);
   }
-  const Eigen::Vector3d middle = ((1 - t) * a + t * b).normalized();
+  Midpoint out;
+  out.sphere = ((1 - t) * a + t * b).normalized();
   const std::optional<SurfacePoint> point =
-      lift_arc(surface, lifted.surface_point[from], a, middle, max_steps);
-  const SurfacePoint at = point ? *point : lifted.surface_point[from];
-  lifted.positions.push_back(
-      point ? position_of(surface, at)
-            : Eigen::Vector3d(0.5 * (lifted.positions[from] + lifted.positions[to])));
-  lifted.sphere.push_back(middle);
-  lifted.layer.push_back(lifted.layer[from]);
+      lift_arc(surface, lifted.surface_point[from], a, out.sphere, max_steps);
+  out.at = point ? *point : lifted.surface_point[from];
+  out.position = point ? position_of(surface, out.at)
+                       : Eigen::Vector3d(0.5 * (lifted.positions[from] + lifted.positions[to]));
+  out.layer = lifted.layer[from];
+  return out;
+}
+
+void add_midpoint(const Midpoint &middle, LiftedSphere &lifted) {
+  lifted.positions.push_back(middle.position);
+  lifted.sphere.push_back(middle.sphere);
+  lifted.layer.push_back(middle.layer);
   lifted.local_degree.push_back(0);
-  lifted.surface_point.push_back(at);
+  lifted.surface_point.push_back(middle.at);
+}
+
+// The sides to split this round: those of every face over the limits, closed so that no face
+// has exactly two.
+std::map<Side, int> sides_to_split(const MappedSurface &surface, const LiftedSphere &lifted,
+                                   const RefinementLimits &limits, std::map<Side, int> split) {
+  const std::vector<double> areas = lifted_face_areas(lifted);
+  for (size_t f = 0; f < lifted.faces.size(); ++f) {
+    const auto &face = lifted.faces[f];
+    if (areas[f] > limits.face_area || (limits.folded && lifted_face_folds(surface, lifted, face)))
+      for (int k = 0; k < 3; ++k)
+        split.emplace(side(face[k], face[(k + 1) % 3]), -1);
+  }
+  for (bool changed = !split.empty(); changed;) {
+    changed = false;
+    for (const auto &face : lifted.faces) {
+      int count = 0;
+      for (int k = 0; k < 3; ++k)
+        count += split.count(side(face[k], face[(k + 1) % 3])) > 0;
+      if (count != 2) continue;
+      for (int k = 0; k < 3; ++k)
+        split.emplace(side(face[k], face[(k + 1) % 3]), -1);
+      changed = true;
+    }
+  }
+  return split;
 }
 
 // A face halved through the midpoint of one side: the halves, until the next round puts the face
@@ -161,7 +173,7 @@ std::vector<double> lifted_face_areas(const LiftedSphere &lifted) {
   return areas;
 }
 
-void refine_lifted_sphere(const MappedSurface &surface, double target_face_area, int rounds,
+void refine_lifted_sphere(const MappedSurface &surface, const RefinementLimits &limits, int rounds,
                           LiftedSphere &lifted) {
   const int max_steps = int(surface.faces.size()) + 16;
   std::vector<Halved> halved;
@@ -172,11 +184,11 @@ void refine_lifted_sphere(const MappedSurface &surface, double target_face_area,
       known[side(h.face[0], h.face[1])] = h.middle;
     }
     halved.clear();
-    std::map<Side, int> split = sides_to_split(lifted, 2.5 * target_face_area, known);
+    std::map<Side, int> split = sides_to_split(surface, lifted, limits, known);
     for (auto &[ends, middle] : split)
       if (middle < 0) {
         middle = int(lifted.positions.size());
-        add_midpoint(surface, ends, max_steps, lifted);
+        add_midpoint(midpoint_of(surface, ends, max_steps, lifted), lifted);
       }
     split_faces(lifted, split, halved);
     if (split.size() == known.size()) break; // nothing new to split

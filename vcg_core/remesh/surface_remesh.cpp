@@ -108,10 +108,18 @@ double surface_area(const MappedSurface &surface) {
 }
 
 constexpr int refinement_rounds = 6;
+constexpr double largest_face = 1.8; // times the target face area
+
+// The refinement's limits for a target face area, `scale` times that allowed.
+RefinementLimits refinement_limits(double face_area, double scale) {
+  RefinementLimits limits;
+  limits.face_area = largest_face * scale * face_area;
+  return limits;
+}
 
 // The vertices a lift at `frequency` would hold after refinement, estimated from a lift at
 // `lifted_frequency`: each face there stands for (k / k0)^2 faces of 1 / (k / k0)^2 its area,
-// each split 1-to-4 until at most 2.5 times the target (refine_lifted_sphere's rule).
+// each split 1-to-4 until at most 2.5 times the target (an estimate on the generous side).
 double vertices_after_refinement(const std::vector<double> &areas, int lifted_frequency,
                                  int frequency, double face_area) {
   const double scale = double(frequency) / double(lifted_frequency);
@@ -136,6 +144,45 @@ int frequency_after_refinement(const LiftedSphere &lifted, int lifted_frequency,
                               1.03 * double(target))
     frequency = std::max(1, int(frequency * 0.97));
   return frequency;
+}
+
+void smooth_lifted_sphere(const PartSurface &surface, int rounds, LiftedSphere &lifted) {
+  for (int round = 0; round < rounds; ++round) {
+    flip_lifted_edges(surface.surface, 4, lifted);
+    relax_lifted_sphere(surface.surface, surface.face_layer, 2, lifted);
+  }
+}
+
+// The lifted sphere refined so that it holds about `target` vertices: the largest face area
+// allowed is scaled by how far a try lands from the target, and where the plain lift alone holds
+// more than the target the sphere's frequency is lowered; the closest of a few tries is kept.
+void refine_to_target(const PartSurface &surface, RemeshPart &figures, double face_area,
+                      long long target, const Progress &progress, LiftedSphere &lifted) {
+  LiftedSphere best;
+  double best_miss = 1e300, scale = 1.0;
+  int best_frequency = figures.frequency;
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    LiftedSphere refined = lifted;
+    refine_lifted_sphere(surface.surface, refinement_limits(face_area, scale), refinement_rounds,
+                         refined);
+    const double held = double(refined.positions.size()) / double(target);
+    const double miss = std::abs(std::log(held));
+    if (miss < best_miss) {
+      best_miss = miss;
+      best = std::move(refined);
+      best_frequency = figures.frequency;
+    }
+    if (held > 0.95 && held < 1.05) break;
+    scale *= held;
+    const double lift_holds = double(lifted.positions.size()) / double(target);
+    if (lift_holds > 0.9 && figures.frequency > 1) {
+      figures.frequency =
+          std::max(1, int(std::floor(figures.frequency / std::sqrt(lift_holds / 0.8))));
+      lifted = lift_part(surface, figures, progress);
+    }
+  }
+  lifted = std::move(best);
+  figures.frequency = best_frequency;
 }
 
 void append_part(const LiftedSphere &lifted, int part, SurfaceRemesh &out) {
@@ -192,10 +239,21 @@ void remesh_through_sphere(const Mesh &input, const Parameterization &map,
           lifted = lift_part(surface, figures, step.range(0.5, 0.9));
         }
       }
-      refine_lifted_sphere(surface.surface, face_area, refinement_rounds, lifted);
-      for (int round = 0; round < options.relaxation_rounds; ++round) {
-        flip_lifted_edges(surface.surface, 4, lifted);
-        relax_lifted_sphere(surface.surface, surface.face_layer, 2, lifted);
+      if (options.resolution < 0)
+        refine_to_target(surface, figures, face_area, even_target, step.range(0.5, 0.9), lifted);
+      else
+        refine_lifted_sphere(surface.surface, refinement_limits(face_area, 1.0), refinement_rounds,
+                             lifted);
+      smooth_lifted_sphere(surface, options.relaxation_rounds, lifted);
+      // What still folds is split once more and smoothed again.
+      for (int round = 0; round < 2 && lifted.folded_lifts > 0; ++round) {
+        LiftedSphere split = lifted;
+        RefinementLimits folded;
+        folded.folded = true;
+        refine_lifted_sphere(surface.surface, folded, 1, split);
+        smooth_lifted_sphere(surface, options.relaxation_rounds / 2, split);
+        if (split.folded_lifts >= lifted.folded_lifts) break; // it did not help
+        lifted = std::move(split);
       }
       figures.target_vertices = even_target;
     }
