@@ -177,7 +177,7 @@ WrittenMap read_written_map(const std::string &path, int euler, double component
 }
 
 // Every per-vertex property of a binary little-endian PLY surface, by name, as doubles.
-std::map<std::string, std::vector<double>> read_vertex_columns(const std::string &surface_ply) {
+WrittenMesh read_written_mesh(const std::string &surface_ply) {
   std::ifstream stream(surface_ply, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(stream)), {});
   const size_t header_end = bytes.find("end_header\n");
@@ -186,7 +186,7 @@ std::map<std::string, std::vector<double>> read_vertex_columns(const std::string
   std::istringstream header(bytes.substr(0, header_end));
   std::vector<std::pair<std::string, std::string>> vertex_properties; // type, name
   std::string line, element;
-  int vertices = 0;
+  int vertices = 0, faces = 0;
   while (std::getline(header, line)) {
     std::istringstream words(line);
     std::string keyword;
@@ -195,6 +195,7 @@ std::map<std::string, std::vector<double>> read_vertex_columns(const std::string
       int count = 0;
       words >> element >> count;
       if (element == "vertex") vertices = count;
+      if (element == "face") faces = count;
     } else if (keyword == "property" && element == "vertex") {
       std::string type, name;
       words >> type >> name;
@@ -202,21 +203,33 @@ std::map<std::string, std::vector<double>> read_vertex_columns(const std::string
     }
   }
   size_t at = header_end + std::strlen("end_header\n");
-  std::map<std::string, std::vector<double>> columns;
+  WrittenMesh out;
   for (int v = 0; v < vertices; ++v)
     for (const auto &[type, name] : vertex_properties) {
       if (type == "double")
-        columns[name].push_back(read_value<double>(bytes, at));
+        out.columns[name].push_back(read_value<double>(bytes, at));
       else if (type == "float")
-        columns[name].push_back(read_value<float>(bytes, at));
+        out.columns[name].push_back(read_value<float>(bytes, at));
       else if (type == "int")
-        columns[name].push_back(read_value<int32_t>(bytes, at));
+        out.columns[name].push_back(read_value<int32_t>(bytes, at));
       else if (type == "uchar")
-        columns[name].push_back(read_value<uint8_t>(bytes, at));
+        out.columns[name].push_back(read_value<uint8_t>(bytes, at));
       else
         throw std::runtime_error("unexpected vertex property " + type + " " + name);
     }
-  return columns;
+  for (int f = 0; f < faces && at < bytes.size(); ++f) {
+    const int corners = read_value<uint8_t>(bytes, at);
+    if (corners != 3) throw std::runtime_error(surface_ply + ": a face that is no triangle");
+    std::array<int, 3> triangle{};
+    for (int &corner : triangle)
+      corner = read_value<int32_t>(bytes, at);
+    out.triangles.push_back(triangle);
+  }
+  return out;
+}
+
+std::map<std::string, std::vector<double>> read_vertex_columns(const std::string &surface_ply) {
+  return read_written_mesh(surface_ply).columns;
 }
 
 double written_angle_error_degrees(const WrittenMap &map, const std::string &surface_ply) {

@@ -52,6 +52,14 @@ WrittenMap read_written_map(const std::string &sphere_ply, int euler, double com
 // name, as doubles: e.g. texture_u and texture_v of the surface `param -o` wrote.
 std::map<std::string, std::vector<double>> read_vertex_columns(const std::string &surface_ply);
 
+// A binary little-endian PLY file as written: every per-vertex property by name (as above) and
+// the triangles (face lists of uchar count and int indices).
+struct WrittenMesh {
+  std::map<std::string, std::vector<double>> columns;
+  std::vector<std::array<int, 3>> triangles;
+};
+WrittenMesh read_written_mesh(const std::string &surface_ply);
+
 // The mean corner-angle error in degrees between the surface as written by `param -o` (binary
 // PLY with double x, y, z) and the chordal triangles of the written sphere.
 double written_angle_error_degrees(const WrittenMap &map, const std::string &surface_ply);
