@@ -10,6 +10,8 @@ import bpy
 
 ADDON_ZIP, OUT = sys.argv[sys.argv.index("--") + 1:][:2]
 HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import readme_render_scene  # noqa: E402
 
 bpy.ops.preferences.addon_install(filepath=ADDON_ZIP, overwrite=True)
 addon_utils.enable("meromorph_blender", default_set=True)
@@ -75,18 +77,4 @@ eight.location = (-1.8, 0, 0)
 eight.rotation_euler = (math.radians(70), 0, math.radians(20))
 sphere.location = (1.6, 0, 0)
 
-bpy.ops.object.light_add(type="SUN", rotation=(math.radians(40), math.radians(20), math.radians(30)))
-bpy.context.active_object.data.energy = 4.0
-bpy.ops.object.camera_add(location=(0, -9.5, 2.6), rotation=(math.radians(75), 0, 0))
-scene = bpy.context.scene
-scene.camera = bpy.context.active_object
-scene.render.engine = "CYCLES"
-scene.cycles.device = "CPU"
-scene.cycles.samples = 32
-scene.cycles.use_denoising = False
-scene.render.resolution_x, scene.render.resolution_y = 800, 400
-scene.world = bpy.data.worlds.new("World")
-scene.world.color = (0.9, 0.9, 0.92)
-scene.render.filepath = OUT
-bpy.ops.render.render(write_still=True)
-print("wrote", OUT)
+readme_render_scene.render(OUT)

@@ -361,6 +361,53 @@ int main(void) {
   free(corners);
   free(layers);
   free(float_positions);
+  /* Remeshing through the layered sphere: a closed surface of the same genus, about as many
+     vertices as asked, every vertex on one of the two sheets and on the unit sphere. */
+  {
+    meromorph_remesh_result *remesh = NULL;
+    size_t n, t, k;
+    double *xyz, *values;
+    int32_t *faces, *sheet, *degree;
+    int ramification = 0;
+    meromorph_default_options(&options);
+    CHECK(meromorph_remesh_d(positions, V, triangles, F, &options, V, 2, &remesh) ==
+          MEROMORPH_ERROR_ARGUMENT);
+    CHECK(remesh == NULL && strstr(meromorph_last_error(), "area_correct") != NULL);
+    CHECK(meromorph_remesh_d(positions, V, triangles, F, &options, 0, 1, &remesh) == MEROMORPH_OK);
+    n = meromorph_remesh_vertex_count(remesh);
+    t = meromorph_remesh_triangle_count(remesh);
+    CHECK(n > 0.9 * V && n < 1.1 * V);
+    CHECK(t == 2 * n); /* Euler characteristic 0 for a closed surface: V - 3F/2 + F = 0 */
+    xyz = malloc(sizeof(double) * 3 * n);
+    values = malloc(sizeof(double) * 3 * n);
+    faces = malloc(sizeof(int32_t) * 3 * t);
+    sheet = malloc(sizeof(int32_t) * n);
+    degree = malloc(sizeof(int32_t) * n);
+    CHECK(meromorph_remesh_mesh(remesh, xyz, faces, sheet, degree, values) == MEROMORPH_OK);
+    CHECK(meromorph_remesh_mesh(remesh, NULL, NULL, NULL, NULL, NULL) == MEROMORPH_OK);
+    for (k = 0; k < 3 * t; ++k)
+      CHECK(faces[k] >= 0 && (size_t)faces[k] < n);
+    for (k = 0; k < n; ++k) {
+      CHECK(sheet[k] == 0 || sheet[k] == 1);
+      CHECK(fabs(sqrt(values[3 * k] * values[3 * k] + values[3 * k + 1] * values[3 * k + 1] +
+                      values[3 * k + 2] * values[3 * k + 2]) -
+                 1.0) < 1e-9);
+      if (degree[k] >= 2) ramification += degree[k] - 1;
+    }
+    CHECK(ramification == 4); /* Riemann-Hurwitz for genus 1, degree 2 */
+    CHECK(strstr(meromorph_remesh_report_json(remesh), "\"remesh\"") != NULL);
+    CHECK(strstr(meromorph_remesh_summary(remesh), "Hausdorff") != NULL);
+    CHECK(meromorph_remesh_vertex_count(NULL) == 0 && meromorph_remesh_summary(NULL)[0] == '\0');
+    CHECK(meromorph_remesh_mesh(NULL, xyz, NULL, NULL, NULL, NULL) == MEROMORPH_ERROR_ARGUMENT);
+    meromorph_remesh_free(remesh);
+    meromorph_remesh_free(NULL);
+    free(xyz);
+    free(values);
+    free(faces);
+    free(sheet);
+    free(degree);
+  }
+
   printf("%d passed, 0 failed\n", passed);
   return 0;
 }

@@ -7,20 +7,8 @@
 namespace meromorph::test {
 namespace {
 
-Vec3 sub(const Vec3 &a, const Vec3 &b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-double dot(const Vec3 &a, const Vec3 &b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec3 cross(const Vec3 &a, const Vec3 &b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
 Vec3 along(const Vec3 &a, const Vec3 &d, double t) {
   return {a[0] + t * d[0], a[1] + t * d[1], a[2] + t * d[2]};
-}
-double norm(const Vec3 &a) {
-  return std::sqrt(dot(a, a));
 }
 
 // Distance from p to triangle abc: the projection when it falls inside, else the nearest side.

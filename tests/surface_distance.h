@@ -11,9 +11,9 @@
 #include <unordered_map>
 #include <vector>
 
-namespace meromorph::test {
+#include "vector3.h"
 
-using Vec3 = std::array<double, 3>;
+namespace meromorph::test {
 
 class NearestOnSurface {
 public:

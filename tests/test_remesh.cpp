@@ -16,6 +16,9 @@
 namespace meromorph {
 namespace {
 
+using test::cross;
+using test::dot;
+using test::sub;
 using test::Vec3;
 
 struct RemeshFigures {
@@ -24,15 +27,6 @@ struct RemeshFigures {
   double hausdorff_to_input = 0, hausdorff_from_input = 0, min_angle_away_from_branch = 180;
 };
 
-Vec3 minus(const Vec3 &a, const Vec3 &b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-Vec3 cross3(const Vec3 &a, const Vec3 &b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-double dot3(const Vec3 &a, const Vec3 &b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
 Vec3 centroid(const std::vector<Vec3> &p, const std::array<int, 3> &t) {
   return {(p[t[0]][0] + p[t[1]][0] + p[t[2]][0]) / 3, (p[t[0]][1] + p[t[1]][1] + p[t[2]][1]) / 3,
           (p[t[0]][2] + p[t[1]][2] + p[t[2]][2]) / 3};
@@ -106,16 +100,16 @@ RemeshFigures judge_remesh(const std::string &input, const std::string &remesh_p
     const auto nearest = on_input(middle);
     out.hausdorff_to_input = std::max(out.hausdorff_to_input, nearest.distance / diagonal);
     const Vec3 normal =
-        cross3(minus(positions[t[1]], positions[t[0]]), minus(positions[t[2]], positions[t[0]]));
+        cross(sub(positions[t[1]], positions[t[0]]), sub(positions[t[2]], positions[t[0]]));
     // Turned over: more than 120 degrees from the input's normal at the nearest point (a face
     // straddling a sharp crease may lean a little past 90 degrees from one side of it).
-    const double length = std::sqrt(dot3(normal, normal));
-    out.folded += !(dot3(normal, nearest.normal) > -0.5 * length);
+    const double length = std::sqrt(dot(normal, normal));
+    out.folded += !(dot(normal, nearest.normal) > -0.5 * length);
     if (branch[t[0]] >= 2 || branch[t[1]] >= 2 || branch[t[2]] >= 2) continue;
     for (int k = 0; k < 3; ++k) {
-      const Vec3 u = minus(positions[t[(k + 1) % 3]], positions[t[k]]),
-                 w = minus(positions[t[(k + 2) % 3]], positions[t[k]]);
-      const double angle = std::atan2(std::sqrt(dot3(cross3(u, w), cross3(u, w))), dot3(u, w));
+      const Vec3 u = sub(positions[t[(k + 1) % 3]], positions[t[k]]),
+                 w = sub(positions[t[(k + 2) % 3]], positions[t[k]]);
+      const double angle = std::atan2(std::sqrt(dot(cross(u, w), cross(u, w))), dot(u, w));
       out.min_angle_away_from_branch = std::min(out.min_angle_away_from_branch, angle * 180 / M_PI);
     }
   }

@@ -8,20 +8,12 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "vector3.h"
+
 namespace meromorph::test {
 namespace {
 
-using Vec = std::array<double, 3>;
-
-Vec sub(const Vec &a, const Vec &b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-double dot(const Vec &a, const Vec &b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec cross(const Vec &a, const Vec &b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
+using Vec = Vec3;
 
 // Signed solid angle of the spherical triangle a, b, c (unit vectors): Van Oosterom and
 // Strackee, with the triple product taken on edge differences (exact for tiny triangles).
@@ -177,7 +169,7 @@ WrittenMap read_written_map(const std::string &path, int euler, double component
 }
 
 // Every per-vertex property of a binary little-endian PLY surface, by name, as doubles.
-WrittenMesh read_written_mesh(const std::string &surface_ply) {
+WrittenMesh read_written_mesh(const std::string &surface_ply, bool with_faces) {
   std::ifstream stream(surface_ply, std::ios::binary);
   const std::string bytes((std::istreambuf_iterator<char>(stream)), {});
   const size_t header_end = bytes.find("end_header\n");
@@ -217,7 +209,7 @@ WrittenMesh read_written_mesh(const std::string &surface_ply) {
       else
         throw std::runtime_error("unexpected vertex property " + type + " " + name);
     }
-  for (int f = 0; f < faces && at < bytes.size(); ++f) {
+  for (int f = 0; with_faces && f < faces && at < bytes.size(); ++f) {
     const int corners = read_value<uint8_t>(bytes, at);
     if (corners != 3) throw std::runtime_error(surface_ply + ": a face that is no triangle");
     std::array<int, 3> triangle{};
@@ -229,7 +221,7 @@ WrittenMesh read_written_mesh(const std::string &surface_ply) {
 }
 
 std::map<std::string, std::vector<double>> read_vertex_columns(const std::string &surface_ply) {
-  return read_written_mesh(surface_ply).columns;
+  return read_written_mesh(surface_ply, false).columns;
 }
 
 double written_angle_error_degrees(const WrittenMap &map, const std::string &surface_ply) {

@@ -53,12 +53,13 @@ WrittenMap read_written_map(const std::string &sphere_ply, int euler, double com
 std::map<std::string, std::vector<double>> read_vertex_columns(const std::string &surface_ply);
 
 // A binary little-endian PLY file as written: every per-vertex property by name (as above) and
-// the triangles (face lists of uchar count and int indices).
+// the triangles (faces that hold only a vertex_indices list of uchar count and int indices), unless
+// `with_faces` is false.
 struct WrittenMesh {
   std::map<std::string, std::vector<double>> columns;
   std::vector<std::array<int, 3>> triangles;
 };
-WrittenMesh read_written_mesh(const std::string &surface_ply);
+WrittenMesh read_written_mesh(const std::string &surface_ply, bool with_faces = true);
 
 // The mean corner-angle error in degrees between the surface as written by `param -o` (binary
 // PLY with double x, y, z) and the chordal triangles of the written sphere.

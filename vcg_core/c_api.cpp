@@ -1,6 +1,7 @@
 // The C ABI (meromorph.h) over the core: arrays in, the parameterization out, errors as codes.
 #include "meromorph.h"
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -14,6 +15,8 @@
 #include "maps/parameterization.h"
 #include "maps/surface_map.h"
 #include "mesh/mesh_from_arrays.h"
+#include "remesh/surface_remesh.h"
+#include "report/remesh_summary.h"
 #include "report/report_json.h"
 
 struct meromorph_result {
@@ -22,6 +25,12 @@ struct meromorph_result {
   std::string invalid_reasons, advice;
   size_t vertices = 0, triangles = 0;
   std::vector<std::array<int, 3>> input_triangles; // the sphere's when nothing was split
+};
+
+struct meromorph_remesh_result {
+  std::vector<double> xyz, sphere_xyz;
+  std::vector<int32_t> triangles, layer, branch;
+  std::string report, summary;
 };
 
 namespace {
@@ -166,27 +175,11 @@ std::unique_ptr<meromorph_result> map_result(meromorph::MeshArrays &arrays,
   return out;
 }
 
-template <typename Scalar>
-meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
-                              const int32_t *triangles, size_t triangle_count,
-                              const meromorph_options *options, meromorph_result **result) {
+// Runs `job`, turning what it throws into a status and the thread's last error.
+template <typename Job> meromorph_status guarded(Job &&job) {
   using namespace meromorph;
-  last_error.clear();
-  last_remedies.clear();
-  if (!result) return fail(MEROMORPH_ERROR_ARGUMENT, "result pointer is NULL");
-  *result = nullptr;
-  if (auto [status, problem] = check_arrays(positions, vertex_count, triangles, triangle_count);
-      status != MEROMORPH_OK)
-    return fail(status, problem);
-  meromorph_options settings;
-  if (const std::string problem = read_options(options, settings); !problem.empty())
-    return fail(MEROMORPH_ERROR_ARGUMENT, problem);
-  if (const std::string problem = check_options(settings, vertex_count, triangle_count);
-      !problem.empty())
-    return fail(MEROMORPH_ERROR_ARGUMENT, problem);
   try {
-    MeshArrays arrays = mesh_arrays(positions, vertex_count, triangles, triangle_count);
-    *result = map_result(arrays, settings).release();
+    job();
     return MEROMORPH_OK;
   } catch (const Cancelled &) {
     return fail(MEROMORPH_ERROR_CANCELLED, "cancelled by the progress callback");
@@ -203,7 +196,83 @@ meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
   }
 }
 
+// The checks every entry point makes before any work: the result pointer, the arrays and the
+// options (read into `settings`).
+template <typename Scalar, typename Result>
+meromorph_status check_call(const Scalar *positions, size_t vertex_count, const int32_t *triangles,
+                            size_t triangle_count, const meromorph_options *options,
+                            Result **result, meromorph_options &settings) {
+  last_error.clear();
+  last_remedies.clear();
+  if (!result) return fail(MEROMORPH_ERROR_ARGUMENT, "result pointer is NULL");
+  *result = nullptr;
+  if (auto [status, problem] = check_arrays(positions, vertex_count, triangles, triangle_count);
+      status != MEROMORPH_OK)
+    return fail(status, problem);
+  if (const std::string problem = read_options(options, settings); !problem.empty())
+    return fail(MEROMORPH_ERROR_ARGUMENT, problem);
+  if (const std::string problem = check_options(settings, vertex_count, triangle_count);
+      !problem.empty())
+    return fail(MEROMORPH_ERROR_ARGUMENT, problem);
+  return MEROMORPH_OK;
+}
+
+template <typename Scalar>
+meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
+                              const int32_t *triangles, size_t triangle_count,
+                              const meromorph_options *options, meromorph_result **result) {
+  using namespace meromorph;
+  meromorph_options settings;
+  if (const meromorph_status status =
+          check_call(positions, vertex_count, triangles, triangle_count, options, result, settings);
+      status != MEROMORPH_OK)
+    return status;
+  return guarded([&] {
+    MeshArrays arrays = mesh_arrays(positions, vertex_count, triangles, triangle_count);
+    *result = map_result(arrays, settings).release();
+  });
+}
+
+// The remesh of `arrays` with its report and summary; throws what the core throws.
+std::unique_ptr<meromorph_remesh_result> remesh_result(meromorph::MeshArrays &arrays,
+                                                       const meromorph_options &settings,
+                                                       int64_t target_vertices, bool area_correct) {
+  using namespace meromorph;
+  Mesh mesh;
+  mesh_from_arrays(arrays, mesh);
+  ParameterizeOptions parameters = core_options(settings);
+  parameters.area_correct = area_correct;
+  const Progress progress = core_progress(settings);
+  const Parameterization map = parameterize_surface(mesh, parameters, progress.range(0.0, 0.6));
+  if (!map.valid)
+    throw InputError("no valid map on this triangulation, so nothing to remesh through: " +
+                     join_phrases(map.invalid));
+  RemeshOptions options;
+  options.vertices = target_vertices > 0 ? (long long)target_vertices : -1;
+  SurfaceRemesh remesh;
+  remesh_through_sphere(mesh, map, options, progress.range(0.6, 1.0), remesh);
+  auto out = std::make_unique<meromorph_remesh_result>();
+  for (const auto &vertex : remesh.mesh.vert)
+    for (int axis = 0; axis < 3; ++axis)
+      out->xyz.push_back(double(vertex.cP()[axis]));
+  for (const auto &face : remesh.mesh.face)
+    for (int corner = 0; corner < 3; ++corner)
+      out->triangles.push_back(int32_t(index_of(remesh.mesh, face.cV(corner))));
+  out->layer.assign(remesh.layer.begin(), remesh.layer.end());
+  out->branch.assign(remesh.local_degree.begin(), remesh.local_degree.end());
+  for (const Eigen::Vector3d &p : remesh.sphere)
+    out->sphere_xyz.insert(out->sphere_xyz.end(), {p.x(), p.y(), p.z()});
+  nlohmann::json report = parameterization_json(map);
+  report["remesh"] = remesh_json(remesh);
+  report["version"] = MEROMORPH_VERSION;
+  out->report = json_text(report);
+  out->summary = remesh_summary("the mesh", map, remesh);
+  return out;
+}
+
 } // namespace
+
+extern "C" {} // namespace
 
 extern "C" {
 
@@ -403,6 +472,57 @@ meromorph_status meromorph_get_distortion(const meromorph_result *r, meromorph_d
 
 const char *meromorph_report_json(const meromorph_result *r) {
   return r ? r->report.c_str() : "";
+}
+
+meromorph_status meromorph_remesh_d(const double *positions, size_t vertex_count,
+                                    const int32_t *triangles, size_t triangle_count,
+                                    const meromorph_options *options, int64_t target_vertices,
+                                    int area_correct, meromorph_remesh_result **result) {
+  using namespace meromorph;
+  meromorph_options settings;
+  if (const meromorph_status status =
+          check_call(positions, vertex_count, triangles, triangle_count, options, result, settings);
+      status != MEROMORPH_OK)
+    return status;
+  if (area_correct != 0 && area_correct != 1)
+    return fail(MEROMORPH_ERROR_ARGUMENT,
+                "area_correct is " + std::to_string(area_correct) + "; use 0 or 1");
+  return guarded([&] {
+    MeshArrays arrays = mesh_arrays(positions, vertex_count, triangles, triangle_count);
+    *result = remesh_result(arrays, settings, target_vertices, area_correct == 1).release();
+  });
+}
+
+void meromorph_remesh_free(meromorph_remesh_result *r) {
+  delete r;
+}
+
+size_t meromorph_remesh_vertex_count(const meromorph_remesh_result *r) {
+  return r ? r->layer.size() : 0;
+}
+
+size_t meromorph_remesh_triangle_count(const meromorph_remesh_result *r) {
+  return r ? r->triangles.size() / 3 : 0;
+}
+
+meromorph_status meromorph_remesh_mesh(const meromorph_remesh_result *r, double *xyz,
+                                       int32_t *triangles, int32_t *layer, int32_t *branch,
+                                       double *sphere_xyz) {
+  if (!r) return fail(MEROMORPH_ERROR_ARGUMENT, "result pointer is NULL");
+  if (xyz) std::copy(r->xyz.begin(), r->xyz.end(), xyz);
+  if (triangles) std::copy(r->triangles.begin(), r->triangles.end(), triangles);
+  if (layer) std::copy(r->layer.begin(), r->layer.end(), layer);
+  if (branch) std::copy(r->branch.begin(), r->branch.end(), branch);
+  if (sphere_xyz) std::copy(r->sphere_xyz.begin(), r->sphere_xyz.end(), sphere_xyz);
+  return MEROMORPH_OK;
+}
+
+const char *meromorph_remesh_report_json(const meromorph_remesh_result *r) {
+  return r ? r->report.c_str() : "";
+}
+
+const char *meromorph_remesh_summary(const meromorph_remesh_result *r) {
+  return r ? r->summary.c_str() : "";
 }
 
 } // extern "C"

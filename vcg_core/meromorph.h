@@ -30,7 +30,7 @@
 extern "C" {
 #endif
 
-#define MEROMORPH_ABI_VERSION 4
+#define MEROMORPH_ABI_VERSION 5
 
 #if defined(__GNUC__)
 #define MEROMORPH_API __attribute__((visibility("default")))
@@ -232,6 +232,43 @@ MEROMORPH_API meromorph_status meromorph_get_distortion(const meromorph_result *
 /* The JSON report, as `meromorph param --report` writes it (NULL result: ""); owned by the
    result. */
 MEROMORPH_API const char *meromorph_report_json(const meromorph_result *result);
+
+/* Remeshing through the layered sphere (since ABI version 5), as `meromorph remesh`: the mesh is
+   mapped (with the Moebius area correction when area_correct is 1), a geodesic sphere with the
+   branch values on vertices is lifted through every sheet, evened out and smoothed; the result is
+   a closed surface of the same genus.
+   Inputs: as meromorph_parameterize_d, and
+     target_vertices  about how many vertices the remesh should have; <= 0: the input's count
+     area_correct     1 (default of the CLI) or 0
+   Outputs: *result: the new remesh, owned by the caller (meromorph_remesh_free); NULL on failure.
+   Returns: as meromorph_parameterize_d, and MEROMORPH_ERROR_INPUT when the map is not a valid
+     branched cover (nothing to remesh through; meromorph_last_error says why).
+   Thread-safe: yes, for different calls at once. */
+typedef struct meromorph_remesh_result meromorph_remesh_result;
+MEROMORPH_API meromorph_status meromorph_remesh_d(const double *positions, size_t vertex_count,
+                                                  const int32_t *triangles, size_t triangle_count,
+                                                  const meromorph_options *options,
+                                                  int64_t target_vertices, int area_correct,
+                                                  meromorph_remesh_result **result);
+/* Frees a remesh; NULL is allowed. */
+MEROMORPH_API void meromorph_remesh_free(meromorph_remesh_result *result);
+/* The remesh's vertex and triangle counts (NULL result: 0). */
+MEROMORPH_API size_t meromorph_remesh_vertex_count(const meromorph_remesh_result *result);
+MEROMORPH_API size_t meromorph_remesh_triangle_count(const meromorph_remesh_result *result);
+/* The remesh, copied into the caller's buffers (any may be NULL: not filled), n vertices, t
+   triangles: xyz 3n doubles; triangles 3t int32 (counter-clockwise from outside); layer n int32
+   (the sheet each vertex lies on); branch n int32 (the local degree at branch vertices, 0
+   elsewhere); sphere_xyz 3n doubles (each vertex's value on the unit sphere).
+   Returns: MEROMORPH_OK, or MEROMORPH_ERROR_ARGUMENT for a NULL result. */
+MEROMORPH_API meromorph_status meromorph_remesh_mesh(const meromorph_remesh_result *result,
+                                                     double *xyz, int32_t *triangles,
+                                                     int32_t *layer, int32_t *branch,
+                                                     double *sphere_xyz);
+/* The JSON report, as `meromorph remesh --report` writes it (the map's report with a "remesh"
+   section: Hausdorff distances, angles, valences, folded lifts, ...); NULL result: "". */
+MEROMORPH_API const char *meromorph_remesh_report_json(const meromorph_remesh_result *result);
+/* One line of the quality figures in words, as the CLI prints them; NULL result: "". */
+MEROMORPH_API const char *meromorph_remesh_summary(const meromorph_remesh_result *result);
 
 #ifdef __cplusplus
 }

@@ -263,7 +263,8 @@ void remesh_through_sphere(const Mesh &input, const Parameterization &map,
   }
   progress.report(0.8, "remesh quality");
   out.quality = measure_remesh(input, out.mesh, out.local_degree);
-  if (parts == 1 && map.sphere_faces.empty())
+  // Evening out fills the regions the sphere samples sparsely; without it they are reported.
+  if (!options.even_out && parts == 1 && map.sphere_faces.empty())
     out.sparse_regions = sparsely_sampled_regions(
         input, sample_shares(input, map.sphere, map.degree), options.sparse_below, 0.005);
   progress.report(1.0, "done");

@@ -15,8 +15,9 @@
 //      the target vertex count (what the lifted spheres hold when everything lifts); what did not
 //      lift and the folded lifts; the quality against the input (remesh_quality.h); the regions
 //      short of samples (sample_coverage.h: under a quarter of their fair share, 0.5% of the
-//      area or more; one part without non-manifold splits). A hole closed for the map is a gap on
-//      the sphere: its faces do not lift, and the remesh has a hole there too.
+//      area or more; one part without non-manifold splits; only without evening out, which fills
+//      them). A hole closed for the map is a gap on the sphere: its faces do not lift, and the
+//      remesh has a hole there too.
 #pragma once
 
 #include <vector>
