@@ -1,6 +1,8 @@
 #include "remesh/surface_remesh.h"
 
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 #include <vcg/complex/algorithms/update/topology.h>
 
@@ -185,6 +187,38 @@ void refine_to_target(const PartSurface &surface, RemeshPart &figures, double fa
   figures.frequency = best_frequency;
 }
 
+// A lifted part with faces that do not close is no closed surface: refused, naming the two branch
+// values nearest each other on the sphere (where that has been seen to happen).
+void refuse_unclosed(const PartSurface &surface, const LiftedSphere &lifted, int part) {
+  if (lifted.unclosed_faces == 0) return;
+  std::vector<int> branch_vertices;
+  for (size_t v = 0; v < surface.local_degree.size(); ++v)
+    if (surface.local_degree[v] >= 2) branch_vertices.push_back(int(v));
+  double nearest = 1e300;
+  int a = -1, b = -1;
+  for (size_t i = 0; i < branch_vertices.size(); ++i)
+    for (size_t j = i + 1; j < branch_vertices.size(); ++j) {
+      const double d =
+          (surface.surface.image[branch_vertices[i]] - surface.surface.image[branch_vertices[j]])
+              .norm();
+      if (d < nearest) {
+        nearest = d;
+        a = surface.global_vertex[branch_vertices[i]];
+        b = surface.global_vertex[branch_vertices[j]];
+      }
+    }
+  std::string where;
+  if (a >= 0) {
+    std::ostringstream words;
+    words << "; the branch points at vertices " << a << " and " << b << " have values only "
+          << std::setprecision(2) << nearest << " apart on the sphere";
+    where = words.str();
+  }
+  throw InputError("the remesh of part " + std::to_string(part) +
+                   " does not close: " + std::to_string(lifted.unclosed_faces) +
+                   " lifted faces do not close up (nothing was written)" + where);
+}
+
 void append_part(const LiftedSphere &lifted, int part, SurfaceRemesh &out) {
   const int offset = int(out.mesh.vert.size());
   auto vertex = vcg::tri::Allocator<Mesh>::AddVertices(out.mesh, lifted.positions.size());
@@ -257,6 +291,7 @@ void remesh_through_sphere(const Mesh &input, const Parameterization &map,
       }
       figures.target_vertices = even_target;
     }
+    refuse_unclosed(surface, lifted, part);
     out.target_vertices += figures.target_vertices;
     append_part(lifted, part, out);
     out.parts.push_back(figures);
