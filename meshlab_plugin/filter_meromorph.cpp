@@ -10,7 +10,7 @@
 #include "remedy_words.h"
 
 FilterMeromorphPlugin::FilterMeromorphPlugin() {
-  typeList << FP_CONFORMAL_SPHERICAL_PARAMETERIZATION;
+  typeList << FP_CONFORMAL_SPHERICAL_PARAMETERIZATION << FP_REMESH_THROUGH_CONFORMAL_SPHERE;
   for (FilterIDType type : types())
     actionList << new QAction(filterName(type), this);
 }
@@ -19,11 +19,19 @@ QString FilterMeromorphPlugin::pluginName() const {
   return "FilterMeromorph";
 }
 
-QString FilterMeromorphPlugin::filterName(FilterIDType) const {
+QString FilterMeromorphPlugin::filterName(FilterIDType filter) const {
+  if (filter == FP_REMESH_THROUGH_CONFORMAL_SPHERE) return "Remesh through the Conformal Sphere";
   return "Conformal Spherical Parameterization";
 }
 
-QString FilterMeromorphPlugin::filterInfo(FilterIDType) const {
+QString FilterMeromorphPlugin::filterInfo(FilterIDType filter) const {
+  if (filter == FP_REMESH_THROUGH_CONFORMAL_SPHERE)
+    return "A new triangulation of a closed surface of any genus, sampled through its conformal "
+           "map onto the (layered) sphere (meromorph): a geodesic sphere with the branch values "
+           "on vertices is lifted through every layer, evened out and smoothed on the surface. "
+           "The result goes into a new layer, about the given number of vertices, with the same "
+           "genus; each vertex's layer of the map is its quality and the branch vertices are "
+           "selected. The log gives the Hausdorff distance to the input and the angles.";
   return "Maps a closed surface of any genus conformally onto the sphere (meromorph: Zeng, Li, "
          "Yau, "
          "Gu 2007). Genus 0 gives a one-to-one map; a torus is wrapped twice over the sphere by "
@@ -34,7 +42,8 @@ QString FilterMeromorphPlugin::filterInfo(FilterIDType) const {
          "connected, oriented and manifold (see Filters > Cleaning and Repairing).";
 }
 
-MeshFilterInterface::FilterClass FilterMeromorphPlugin::getClass(QAction *) {
+MeshFilterInterface::FilterClass FilterMeromorphPlugin::getClass(QAction *action) {
+  if (ID(action) == FP_REMESH_THROUGH_CONFORMAL_SPHERE) return MeshFilterInterface::Remeshing;
   return FilterClass(MeshFilterInterface::Texture | MeshFilterInterface::Selection);
 }
 
@@ -42,17 +51,29 @@ int FilterMeromorphPlugin::getPreConditions(QAction *) const {
   return MeshModel::MM_FACENUMBER;
 }
 
-int FilterMeromorphPlugin::getRequirements(QAction *) {
+int FilterMeromorphPlugin::getRequirements(QAction *action) {
+  if (ID(action) == FP_REMESH_THROUGH_CONFORMAL_SPHERE) return MeshModel::MM_NONE;
   return MeshModel::MM_VERTTEXCOORD | MeshModel::MM_WEDGTEXCOORD | MeshModel::MM_VERTQUALITY;
 }
 
-int FilterMeromorphPlugin::postCondition(QAction *) const {
+int FilterMeromorphPlugin::postCondition(QAction *action) const {
+  if (ID(action) == FP_REMESH_THROUGH_CONFORMAL_SPHERE) return MeshModel::MM_NONE;
   return MeshModel::MM_VERTTEXCOORD | MeshModel::MM_WEDGTEXCOORD | MeshModel::MM_VERTQUALITY |
          MeshModel::MM_VERTFLAGSELECT;
 }
 
-void FilterMeromorphPlugin::initParameterSet(QAction *, MeshModel &,
+void FilterMeromorphPlugin::initParameterSet(QAction *action, MeshModel &model,
                                              RichParameterList &parameters) {
+  if (ID(action) == FP_REMESH_THROUGH_CONFORMAL_SPHERE) {
+    parameters.addParam(RichInt("targetVertices", model.cm.vn, "Vertices",
+                                "About how many vertices the new mesh should have (the default "
+                                "is the current mesh's count)."));
+    parameters.addParam(RichBool(
+        "areaCorrect", true, "Even out the sampling",
+        "First move the map by the Moebius transformation that spreads the surface's area most "
+        "evenly over the sphere, so that the samples fall more evenly on the surface."));
+    return;
+  }
   parameters.addParam(RichEnum(
       "uvKind", 0,
       QStringList() << "Spherical (longitude, latitude)"
@@ -106,9 +127,9 @@ void FilterMeromorphPlugin::initParameterSet(QAction *, MeshModel &,
                                "own cell of the unit square instead of each filling it."));
 }
 
-bool FilterMeromorphPlugin::fail(const QString &message) {
+bool FilterMeromorphPlugin::fail(const QString &filter, const QString &message) {
   errorMessage = message;
-  Log(GLLogStream::WARNING, "Conformal Spherical Parameterization failed: %s",
+  Log(GLLogStream::WARNING, "%s failed: %s", filter.toStdString().c_str(),
       message.toStdString().c_str());
   return false;
 }
@@ -273,16 +294,21 @@ QString branch_list(const FetchedMap &map) {
 
 } // namespace
 
-bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
+bool FilterMeromorphPlugin::applyFilter(QAction *action, MeshDocument &document,
                                         const RichParameterList &parameters,
                                         vcg::CallBackPos *callback) {
+  if (ID(action) == FP_REMESH_THROUGH_CONFORMAL_SPHERE)
+    return remesh(document, parameters, callback);
   MeshModel *model = document.mm();
-  if (!model) return fail("there is no current mesh");
+  if (!model)
+    return fail(filterName(FP_CONFORMAL_SPHERICAL_PARAMETERIZATION), "there is no current mesh");
   CMeshO &mesh = model->cm;
   QElapsedTimer timer;
   timer.start();
   const LiveMesh live = live_mesh(mesh);
-  if (live.faces.size() < 4) return fail("the mesh has fewer than 4 faces: no closed surface");
+  if (live.faces.size() < 4)
+    return fail(filterName(FP_CONFORMAL_SPHERICAL_PARAMETERIZATION),
+                "the mesh has fewer than 4 faces: no closed surface");
   ProgressBridge bridge{callback};
   const meromorph_options options = filter_options(parameters, bridge);
 
@@ -293,10 +319,11 @@ bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
   if (status != MEROMORPH_OK) {
     std::vector<int32_t> codes(size_t(meromorph_last_error_remedies(nullptr, 0)));
     meromorph_last_error_remedies(codes.data(), int(codes.size()));
-    return fail(with_meshlab_remedies(
-        QString("%1 (vertex and face numbers count the mesh's live elements from 0)")
-            .arg(meromorph_last_error()),
-        std::vector<int>(codes.begin(), codes.end())));
+    return fail(filterName(FP_CONFORMAL_SPHERICAL_PARAMETERIZATION),
+                with_meshlab_remedies(
+                    QString("%1 (vertex and face numbers count the mesh's live elements from 0)")
+                        .arg(meromorph_last_error()),
+                    std::vector<int>(codes.begin(), codes.end())));
   }
   const FetchedMap map = fetch_map(result, live.vertex_count(), live.faces.size());
   meromorph_result_free(result);
@@ -322,6 +349,62 @@ bool FilterMeromorphPlugin::applyFilter(QAction *, MeshDocument &document,
         "The map is not a valid branched cover of the sphere on this triangulation: %s. What to "
         "do: %s",
         map.invalid_reasons.c_str(), map.advice.c_str());
+  return true;
+}
+
+bool FilterMeromorphPlugin::remesh(MeshDocument &document, const RichParameterList &parameters,
+                                   vcg::CallBackPos *callback) {
+  const QString name = filterName(FP_REMESH_THROUGH_CONFORMAL_SPHERE);
+  MeshModel *model = document.mm();
+  if (!model) return fail(name, "there is no current mesh");
+  const LiveMesh live = live_mesh(model->cm);
+  if (live.faces.size() < 4)
+    return fail(name, "the mesh has fewer than 4 faces: no closed surface");
+  ProgressBridge bridge{callback};
+  meromorph_options options;
+  meromorph_default_options(&options);
+  options.close_holes = 1;
+  options.split_nonmanifold = 1;
+  options.progress = report_progress;
+  options.progress_user = &bridge;
+  const std::vector<double> positions(live.positions.begin(), live.positions.end());
+  meromorph_remesh_result *result = nullptr;
+  const meromorph_status status = meromorph_remesh_d(
+      positions.data(), live.vertex_count(), live.triangles.data(), live.faces.size(), &options,
+      parameters.getInt("targetVertices"), parameters.getBool("areaCorrect") ? 1 : 0, &result);
+  if (status != MEROMORPH_OK) {
+    std::vector<int32_t> codes(size_t(meromorph_last_error_remedies(nullptr, 0)));
+    meromorph_last_error_remedies(codes.data(), int(codes.size()));
+    return fail(name, with_meshlab_remedies(
+                          QString("%1 (vertex and face numbers count the mesh's live elements "
+                                  "from 0)")
+                              .arg(meromorph_last_error()),
+                          std::vector<int>(codes.begin(), codes.end())));
+  }
+  const size_t vertex_count = meromorph_remesh_vertex_count(result),
+               face_count = meromorph_remesh_triangle_count(result);
+  std::vector<double> xyz(3 * vertex_count);
+  std::vector<int32_t> triangles(3 * face_count), layer(vertex_count), branch(vertex_count);
+  meromorph_remesh_mesh(result, xyz.data(), triangles.data(), layer.data(), branch.data(), nullptr);
+  const QString summary = QString::fromUtf8(meromorph_remesh_summary(result));
+  meromorph_remesh_free(result);
+
+  MeshModel *remeshed = document.addNewMesh("", model->label() + " remeshed", true);
+  CMeshO &mesh = remeshed->cm;
+  remeshed->updateDataMask(MeshModel::MM_VERTQUALITY);
+  auto vertex = vcg::tri::Allocator<CMeshO>::AddVertices(mesh, vertex_count);
+  auto face = vcg::tri::Allocator<CMeshO>::AddFaces(mesh, face_count);
+  for (size_t v = 0; v < vertex_count; ++v, ++vertex) {
+    vertex->P() = Point3m(xyz[3 * v], xyz[3 * v + 1], xyz[3 * v + 2]);
+    vertex->Q() = float(layer[v]);
+    if (branch[v] >= 2) vertex->SetS();
+  }
+  for (size_t f = 0; f < face_count; ++f, ++face)
+    for (int k = 0; k < 3; ++k)
+      face->V(k) = &mesh.vert[size_t(triangles[3 * f + k])];
+  vcg::tri::UpdateBounding<CMeshO>::Box(mesh);
+  vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFaceNormalized(mesh);
+  Log("Remesh through the conformal sphere: %s", summary.toStdString().c_str());
   return true;
 }
 

@@ -1,9 +1,12 @@
-// MeshLab filter "Conformal Spherical Parameterization": the adapter between MeshLab's mesh and
-// meromorph's C ABI. No mathematics here.
+// MeshLab filters "Conformal Spherical Parameterization" and "Remesh through the Conformal Sphere":
+// the adapter between MeshLab's mesh and meromorph's C ABI. No mathematics here.
 //
 // In:  the current mesh of the document (closed, connected, oriented manifold) and the filter's
 //      parameters.
-// Out: per-vertex texture coordinates (and per-wedge ones when asked), per-vertex quality = layer,
+// Out (remesh): a new current layer with the remeshed surface, each vertex's sheet as its
+//      quality and the branch vertices selected; the quality figures in MeshLab's log.
+// Out (parameterization): per-vertex texture coordinates (and per-wedge ones when asked),
+// per-vertex quality = layer,
 //      the branch vertices selected, optionally a new layer holding the layered sphere; genus,
 //      degree, branch points, distortion and time in MeshLab's log. On bad input: errorMessage
 //      and a warning in the log saying what is wrong, nothing changed.
@@ -18,7 +21,7 @@ class FilterMeromorphPlugin : public QObject, public MeshFilterInterface {
   Q_INTERFACES(MeshFilterInterface)
 
 public:
-  enum { FP_CONFORMAL_SPHERICAL_PARAMETERIZATION };
+  enum { FP_CONFORMAL_SPHERICAL_PARAMETERIZATION, FP_REMESH_THROUGH_CONFORMAL_SPHERE };
 
   FilterMeromorphPlugin();
   QString pluginName() const override;
@@ -34,7 +37,9 @@ public:
                    vcg::CallBackPos *callback) override;
 
 private:
-  bool fail(const QString &message);
+  bool fail(const QString &filter, const QString &message);
+  bool remesh(MeshDocument &document, const RichParameterList &parameters,
+              vcg::CallBackPos *callback);
 };
 
 #endif

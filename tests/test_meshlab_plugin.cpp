@@ -210,5 +210,56 @@ TEST(MeshLabPlugin, FilterIsListedWithItsParameters) {
     EXPECT_NE(section.find(label), std::string::npos) << label;
 }
 
+// The remesh filter on the genus-2 eight: a new current layer, closed with the same genus, about
+// the asked vertex count, its quality the layer (0 or 1) and the six branch vertices selected.
+TEST(MeshLabPlugin, RemeshThroughTheConformalSphereMakesANewLayerOfTheSameGenus) {
+  const MeshLab meshlab;
+  const std::string remesh_script = std::string(MEROMORPH_SOURCE_DIR) +
+                                    "/meshlab_plugin/examples/remesh_through_conformal_sphere.mlx";
+  std::string log;
+  ASSERT_EQ(meshlab.run("-i " + test::data_path("eight.off") + " -o " +
+                            meshlab.path("remeshed.ply") + " -m vq vf -s " + remesh_script,
+                        log),
+            0)
+      << log;
+  EXPECT_NE(log.find("Remesh through the conformal sphere: the mesh: remeshed through 2 layers"),
+            std::string::npos)
+      << log;
+  EXPECT_NE(log.find("Hausdorff distance"), std::string::npos) << log;
+  Mesh remeshed;
+  test::load_ply_attributes(meshlab.path("remeshed.ply"), remeshed);
+  EXPECT_NEAR(remeshed.VN(), 800, 80);
+  std::set<std::pair<int, int>> sides;
+  for (const auto &face : remeshed.face)
+    for (int k = 0; k < 3; ++k) {
+      const int a = int(vcg::tri::Index(remeshed, face.cV(k))),
+                b = int(vcg::tri::Index(remeshed, face.cV((k + 1) % 3)));
+      sides.insert({std::min(a, b), std::max(a, b)});
+    }
+  EXPECT_EQ(2 * int(sides.size()), 3 * remeshed.FN()) << "closed: every side on two faces";
+  EXPECT_EQ(remeshed.VN() - int(sides.size()) + remeshed.FN(), -2) << "genus 2";
+  int selected = 0;
+  for (const auto &vertex : remeshed.vert) {
+    EXPECT_TRUE(vertex.cQ() == 0 || vertex.cQ() == 1) << "quality holds the layer";
+    selected += vertex.IsS();
+  }
+  EXPECT_EQ(selected, 6) << "the branch vertices are selected";
+}
+
+TEST(MeshLabPlugin, RemeshFilterIsListedUnderRemeshingWithItsParameters) {
+  const MeshLab meshlab;
+  std::string log;
+  ASSERT_EQ(meshlab.run("-d " + meshlab.path("filters.txt"), log), 0) << log;
+  std::ifstream stream(meshlab.path("filters.txt"));
+  std::stringstream text;
+  text << stream.rdbuf();
+  const std::string dump = text.str();
+  const size_t at = dump.find("Remesh through the Conformal Sphere");
+  ASSERT_NE(at, std::string::npos);
+  const std::string section = dump.substr(at, dump.find("\\section", at + 1) - at);
+  for (const char *label : {"Vertices", "Even out the sampling"})
+    EXPECT_NE(section.find(label), std::string::npos) << label;
+}
+
 } // namespace
 } // namespace meromorph
