@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
 #include <sys/wait.h>
@@ -191,7 +192,7 @@ TEST(MeshLabPlugin, NonManifoldSpotsAreSplitForTheComputation) {
   }
 }
 
-TEST(MeshLabPlugin, FilterIsListedWithItsParameters) {
+TEST(MeshLabPlugin, FiltersAreListedWithTheirParameters) {
   const MeshLab meshlab;
   std::string log;
   ASSERT_EQ(meshlab.run("-d " + meshlab.path("filters.txt"), log), 0) << log;
@@ -199,15 +200,20 @@ TEST(MeshLabPlugin, FilterIsListedWithItsParameters) {
   std::stringstream text;
   text << stream.rdbuf();
   const std::string dump = text.str();
-  const size_t at = dump.find("Conformal Spherical Parameterization");
-  ASSERT_NE(at, std::string::npos);
-  const std::string section = dump.substr(at, dump.find("\\section", at + 1) - at);
-  for (const char *label :
+  const std::map<std::string, std::vector<std::string>> filters = {
+      {"Conformal Spherical Parameterization",
        {"Texture coordinates", "Moebius normalization", "Genus 1: pole vertex",
         "Genus 0: pole face", "Genus >= 2: first form", "Genus >= 2: second form",
         "Seam-correct wedge texture coordinates", "Create the layered sphere", "Layer gap",
-        "Close holes", "Split non-manifold spots", "Pack the parts' texture coordinates"})
-    EXPECT_NE(section.find(label), std::string::npos) << label;
+        "Close holes", "Split non-manifold spots", "Pack the parts' texture coordinates"}},
+      {"Remesh through the Conformal Sphere", {"Vertices", "Even out the sampling"}}};
+  for (const auto &[filter, labels] : filters) {
+    const size_t at = dump.find(filter);
+    ASSERT_NE(at, std::string::npos) << filter;
+    const std::string section = dump.substr(at, dump.find("\\section", at + 1) - at);
+    for (const std::string &label : labels)
+      EXPECT_NE(section.find(label), std::string::npos) << filter << ": " << label;
+  }
 }
 
 // The remesh filter on the genus-2 eight: a new current layer, closed with the same genus, about
@@ -244,21 +250,6 @@ TEST(MeshLabPlugin, RemeshThroughTheConformalSphereMakesANewLayerOfTheSameGenus)
     selected += vertex.IsS();
   }
   EXPECT_EQ(selected, 6) << "the branch vertices are selected";
-}
-
-TEST(MeshLabPlugin, RemeshFilterIsListedUnderRemeshingWithItsParameters) {
-  const MeshLab meshlab;
-  std::string log;
-  ASSERT_EQ(meshlab.run("-d " + meshlab.path("filters.txt"), log), 0) << log;
-  std::ifstream stream(meshlab.path("filters.txt"));
-  std::stringstream text;
-  text << stream.rdbuf();
-  const std::string dump = text.str();
-  const size_t at = dump.find("Remesh through the Conformal Sphere");
-  ASSERT_NE(at, std::string::npos);
-  const std::string section = dump.substr(at, dump.find("\\section", at + 1) - at);
-  for (const char *label : {"Vertices", "Even out the sampling"})
-    EXPECT_NE(section.find(label), std::string::npos) << label;
 }
 
 } // namespace

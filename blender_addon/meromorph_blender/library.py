@@ -93,11 +93,75 @@ def load():
             getattr(lib, "meromorph_" + name).argtypes = [ctypes.c_void_p] + (
                 [] if name in ("report_json", "result_free") else [ctypes.c_void_p])
         lib.meromorph_branch_points.argtypes = [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
+        lib.meromorph_remesh_d.argtypes = [
+            ctypes.c_void_p, ctypes.c_size_t, ctypes.c_void_p, ctypes.c_size_t,
+            ctypes.POINTER(Options), ctypes.c_int64, ctypes.c_int, ctypes.POINTER(ctypes.c_void_p)]
+        for name in ("remesh_vertex_count", "remesh_triangle_count"):
+            getattr(lib, "meromorph_" + name).restype = ctypes.c_size_t
+            getattr(lib, "meromorph_" + name).argtypes = [ctypes.c_void_p]
+        lib.meromorph_remesh_mesh.argtypes = [ctypes.c_void_p] * 6
+        lib.meromorph_remesh_summary.restype = ctypes.c_char_p
+        lib.meromorph_remesh_summary.argtypes = [ctypes.c_void_p]
+        lib.meromorph_remesh_report_json.restype = ctypes.c_char_p
+        lib.meromorph_remesh_report_json.argtypes = [ctypes.c_void_p]
+        lib.meromorph_remesh_free.argtypes = [ctypes.c_void_p]
         if lib.meromorph_abi_version() != ABI_VERSION:
             raise MeromorphError(1, "libmeromorph has ABI %d, this add-on needs %d"
                                  % (lib.meromorph_abi_version(), ABI_VERSION))
         _library = lib
     return _library
+
+
+def last_error(lib, status):
+    """The calling thread's last failure as a MeromorphError, with its remedies."""
+    # How many remedies there are first, then all of them.
+    message = lib.meromorph_last_error().decode("utf-8", "replace")
+    remedies = np.zeros(max(0, lib.meromorph_last_error_remedies(None, 0)), dtype=np.int32)
+    count = lib.meromorph_last_error_remedies(remedies.ctypes.data, len(remedies))
+    return MeromorphError(status, message, remedies[:max(0, min(count, len(remedies)))].tolist())
+
+
+def options_with(lib, close_holes, split_nonmanifold, progress):
+    """Default options with these settings; the ctypes callback is returned to be kept alive."""
+    options = Options()
+    lib.meromorph_default_options(ctypes.byref(options))
+    options.close_holes = 1 if close_holes else 0
+    options.split_nonmanifold = 1 if split_nonmanifold else 0
+    callback = PROGRESS(lambda fraction, stage, user: 1 if progress is None else progress(fraction))
+    options.progress = callback
+    return options, callback
+
+
+def remesh(positions, triangles, target_vertices=0, area_correct=True, close_holes=True,
+           split_nonmanifold=True, progress=None):
+    """The surface remeshed through its layered sphere: vertices (n x 3), triangles (t x 3),
+    per vertex its layer and branch degree (0 away from branch vertices), the summary line and
+    the report."""
+    lib = load()
+    positions = np.ascontiguousarray(positions, dtype=np.float64).reshape(-1)
+    triangles = np.ascontiguousarray(triangles, dtype=np.int32).reshape(-1)
+    options, callback = options_with(lib, close_holes, split_nonmanifold, progress)  # noqa: F841
+    result = ctypes.c_void_p()
+    status = lib.meromorph_remesh_d(
+        positions.ctypes.data, positions.size // 3, triangles.ctypes.data, triangles.size // 3,
+        ctypes.byref(options), int(target_vertices), 1 if area_correct else 0,
+        ctypes.byref(result))
+    if status != 0:
+        raise last_error(lib, status)
+    try:
+        n = lib.meromorph_remesh_vertex_count(result)
+        t = lib.meromorph_remesh_triangle_count(result)
+        out = {"positions": np.empty(3 * n), "triangles": np.empty(3 * t, dtype=np.int32),
+               "layer": np.empty(n, dtype=np.int32), "branch": np.empty(n, dtype=np.int32)}
+        if lib.meromorph_remesh_mesh(result, out["positions"].ctypes.data,
+                                     out["triangles"].ctypes.data, out["layer"].ctypes.data,
+                                     out["branch"].ctypes.data, None):
+            raise last_error(lib, 1)
+        out["summary"] = lib.meromorph_remesh_summary(result).decode("utf-8", "replace")
+        out["report"] = json.loads(lib.meromorph_remesh_report_json(result).decode("utf-8"))
+        return out
+    finally:
+        lib.meromorph_remesh_free(result)
 
 
 def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1, pole_face=-1,
@@ -124,11 +188,7 @@ def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
         positions.ctypes.data, positions.size // 3, triangles.ctypes.data, triangles.size // 3,
         ctypes.byref(options), ctypes.byref(result))
     if status != 0:
-        # How many remedies there are first, then all of them.
-        message = lib.meromorph_last_error().decode("utf-8", "replace")
-        remedies = np.zeros(max(0, lib.meromorph_last_error_remedies(None, 0)), dtype=np.int32)
-        count = lib.meromorph_last_error_remedies(remedies.ctypes.data, len(remedies))
-        raise MeromorphError(status, message, remedies[:max(0, min(count, len(remedies)))].tolist())
+        raise last_error(lib, status)
     try:
         n = lib.meromorph_vertex_count(result)
         t = lib.meromorph_triangle_count(result)

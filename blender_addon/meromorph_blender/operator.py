@@ -38,7 +38,46 @@ def loop_uvs(mesh, loops, corner_uv):
     return uv
 
 
-class MESH_OT_conformal_sphere_map(bpy.types.Operator):
+class ActiveMeshOperator:
+    """What both operators share: they need an active mesh object (in Object Mode while they
+    run) and report progress to the window manager."""
+
+    @classmethod
+    def poll(cls, context):
+        obj = context.active_object
+        if obj is None or obj.type != "MESH":
+            cls.poll_message_set("Select a mesh object first")
+            return False
+        return True
+
+    def execute(self, context):
+        obj = context.active_object
+        if obj is None or obj.type != "MESH":
+            self.report({"ERROR"}, "No active mesh: select a mesh object first")
+            return {"CANCELLED"}
+        if len(obj.data.polygons) < 4:
+            self.report({"ERROR"}, "'%s' has %d faces: a closed surface needs at least 4"
+                        % (obj.name, len(obj.data.polygons)))
+            return {"CANCELLED"}
+        was_editing = obj.mode == "EDIT"
+        if was_editing:
+            bpy.ops.object.mode_set(mode="OBJECT")
+        window_manager = context.window_manager
+        window_manager.progress_begin(0, 100)
+
+        def progress(fraction):
+            window_manager.progress_update(int(100 * fraction))
+            return 1
+
+        try:
+            return self.run(context, obj, progress)
+        finally:
+            window_manager.progress_end()
+            if was_editing and self.back_to_edit_mode:
+                bpy.ops.object.mode_set(mode="EDIT")
+
+
+class MESH_OT_conformal_sphere_map(ActiveMeshOperator, bpy.types.Operator):
     """Map the active mesh conformally onto the sphere: UVs, branch points, layered sphere"""
     bl_idname = "mesh.meromorph_conformal_sphere_map"
     bl_label = "Conformal Sphere Map"
@@ -77,43 +116,12 @@ class MESH_OT_conformal_sphere_map(bpy.types.Operator):
                           description="Several parts: each part's UVs in its own cell of the "
                                       "unit square instead of each filling it")
 
-    @classmethod
-    def poll(cls, context):
-        obj = context.active_object
-        if obj is None or obj.type != "MESH":
-            cls.poll_message_set("Select a mesh object first")
-            return False
-        return True
+    back_to_edit_mode = True
 
-    def execute(self, context):
-        obj = context.active_object
-        if obj is None or obj.type != "MESH":
-            self.report({"ERROR"}, "No active mesh: select a mesh object first")
-            return {"CANCELLED"}
-        was_editing = obj.mode == "EDIT"
-        if was_editing:
-            bpy.ops.object.mode_set(mode="OBJECT")
-        try:
-            return self.run(context, obj)
-        finally:
-            if was_editing:
-                bpy.ops.object.mode_set(mode="EDIT")
-
-    def run(self, context, obj):
+    def run(self, context, obj, progress):
         mesh = obj.data
-        if len(mesh.polygons) < 4:
-            self.report({"ERROR"}, "'%s' has %d faces: a closed surface needs at least 4"
-                        % (obj.name, len(mesh.polygons)))
-            return {"CANCELLED"}
         started = time.time()
         positions, triangles, loops = mesh_arrays(mesh)
-        window_manager = context.window_manager
-        window_manager.progress_begin(0, 100)
-
-        def progress(fraction):
-            window_manager.progress_update(int(100 * fraction))
-            return 1
-
         try:
             result = library.parameterize(
                 positions, triangles, uv_kind=0 if self.uv_kind == "SPHERICAL" else 1,
@@ -125,8 +133,6 @@ class MESH_OT_conformal_sphere_map(bpy.types.Operator):
             self.report({"ERROR"}, "'%s' cannot be mapped: %s (vertex numbers are Blender's)"
                         % (obj.name, remedies.with_remedies(str(error), error.remedies)))
             return {"CANCELLED"}
-        finally:
-            window_manager.progress_end()
 
         layer = mesh.uv_layers.get(self.uv_name) or mesh.uv_layers.new(name=self.uv_name)
         layer.data.foreach_set("uv", loop_uvs(mesh, loops, result["corner_uv"]))

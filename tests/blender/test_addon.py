@@ -276,4 +276,41 @@ bpy.context.collection.objects.link(triangle)
 activate(triangle)
 expect_error("at least 4")
 
+# Object > Conformal Sphere Remesh on the genus-2 eight: a new object beside it, closed with the
+# same genus, about the asked vertex count, each vertex's layer and the six branch vertices.
+clear_scene()
+eight = add_off(os.path.join(DATA, "eight.off"), "Eight")
+eight_vertices = len(eight.data.vertices)
+check(bpy.ops.object.meromorph_conformal_sphere_remesh(target_vertices=800) == {"FINISHED"},
+      "eight remeshed")
+remeshed = bpy.data.objects.get("Eight Remeshed")
+check(remeshed is not None, "a new object 'Eight Remeshed'")
+check(bpy.context.active_object == remeshed, "the new object is active")
+check(len(eight.data.vertices) == eight_vertices, "the original is untouched")
+data = remeshed.data
+check(abs(len(data.vertices) - 800) <= 80, "about 800 vertices: %d" % len(data.vertices))
+check(all(len(p.vertices) == 3 for p in data.polygons), "triangles")
+edge_faces = {}
+for polygon in data.polygons:
+    for key in polygon.edge_keys:
+        edge_faces[key] = edge_faces.get(key, 0) + 1
+check(all(count == 2 for count in edge_faces.values()), "closed: every edge on two faces")
+check(len(data.vertices) - len(data.edges) + len(data.polygons) == -2, "genus 2 kept")
+layers = np.empty(len(data.vertices), dtype=np.int32)
+data.attributes["layer"].data.foreach_get("value", layers)
+check(set(layers.tolist()) == {0, 1}, "two layers: %s" % sorted(set(layers.tolist())))
+group = remeshed.vertex_groups["branch_points"].index
+in_group = [v.index for v in data.vertices if any(g.group == group for g in v.groups)]
+check(len(in_group) == 6, "six branch vertices in the group: %d" % len(in_group))
+mesh = bpy.data.meshes.new("Lone Triangle")
+mesh.from_pydata([(0, 0, 0), (1, 0, 0), (0, 1, 0)], [], [(0, 1, 2)])
+lone = bpy.data.objects.new("Lone Triangle", mesh)
+bpy.context.collection.objects.link(lone)
+activate(lone)
+try:
+    bpy.ops.object.meromorph_conformal_sphere_remesh()
+    raise AssertionError("a single triangle should be refused")
+except RuntimeError as error:
+    check("at least 4" in str(error), "the refusal says why: %s" % error)
+
 print(summary())

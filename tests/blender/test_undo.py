@@ -28,6 +28,15 @@ def main():
         bpy.ops.ed.undo()
         check(len(bpy.data.objects[name].data.uv_layers) == before, "undo removed the UV layer")
         check(bpy.data.objects.get(name + " Layered Sphere") is None, "undo removed the sphere object")
+        torus = bpy.data.objects[name]
+        bpy.ops.object.select_all(action="DESELECT")
+        torus.select_set(True)
+        bpy.context.view_layer.objects.active = torus
+        check(bpy.ops.object.meromorph_conformal_sphere_remesh("EXEC_DEFAULT", True) == {"FINISHED"},
+              "remeshed")
+        check(bpy.data.objects.get(name + " Remeshed") is not None, "remeshed object added")
+        bpy.ops.ed.undo()
+        check(bpy.data.objects.get(name + " Remeshed") is None, "undo removed the remeshed object")
     print(summary())
 
 
