@@ -217,20 +217,29 @@ meromorph_status check_call(const Scalar *positions, size_t vertex_count, const 
   return MEROMORPH_OK;
 }
 
-template <typename Scalar>
-meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
+// An entry point: the checks of check_call, then `make(arrays, settings)` (the caller's mesh as
+// arrays) into *result, what it throws turned into a status by guarded.
+template <typename Scalar, typename Result, typename Make>
+meromorph_status checked_call(const Scalar *positions, size_t vertex_count,
                               const int32_t *triangles, size_t triangle_count,
-                              const meromorph_options *options, meromorph_result **result) {
-  using namespace meromorph;
+                              const meromorph_options *options, Result **result, Make &&make) {
   meromorph_options settings;
   if (const meromorph_status status =
           check_call(positions, vertex_count, triangles, triangle_count, options, result, settings);
       status != MEROMORPH_OK)
     return status;
   return guarded([&] {
-    MeshArrays arrays = mesh_arrays(positions, vertex_count, triangles, triangle_count);
-    *result = map_result(arrays, settings).release();
+    meromorph::MeshArrays arrays = mesh_arrays(positions, vertex_count, triangles, triangle_count);
+    *result = make(arrays, settings).release();
   });
+}
+
+template <typename Scalar>
+meromorph_status parameterize(const Scalar *positions, size_t vertex_count,
+                              const int32_t *triangles, size_t triangle_count,
+                              const meromorph_options *options, meromorph_result **result) {
+  return checked_call(positions, vertex_count, triangles, triangle_count, options, result,
+                      map_result);
 }
 
 // The remesh of `arrays` with its report and summary; throws what the core throws.
@@ -478,19 +487,13 @@ meromorph_status meromorph_remesh_d(const double *positions, size_t vertex_count
                                     const int32_t *triangles, size_t triangle_count,
                                     const meromorph_options *options, int64_t target_vertices,
                                     int area_correct, meromorph_remesh_result **result) {
-  using namespace meromorph;
-  meromorph_options settings;
-  if (const meromorph_status status =
-          check_call(positions, vertex_count, triangles, triangle_count, options, result, settings);
-      status != MEROMORPH_OK)
-    return status;
-  if (area_correct != 0 && area_correct != 1)
-    return fail(MEROMORPH_ERROR_ARGUMENT,
-                "area_correct is " + std::to_string(area_correct) + "; use 0 or 1");
-  return guarded([&] {
-    MeshArrays arrays = mesh_arrays(positions, vertex_count, triangles, triangle_count);
-    *result = remesh_result(arrays, settings, target_vertices, area_correct == 1).release();
-  });
+  return checked_call(positions, vertex_count, triangles, triangle_count, options, result,
+                      [&](meromorph::MeshArrays &arrays, const meromorph_options &settings) {
+                        if (area_correct != 0 && area_correct != 1)
+                          throw meromorph::ArgumentError(
+                              "area_correct is " + std::to_string(area_correct) + "; use 0 or 1");
+                        return remesh_result(arrays, settings, target_vertices, area_correct == 1);
+                      });
 }
 
 void meromorph_remesh_free(meromorph_remesh_result *r) {

@@ -38,6 +38,14 @@ def loop_uvs(mesh, loops, corner_uv):
     return uv
 
 
+def add_branch_group(obj, vertices):
+    """The vertex group "branch_points" of `obj`, holding `vertices`."""
+    group = obj.vertex_groups.new(name="branch_points")
+    if len(vertices):
+        group.add([int(v) for v in vertices], 1.0, "REPLACE")
+    return group
+
+
 class ActiveMeshOperator:
     """What both operators share: they need an active mesh object (in Object Mode while they
     run) and report progress to the window manager."""
@@ -185,8 +193,5 @@ class MESH_OT_conformal_sphere_map(ActiveMeshOperator, bpy.types.Operator):
         sphere = bpy.data.objects.new(name, sphere_mesh)
         context.collection.objects.link(sphere)
         sphere.matrix_world = obj.matrix_world.copy()
-        group = sphere.vertex_groups.new(name="branch_points")
-        branch = np.flatnonzero(result["sphere_branch"])
-        if len(branch):
-            group.add([int(v) for v in branch], 1.0, "REPLACE")
+        add_branch_group(sphere, np.flatnonzero(result["sphere_branch"]))
         return sphere

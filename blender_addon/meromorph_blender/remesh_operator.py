@@ -6,7 +6,7 @@ import numpy as np
 from bpy.props import BoolProperty, IntProperty
 
 from . import library, remedies
-from .operator import ActiveMeshOperator, mesh_arrays
+from .operator import ActiveMeshOperator, add_branch_group, mesh_arrays
 
 
 class OBJECT_OT_conformal_sphere_remesh(ActiveMeshOperator, bpy.types.Operator):
@@ -45,10 +45,7 @@ class OBJECT_OT_conformal_sphere_remesh(ActiveMeshOperator, bpy.types.Operator):
         remeshed = bpy.data.objects.new(name, remeshed_mesh)
         context.collection.objects.link(remeshed)
         remeshed.matrix_world = obj.matrix_world.copy()
-        group = remeshed.vertex_groups.new(name="branch_points")
-        branch = np.flatnonzero(result["branch"] >= 2)
-        if len(branch):
-            group.add([int(v) for v in branch], 1.0, "REPLACE")
+        add_branch_group(remeshed, np.flatnonzero(result["branch"] >= 2))
         bpy.ops.object.select_all(action="DESELECT")
         remeshed.select_set(True)
         context.view_layer.objects.active = remeshed

@@ -1,5 +1,7 @@
 #include "remesh/layered_sphere_lift.h"
 
+#include <algorithm>
+#include <cmath>
 #include <deque>
 #include <limits>
 
@@ -137,6 +139,25 @@ bool lifted_face_folds(const MappedSurface &surface, const LiftedSphere &lifted,
   for (int corner : face)
     reference += surface_normal_at(surface, lifted.surface_point[corner]);
   return (q - p).cross(r - p).dot(reference) < 0;
+}
+
+double corner_angle(const Eigen::Vector3d &at, const Eigen::Vector3d &to,
+                    const Eigen::Vector3d &from) {
+  const Eigen::Vector3d u = to - at, v = from - at;
+  return std::atan2(u.cross(v).norm(), u.dot(v));
+}
+
+double smallest_corner_angle(const LiftedSphere &lifted, const std::array<int, 3> &face) {
+  double smallest = M_PI;
+  for (int k = 0; k < 3; ++k)
+    smallest = std::min(smallest,
+                        corner_angle(lifted.positions[face[k]], lifted.positions[face[(k + 1) % 3]],
+                                     lifted.positions[face[(k + 2) % 3]]));
+  return smallest;
+}
+
+bool positive_on_sphere(const LiftedSphere &lifted, const std::array<int, 3> &face) {
+  return lifted.sphere[face[0]].dot(lifted.sphere[face[1]].cross(lifted.sphere[face[2]])) > 0;
 }
 
 int count_folded_lifts(const MappedSurface &surface, const LiftedSphere &lifted) {

@@ -16,30 +16,11 @@ Side side(int a, int b) {
   return a < b ? Side{a, b} : Side{b, a};
 }
 
-double corner_angle(const Eigen::Vector3d &at, const Eigen::Vector3d &to,
-                    const Eigen::Vector3d &from) {
-  const Eigen::Vector3d u = to - at, v = from - at;
-  return std::atan2(u.cross(v).norm(), u.dot(v));
-}
-
-double smallest_angle(const LiftedSphere &lifted, const std::array<int, 3> &face) {
-  double smallest = M_PI;
-  for (int k = 0; k < 3; ++k)
-    smallest = std::min(smallest,
-                        corner_angle(lifted.positions[face[k]], lifted.positions[face[(k + 1) % 3]],
-                                     lifted.positions[face[(k + 2) % 3]]));
-  return smallest;
-}
-
 Eigen::Vector3d unit_normal(const LiftedSphere &lifted, const std::array<int, 3> &face) {
   const Eigen::Vector3d &p = lifted.positions[face[0]];
   const Eigen::Vector3d n = (lifted.positions[face[1]] - p).cross(lifted.positions[face[2]] - p);
   const double norm = n.norm();
   return norm > 0 ? Eigen::Vector3d(n / norm) : Eigen::Vector3d::Zero();
-}
-
-bool positive_on_sphere(const LiftedSphere &lifted, const std::array<int, 3> &face) {
-  return lifted.sphere[face[0]].dot(lifted.sphere[face[1]].cross(lifted.sphere[face[2]])) > 0;
 }
 
 double bend(const LiftedSphere &lifted, const std::array<int, 3> &f, const std::array<int, 3> &g) {
@@ -95,9 +76,10 @@ int flip_lifted_edges(const MappedSurface &surface, int passes, LiftedSphere &li
       if (!positive_on_sphere(lifted, nf) || !positive_on_sphere(lifted, ng)) continue;
       if (lifted_face_folds(surface, lifted, nf) || lifted_face_folds(surface, lifted, ng))
         continue;
-      if (!unfolds && (bend(lifted, nf, ng) > bend(lifted, f, g) + 10.0 * M_PI / 180.0 ||
-                       std::min(smallest_angle(lifted, nf), smallest_angle(lifted, ng)) <=
-                           std::min(smallest_angle(lifted, f), smallest_angle(lifted, g))))
+      if (!unfolds &&
+          (bend(lifted, nf, ng) > bend(lifted, f, g) + 10.0 * M_PI / 180.0 ||
+           std::min(smallest_corner_angle(lifted, nf), smallest_corner_angle(lifted, ng)) <=
+               std::min(smallest_corner_angle(lifted, f), smallest_corner_angle(lifted, g))))
         continue;
       lifted.faces[pair[0]] = nf;
       lifted.faces[pair[1]] = ng;

@@ -14,55 +14,6 @@ Side side(int a, int b) {
   return a < b ? Side{a, b} : Side{b, a};
 }
 
-// The point halfway along the lift of side (a, b), measured on the surface (a conformal map's
-// scale changes fast where it shrinks the surface, so the sphere's midpoint would lift far off
-// the middle), walked from an end that is no branch vertex.
-struct Midpoint {
-  Eigen::Vector3d sphere, position;
-  SurfacePoint at;
-  int layer = 0;
-};
-
-Midpoint midpoint_of(const MappedSurface &surface, const Side &ends, int max_steps,
-                     const LiftedSphere &lifted) {
-  int from = ends.first, to = ends.second;
-  if (lifted.local_degree[from] >= 2) std::swap(from, to);
-  const Eigen::Vector3d &a = lifted.sphere[from], &b = lifted.sphere[to];
-  std::vector<PathPoint> path{{lifted.surface_point[from], 0.0}};
-  const bool walked = bool(lift_arc(surface, path.front().point, a, b, max_steps, &path));
-  double t = 0.5;
-  if (walked) {
-    std::vector<double> length{0.0};
-    for (size_t k = 1; k < path.size(); ++k)
-      length.push_back(
-          length.back() +
-          (position_of(surface, path[k].point) - position_of(surface, path[k - 1].point)).norm());
-    size_t k = 1;
-    while (k + 1 < path.size() && length[k] < 0.5 * length.back())
-      ++k;
-    const double span = length[k] - length[k - 1];
-    const double along = span > 0 ? (0.5 * length.back() - length[k - 1]) / span : 0.5;
-    t = path[k - 1].t + std::clamp(along, 0.0, 1.0) * (path[k].t - path[k - 1].t);
-  }
-  Midpoint out;
-  out.sphere = ((1 - t) * a + t * b).normalized();
-  const std::optional<SurfacePoint> point =
-      lift_arc(surface, lifted.surface_point[from], a, out.sphere, max_steps);
-  out.at = point ? *point : lifted.surface_point[from];
-  out.position = point ? position_of(surface, out.at)
-                       : Eigen::Vector3d(0.5 * (lifted.positions[from] + lifted.positions[to]));
-  out.layer = lifted.layer[from];
-  return out;
-}
-
-void add_midpoint(const Midpoint &middle, LiftedSphere &lifted) {
-  lifted.positions.push_back(middle.position);
-  lifted.sphere.push_back(middle.sphere);
-  lifted.layer.push_back(middle.layer);
-  lifted.local_degree.push_back(0);
-  lifted.surface_point.push_back(middle.at);
-}
-
 // The sides to split this round: those of every face over the limits, closed so that no face
 // has exactly two.
 std::map<Side, int> sides_to_split(const MappedSurface &surface, const LiftedSphere &lifted,
@@ -87,6 +38,43 @@ std::map<Side, int> sides_to_split(const MappedSurface &surface, const LiftedSph
     }
   }
   return split;
+}
+
+// The point halfway along the lift of side (a, b), measured on the surface (a conformal map's
+// scale changes fast where it shrinks the surface, so the sphere's midpoint would lift far off
+// the middle), walked from an end that is no branch vertex.
+void add_midpoint(const MappedSurface &surface, const Side &ends, int max_steps,
+                  LiftedSphere &lifted) {
+  int from = ends.first, to = ends.second;
+  if (lifted.local_degree[from] >= 2) std::swap(from, to);
+  const Eigen::Vector3d &a = lifted.sphere[from], &b = lifted.sphere[to];
+  std::vector<PathPoint> path{{lifted.surface_point[from], 0.0}};
+  const bool walked = bool(lift_arc(surface, path.front().point, a, b, max_steps, &path));
+  double t = 0.5;
+  if (walked) {
+    std::vector<double> length{0.0};
+    for (size_t k = 1; k < path.size(); ++k)
+      length.push_back(
+          length.back() +
+          (position_of(surface, path[k].point) - position_of(surface, path[k - 1].point)).norm());
+    size_t k = 1;
+    while (k + 1 < path.size() && length[k] < 0.5 * length.back())
+      ++k;
+    const double span = length[k] - length[k - 1];
+    const double along = span > 0 ? (0.5 * length.back() - length[k - 1]) / span : 0.5;
+    t = path[k - 1].t + std::clamp(along, 0.0, 1.0) * (path[k].t - path[k - 1].t);
+  }
+  const Eigen::Vector3d middle = ((1 - t) * a + t * b).normalized();
+  const std::optional<SurfacePoint> point =
+      lift_arc(surface, lifted.surface_point[from], a, middle, max_steps);
+  const SurfacePoint at = point ? *point : lifted.surface_point[from];
+  lifted.positions.push_back(
+      point ? position_of(surface, at)
+            : Eigen::Vector3d(0.5 * (lifted.positions[from] + lifted.positions[to])));
+  lifted.sphere.push_back(middle);
+  lifted.layer.push_back(lifted.layer[from]);
+  lifted.local_degree.push_back(0);
+  lifted.surface_point.push_back(at);
 }
 
 // A face halved through the midpoint of one side: the halves, until the next round puts the face
@@ -188,7 +176,7 @@ void refine_lifted_sphere(const MappedSurface &surface, const RefinementLimits &
     for (auto &[ends, middle] : split)
       if (middle < 0) {
         middle = int(lifted.positions.size());
-        add_midpoint(midpoint_of(surface, ends, max_steps, lifted), lifted);
+        add_midpoint(surface, ends, max_steps, lifted);
       }
     split_faces(lifted, split, halved);
     if (split.size() == known.size()) break; // nothing new to split

@@ -11,12 +11,6 @@ namespace {
 
 constexpr double kept_angle = 35.0 * M_PI / 180.0;
 
-double corner_angle(const Eigen::Vector3d &at, const Eigen::Vector3d &to,
-                    const Eigen::Vector3d &from) {
-  const Eigen::Vector3d u = to - at, v = from - at;
-  return std::atan2(u.cross(v).norm(), u.dot(v));
-}
-
 struct Star {
   std::vector<int> faces, neighbours;
 };
@@ -51,13 +45,8 @@ StarShape shape_of(const MappedSurface &surface, const LiftedSphere &lifted, con
   for (int f : star.faces) {
     const auto &c = lifted.faces[f];
     shape.folded += lifted_face_folds(surface, lifted, c);
-    shape.turned_on_sphere |=
-        lifted.sphere[c[0]].dot(lifted.sphere[c[1]].cross(lifted.sphere[c[2]])) <= 0;
-    for (int k = 0; k < 3; ++k)
-      shape.smallest_angle =
-          std::min(shape.smallest_angle,
-                   corner_angle(lifted.positions[c[k]], lifted.positions[c[(k + 1) % 3]],
-                                lifted.positions[c[(k + 2) % 3]]));
+    shape.turned_on_sphere |= !positive_on_sphere(lifted, c);
+    shape.smallest_angle = std::min(shape.smallest_angle, smallest_corner_angle(lifted, c));
   }
   return shape;
 }
