@@ -190,6 +190,21 @@ TEST(Remesh, GenusThreeIsClosedOrRefusedWithTheCause) {
   }
 }
 
+// A scan with holes (the bunny: 5 holes), closed for the map only: the remesh keeps the holes
+// (Euler characteristic 2 - 5) and is written, not refused as unclosed.
+TEST(Remesh, AScanWithHolesKeepsItsHoles) {
+  test::TempDir dir;
+  const std::string input = test::data_path("bunny.off"), output = dir.path("remeshed.ply");
+  const auto run = test::run_cli({"remesh", input, "-o", output, "--close-holes", "--quiet"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const RemeshFigures figures = judge_remesh(input, output);
+  EXPECT_EQ(figures.euler, 2 - 5);
+  EXPECT_GT(figures.boundary_sides, 0);
+  EXPECT_EQ(figures.nonmanifold_sides, 0);
+  EXPECT_EQ(figures.misoriented_sides, 0);
+  EXPECT_EQ(figures.folded, 0);
+}
+
 // The judge itself: judged against the input turned inside out, every face of a good remesh
 // is folded.
 TEST(Remesh, TheJudgeSeesFacesTurnedAgainstTheSurface) {

@@ -187,10 +187,16 @@ void refine_to_target(const PartSurface &surface, RemeshPart &figures, double fa
   figures.frequency = best_frequency;
 }
 
-// A lifted part with faces that do not close is no closed surface: refused, naming the two branch
-// values nearest each other on the sphere (where that has been seen to happen).
+// A closed part whose lift has faces that do not close would come out open: refused, naming the
+// two branch values nearest each other on the sphere (where that has been seen to happen). A part
+// with holes (closed for the map only) has gaps on the sphere, and its remesh has the holes: its
+// lift is not held to closing.
 void refuse_unclosed(const PartSurface &surface, const LiftedSphere &lifted, int part) {
   if (lifted.unclosed_faces == 0) return;
+  for (const auto &sides : surface.surface.across)
+    for (int other : sides)
+      if (other < 0) return; // the part has a hole
+
   std::vector<int> branch_vertices;
   for (size_t v = 0; v < surface.local_degree.size(); ++v)
     if (surface.local_degree[v] >= 2) branch_vertices.push_back(int(v));

@@ -60,8 +60,9 @@ struct SurfaceRemesh {
   std::vector<SparseRegion> sparse_regions;
 };
 
-// `out` must be new (a vcglib mesh cannot be returned by value). Throws InputError when a part's
-// lift does not close (faces whose edge lifts do not meet), naming the nearest two branch values.
+// `out` must be new (a vcglib mesh cannot be returned by value). Throws InputError when the lift of
+// a closed part does not close (faces whose edge lifts do not meet), naming the nearest two branch
+// values.
 void remesh_through_sphere(const Mesh &input, const Parameterization &map,
                            const RemeshOptions &options, const Progress &progress,
                            SurfaceRemesh &out);
