@@ -30,6 +30,7 @@
 #include "maps/form_pairs.h"
 #include "maps/form_ratio_map.h"
 #include "maps/genus0_correction.h"
+#include "maps/genus0_map.h"
 #include "maps/genus1_branch_placement.h"
 #include "maps/parts_map.h"
 #include "mesh/cotan_laplacian.h"
@@ -551,6 +552,20 @@ TEST(Genus0Correction, FoldedPlaneFacesByOrientationInTheirChart) {
   // The third face, outside the unit circle, is judged in 1 / z: (0.1, 0.1i, 0.05) turns
   // counter-clockwise there. The second is the first turned over.
   EXPECT_EQ(folded_plane_faces(in, values), std::vector<int>{1});
+}
+
+TEST(Genus0Map, RefinementOnlyWhereTheValuesCrowd) {
+  MeshEdges edges;
+  edges.vertices = {{0, 1}, {1, 2}, {2, 0}};
+  Eigen::VectorXcd z(3);
+  z << Complex(0, 0), Complex(1, 0), Complex(0, 1);
+  EXPECT_FALSE(values_crowd(edges, z));
+  // A long thin part's tip: an edge of 1e-12 of the map's size, where one solve's rounding
+  // (relative to the whole map) reaches the edge itself.
+  z[1] = Complex(1e-12, 0);
+  EXPECT_TRUE(values_crowd(edges, z));
+  z[1] = Complex(1e-6, 0);
+  EXPECT_FALSE(values_crowd(edges, z));
 }
 
 TEST(PartsMap, TextureGridAndEachPartMappedOnItsOwn) {

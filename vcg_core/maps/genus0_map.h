@@ -34,9 +34,15 @@ struct Genus0Map {
   std::vector<int> folded_faces; // in the plane, before projection, among faces doubles resolve
 };
 
+// Whether some edge's image is shorter than `crowding_ratio` of the largest value: then one
+// solve's rounding (relative to the whole map) can reach that edge's size.
+constexpr double crowding_ratio = 1e-9;
+bool values_crowd(const MeshEdges &edges, const Eigen::VectorXcd &z);
+
 // The harmonic extension of complex values given at `pinned` (the rest ignored) to every other
-// vertex, with steps of iterative refinement (the residual summed over edge differences, exact
-// where the values crowd): one factorization of the free vertices' Laplacian, two solves a step.
+// vertex: one factorization of the free vertices' Laplacian, two solves; where the values crowd
+// (values_crowd), steps of iterative refinement (the residual summed over edge differences, exact
+// there), two solves a step.
 Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian,
                                     const MeshEdges &edges, const std::vector<double> &weights,
                                     SolverKind solver, const std::vector<int> &pinned,
