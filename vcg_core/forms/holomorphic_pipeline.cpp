@@ -97,25 +97,25 @@ Eigen::MatrixXd canonical_periods(const MeshEdges &edges, HolomorphicForms &out)
   return basis;
 }
 
-// Edge values of phi_k = sum_j P_jk tau_j, then of the normalized psi = A^-1 phi, on the mesh's
-// edges.
-void normalized_forms(const MeshEdges &edges, const Eigen::MatrixXd &basis, HolomorphicForms &out) {
+// Edge values of the normalized psi = A^-1 phi, phi_k = sum_j P_jk tau_j, on the mesh's edges.
+// With tau_j = h_j + i sum_l C_jl h_l: psi = D h with D = c (1 + i C), c = A^-1 P^T (P: the
+// basis' first g columns), one pass over the edges per (m, l) pair.
+void normalized_forms(const Eigen::MatrixXd &basis, HolomorphicForms &out) {
   const int n = 2 * out.genus, g = out.genus;
-  // Edge values of phi_k = sum_j P_jk tau_j, then of the normalized psi = A^-1 phi.
-  std::vector<Eigen::VectorXcd> tau;
-  for (int j = 0; j < n; ++j) {
-    Eigen::VectorXd conjugate = Eigen::VectorXd::Zero(edges.edge_count());
-    for (int l = 0; l < n; ++l)
-      conjugate += out.conjugate(j, l) * out.harmonic[l];
-    tau.push_back(out.harmonic[j].cast<std::complex<double>>() +
-                  std::complex<double>(0, 1) * conjugate.cast<std::complex<double>>());
-  }
-  const Eigen::MatrixXcd a_inverse = out.a_periods.inverse();
+  const Eigen::MatrixXcd c =
+      out.a_periods.inverse() * basis.leftCols(g).transpose().cast<std::complex<double>>();
+  const Eigen::MatrixXcd d =
+      c + std::complex<double>(0, 1) * c * out.conjugate.cast<std::complex<double>>();
+  const long edge_count = out.harmonic.front().size();
   for (int m = 0; m < g; ++m) {
-    Eigen::VectorXcd psi = Eigen::VectorXcd::Zero(edges.edge_count());
-    for (int k = 0; k < g; ++k)
-      for (int j = 0; j < n; ++j)
-        psi += a_inverse(m, k) * basis(j, k) * tau[j];
+    Eigen::VectorXd real = Eigen::VectorXd::Zero(edge_count), imag = real;
+    for (int l = 0; l < n; ++l) {
+      real += d(m, l).real() * out.harmonic[l];
+      imag += d(m, l).imag() * out.harmonic[l];
+    }
+    Eigen::VectorXcd psi(edge_count);
+    psi.real() = real;
+    psi.imag() = imag;
     out.normalized.push_back(out.intrinsic->integrate_along_mesh_edges(psi));
   }
 }
@@ -201,7 +201,7 @@ HolomorphicForms compute_holomorphic_forms(const PreparedMesh &prepared, SolverK
   out.conjugate_residual = fit.relative_residual;
 
   const Eigen::MatrixXd basis = canonical_periods(edges, out);
-  normalized_forms(edges, basis, out);
+  normalized_forms(basis, out);
   measure_non_holomorphicity(faces, geometry, vectors, basis, out);
   clock.done("holomorphic");
   progress.report(1.0, "done");

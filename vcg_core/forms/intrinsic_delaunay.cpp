@@ -65,17 +65,20 @@ IntrinsicDelaunay::IntrinsicDelaunay(const Mesh &mesh, const MeshEdges &mesh_edg
         }
   }
 
-  // Every face on its own in the plane, for the per-face stages.
-  for (size_t f = 0; f < corners_.size(); ++f) {
+  // Every face on its own in the plane, for the per-face stages (allocated at once: no pointer
+  // updates while growing).
+  auto vertex = vcg::tri::Allocator<Mesh>::AddVertices(flat_faces_, 3 * corners_.size());
+  auto face = vcg::tri::Allocator<Mesh>::AddFaces(flat_faces_, corners_.size());
+  for (size_t f = 0; f < corners_.size(); ++f, vertex += 3, ++face) {
     const auto &side = edges_.face_edges[f];
     const double l0 = lengths_[size_t(side[0])], l1 = lengths_[size_t(side[1])],
                  l2 = lengths_[size_t(side[2])];
     const Eigen::Vector2d apex = third_corner(l0, l1, l2);
-    auto v = vcg::tri::Allocator<Mesh>::AddVertices(flat_faces_, 3);
-    v[0].P() = Point3(0, 0, 0);
-    v[1].P() = Point3(l0, 0, 0);
-    v[2].P() = Point3(apex.x(), apex.y(), 0);
-    vcg::tri::Allocator<Mesh>::AddFace(flat_faces_, &v[0], &v[1], &v[2]);
+    vertex[0].P() = Point3(0, 0, 0);
+    vertex[1].P() = Point3(l0, 0, 0);
+    vertex[2].P() = Point3(apex.x(), apex.y(), 0);
+    for (int k = 0; k < 3; ++k)
+      face->V(k) = &vertex[k];
   }
 }
 

@@ -118,15 +118,13 @@ Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian
   // Where nothing crowds, one solve is accurate to far below the smallest edge's image: the
   // refinement steps would change nothing a written double shows.
   if (refinement_steps == 0 || !values_crowd(edges, out)) return out;
-  for (int part = 0; part < 2; ++part) {
-    Eigen::VectorXd x = part == 0 ? Eigen::VectorXd(out.real()) : Eigen::VectorXd(out.imag());
+  auto refined = [&](Eigen::VectorXd x) {
     for (int step = 0; step < refinement_steps; ++step)
       x -= factored->solve(laplacian_of_differences(edges, weights, x));
-    if (part == 0)
-      out.real() = x;
-    else
-      out.imag() = x;
-  }
+    return x;
+  };
+  out.real() = refined(out.real());
+  out.imag() = refined(out.imag());
   return out;
 }
 

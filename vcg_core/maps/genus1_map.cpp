@@ -45,6 +45,12 @@ std::vector<Complex> integrate_from(int root, const std::vector<std::vector<int>
 // the flat metric is at least half its 90th percentile, the 8 whose widest corner is narrowest
 // are candidates, ordered by their worst spot (themselves, or the best of the 8 vertices nearest
 // each half period): the narrower its widest corner, the better.
+// An angle (radians) rounded to 1e-9: on symmetric meshes many vertices tie, and ties are broken
+// by vertex index, not by rounding noise (which a scale of the input or a summation order moves).
+double settled(double angle) {
+  return std::round(angle * 1e9);
+}
+
 std::vector<int> origin_candidates(const PreparedMesh &prepared, const Eigen::VectorXcd &psi,
                                    const std::vector<Complex> &flat,
                                    const WeierstrassP &p_function) {
@@ -60,7 +66,10 @@ std::vector<int> origin_candidates(const PreparedMesh &prepared, const Eigen::Ve
     if (scale[v] >= enough) candidates.push_back(int(v));
   const size_t kept = std::min<size_t>(8, candidates.size());
   std::partial_sort(candidates.begin(), candidates.begin() + std::ptrdiff_t(kept), candidates.end(),
-                    [&](int a, int b) { return widest[size_t(a)] < widest[size_t(b)]; });
+                    [&](int a, int b) {
+                      return std::make_pair(settled(widest[size_t(a)]), a) <
+                             std::make_pair(settled(widest[size_t(b)]), b);
+                    });
   candidates.resize(kept);
   // Flat positions in lattice coordinates (z = (a + b tau) w1), for the distances below.
   const Complex tau = p_function.tau(), w1 = 2.0 * p_function.half_periods()[0];
@@ -87,7 +96,7 @@ std::vector<int> origin_candidates(const PreparedMesh &prepared, const Eigen::Ve
         spot = std::min(spot, widest[size_t(distance[size_t(k)].second)]);
       score = std::max(score, spot);
     }
-    scored.push_back({score, origin});
+    scored.push_back({settled(score), origin});
   }
   std::sort(scored.begin(), scored.end());
   std::vector<int> ordered;
