@@ -181,7 +181,7 @@ int main(int argc, char **argv) {
     std::fprintf(stderr, "usage: bench_meshes SHARED_MESHES_DIR [SIZES LARGEST_VERTICES]\n");
     return 2;
   }
-  keep_freed_memory_for_reuse(); // as the CLI does: the jobs run as `param` runs them
+  tune_process_memory(argv); // as the CLI does: the jobs run as `param` runs them
   const std::string shared = argv[1];
   const int sizes = argc > 2 ? std::max(1, std::atoi(argv[2])) : 3;
   const double largest = argc > 3 ? std::atof(argv[3]) : 1e6;
