@@ -176,7 +176,8 @@ HolomorphicForms compute_holomorphic_forms(const PreparedMesh &prepared, SolverK
   out.intrinsic = std::make_shared<IntrinsicDelaunay>(mesh, prepared.edges);
   const MeshEdges &edges = out.intrinsic->edges();
   const std::vector<double> weights = out.intrinsic->cotan_weights();
-  const Mesh &faces = out.intrinsic->flat_faces();
+  Mesh faces; // for the per-face stages below only
+  out.intrinsic->lay_out_flat(faces);
   clock.done("laplacian");
 
   progress.report(0.1, "homology basis");

@@ -64,22 +64,6 @@ IntrinsicDelaunay::IntrinsicDelaunay(const Mesh &mesh, const MeshEdges &mesh_edg
           stack.push_back(side);
         }
   }
-
-  // Every face on its own in the plane, for the per-face stages (allocated at once: no pointer
-  // updates while growing).
-  auto vertex = vcg::tri::Allocator<Mesh>::AddVertices(flat_faces_, 3 * corners_.size());
-  auto face = vcg::tri::Allocator<Mesh>::AddFaces(flat_faces_, corners_.size());
-  for (size_t f = 0; f < corners_.size(); ++f, vertex += 3, ++face) {
-    const auto &side = edges_.face_edges[f];
-    const double l0 = lengths_[size_t(side[0])], l1 = lengths_[size_t(side[1])],
-                 l2 = lengths_[size_t(side[2])];
-    const Eigen::Vector2d apex = third_corner(l0, l1, l2);
-    vertex[0].P() = Point3(0, 0, 0);
-    vertex[1].P() = Point3(l0, 0, 0);
-    vertex[2].P() = Point3(apex.x(), apex.y(), 0);
-    for (int k = 0; k < 3; ++k)
-      face->V(k) = &vertex[k];
-  }
 }
 
 bool IntrinsicDelaunay::flip_if_not_delaunay(int e) {
@@ -139,6 +123,23 @@ bool IntrinsicDelaunay::flip_if_not_delaunay(int e) {
       edges_.face_signs[size_t(face)][k] =
           int(sign_along(edges_.face_edges[size_t(face)][k], corners_[size_t(face)][k]));
   return true;
+}
+
+void IntrinsicDelaunay::lay_out_flat(Mesh &flat) const {
+  // Allocated at once: no pointer updates while growing.
+  auto vertex = vcg::tri::Allocator<Mesh>::AddVertices(flat, 3 * corners_.size());
+  auto face = vcg::tri::Allocator<Mesh>::AddFaces(flat, corners_.size());
+  for (size_t f = 0; f < corners_.size(); ++f, vertex += 3, ++face) {
+    const auto &side = edges_.face_edges[f];
+    const double l0 = lengths_[size_t(side[0])], l1 = lengths_[size_t(side[1])],
+                 l2 = lengths_[size_t(side[2])];
+    const Eigen::Vector2d apex = third_corner(l0, l1, l2);
+    vertex[0].P() = Point3(0, 0, 0);
+    vertex[1].P() = Point3(l0, 0, 0);
+    vertex[2].P() = Point3(apex.x(), apex.y(), 0);
+    for (int k = 0; k < 3; ++k)
+      face->V(k) = &vertex[k];
+  }
 }
 
 std::vector<double> IntrinsicDelaunay::cotan_weights() const {

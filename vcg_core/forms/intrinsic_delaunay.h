@@ -7,12 +7,12 @@
 // In:  a mesh that validation accepted (closed, oriented, manifold) and its edges.
 // Out: `IntrinsicDelaunay`: its edges (`MeshEdges`: faces in the same numbering as the mesh's,
 //      vertices the mesh's; two edges may join the same two vertices), the length of every edge,
-//      every face laid out flat on its own (`flat_faces`: a mesh of separate triangles in the plane
-//      z = 0, corners in the face's order, for the stages that work per face), the number of flips,
-//      and `integrate_along_mesh_edges`: a closed 1-form on its edges taken to the mesh's edges,
-//      each value the integral along a path homotopic to that mesh edge (exact: every flip keeps
-//      the flipped edge as the two sides of one of its triangles). Flips that would join a vertex
-//      to itself are skipped (the rare cost: an edge left non-Delaunay).
+//      every face laid out flat on its own (`lay_out_flat`: a mesh of separate triangles in the
+//      plane z = 0, corners in the face's order, for the stages that work per face), the number of
+//      flips, and `integrate_along_mesh_edges`: a closed 1-form on its edges taken to the mesh's
+//      edges, each value the integral along a path homotopic to that mesh edge (exact: every flip
+//      keeps the flipped edge as the two sides of one of its triangles). Flips that would join a
+//      vertex to itself are skipped (the rare cost: an edge left non-Delaunay).
 #pragma once
 
 #include <array>
@@ -31,7 +31,8 @@ public:
 
   const MeshEdges &edges() const { return edges_; }
   const std::vector<double> &lengths() const { return lengths_; }
-  const Mesh &flat_faces() const { return flat_faces_; }
+  // `flat` (empty) becomes every face laid out flat on its own (see above): its holder frees it.
+  void lay_out_flat(Mesh &flat) const;
   int flips() const { return int(retired_.size()); }
 
   // Cotangent weights (cot a + cot b) / 2 of the intrinsic triangulation, all >= 0 up to rounding.
@@ -58,7 +59,6 @@ private:
   int next_version_ = 0;
   int mesh_edge_count_ = 0;
   std::vector<Retired> retired_; // in the order of the flips
-  Mesh flat_faces_;
 };
 
 } // namespace meromorph
