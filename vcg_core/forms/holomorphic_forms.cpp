@@ -53,15 +53,15 @@ ConjugateFit conjugate_coefficients(const std::vector<Eigen::MatrixX3d> &harmoni
   return fit;
 }
 
-LocalCoefficients local_coefficients(const Mesh &mesh, const FaceGeometry &geometry,
+LocalCoefficients local_coefficients(const FaceGeometry &geometry,
                                      const Eigen::MatrixX3d &real_part,
                                      const Eigen::MatrixX3d &imaginary_part) {
+  const size_t face_count = geometry.areas.size();
   LocalCoefficients local;
-  local.f.reserve(mesh.face.size());
-  local.g.reserve(mesh.face.size());
-  for (size_t f = 0; f < mesh.face.size(); ++f) {
-    const Point3 side = mesh.face[f].cP(1) - mesh.face[f].cP(0);
-    const Eigen::Vector3d e1 = Eigen::Vector3d(side[0], side[1], side[2]).normalized();
+  local.f.reserve(face_count);
+  local.g.reserve(face_count);
+  for (size_t f = 0; f < face_count; ++f) {
+    const Eigen::Vector3d &e1 = geometry.first_axes[f];
     const Eigen::Vector3d e2 = geometry.normals[f].cross(e1);
     const Eigen::Vector3d a = real_part.row(long(f)), b = imaginary_part.row(long(f));
     const double ax = a.dot(e1), ay = a.dot(e2), bx = b.dot(e1), by = b.dot(e2);

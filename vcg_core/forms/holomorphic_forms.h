@@ -33,7 +33,7 @@ struct LocalCoefficients {
   std::vector<std::complex<double>> f, g;
 };
 
-LocalCoefficients local_coefficients(const Mesh &mesh, const FaceGeometry &geometry,
+LocalCoefficients local_coefficients(const FaceGeometry &geometry,
                                      const Eigen::MatrixX3d &real_part,
                                      const Eigen::MatrixX3d &imaginary_part);
 

@@ -31,7 +31,7 @@ double closedness(const MeshEdges &edges, const Eigen::VectorXd &form) {
 }
 
 // The harmonic forms' face vectors, and how closed and co-closed they came out.
-std::vector<Eigen::MatrixX3d> face_vectors_and_residuals(int vertex_count, const Mesh &faces,
+std::vector<Eigen::MatrixX3d> face_vectors_and_residuals(int vertex_count, const FaceCorners &faces,
                                                          const MeshEdges &edges,
                                                          const std::vector<double> &weights,
                                                          const FaceGeometry &geometry,
@@ -121,13 +121,13 @@ void normalized_forms(const Eigen::MatrixXd &basis, HolomorphicForms &out) {
 }
 
 // The area-weighted mean and the largest |g| / |f| of phi_1 over the faces.
-void measure_non_holomorphicity(const Mesh &faces, const FaceGeometry &geometry,
+void measure_non_holomorphicity(const FaceGeometry &geometry,
                                 const std::vector<Eigen::MatrixX3d> &vectors,
                                 const Eigen::MatrixXd &basis, HolomorphicForms &out) {
   Eigen::VectorXd first = basis.col(0);
   const Eigen::MatrixX3d real_part = combine(vectors, first);
   const Eigen::MatrixX3d imaginary_part = combine(vectors, out.conjugate.transpose() * first);
-  const LocalCoefficients local = local_coefficients(faces, geometry, real_part, imaginary_part);
+  const LocalCoefficients local = local_coefficients(geometry, real_part, imaginary_part);
   double weighted = 0, total_area = 0;
   for (size_t f = 0; f < local.f.size(); ++f) {
     const double ratio = std::abs(local.g[f]) / std::abs(local.f[f]);
@@ -176,8 +176,7 @@ HolomorphicForms compute_holomorphic_forms(const PreparedMesh &prepared, SolverK
   out.intrinsic = std::make_shared<IntrinsicDelaunay>(mesh, prepared.edges);
   const MeshEdges &edges = out.intrinsic->edges();
   const std::vector<double> weights = out.intrinsic->cotan_weights();
-  Mesh faces; // for the per-face stages below only
-  out.intrinsic->lay_out_flat(faces);
+  const FaceCorners faces = out.intrinsic->laid_out_flat(); // for the per-face stages below only
   clock.done("laplacian");
 
   progress.report(0.1, "homology basis");
@@ -203,7 +202,7 @@ HolomorphicForms compute_holomorphic_forms(const PreparedMesh &prepared, SolverK
 
   const Eigen::MatrixXd basis = canonical_periods(edges, out);
   normalized_forms(basis, out);
-  measure_non_holomorphicity(faces, geometry, vectors, basis, out);
+  measure_non_holomorphicity(geometry, vectors, basis, out);
   clock.done("holomorphic");
   progress.report(1.0, "done");
   return out;

@@ -125,21 +125,17 @@ bool IntrinsicDelaunay::flip_if_not_delaunay(int e) {
   return true;
 }
 
-void IntrinsicDelaunay::lay_out_flat(Mesh &flat) const {
-  // Allocated at once: no pointer updates while growing.
-  auto vertex = vcg::tri::Allocator<Mesh>::AddVertices(flat, 3 * corners_.size());
-  auto face = vcg::tri::Allocator<Mesh>::AddFaces(flat, corners_.size());
-  for (size_t f = 0; f < corners_.size(); ++f, vertex += 3, ++face) {
+FaceCorners IntrinsicDelaunay::laid_out_flat() const {
+  FaceCorners flat(corners_.size());
+  for (size_t f = 0; f < corners_.size(); ++f) {
     const auto &side = edges_.face_edges[f];
     const double l0 = lengths_[size_t(side[0])], l1 = lengths_[size_t(side[1])],
                  l2 = lengths_[size_t(side[2])];
     const Eigen::Vector2d apex = third_corner(l0, l1, l2);
-    vertex[0].P() = Point3(0, 0, 0);
-    vertex[1].P() = Point3(l0, 0, 0);
-    vertex[2].P() = Point3(apex.x(), apex.y(), 0);
-    for (int k = 0; k < 3; ++k)
-      face->V(k) = &vertex[k];
+    flat[f] = {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(l0, 0, 0),
+               Eigen::Vector3d(apex.x(), apex.y(), 0)};
   }
+  return flat;
 }
 
 std::vector<double> IntrinsicDelaunay::cotan_weights() const {

@@ -20,6 +20,7 @@
 
 #include <Eigen/Core>
 
+#include "mesh/face_vectors.h"
 #include "mesh/mesh.h"
 #include "mesh/mesh_edges.h"
 
@@ -31,8 +32,8 @@ public:
 
   const MeshEdges &edges() const { return edges_; }
   const std::vector<double> &lengths() const { return lengths_; }
-  // `flat` (empty) becomes every face laid out flat on its own (see above): its holder frees it.
-  void lay_out_flat(Mesh &flat) const;
+  // Every face laid out flat on its own (see above), built on request.
+  FaceCorners laid_out_flat() const;
   int flips() const { return int(retired_.size()); }
 
   // Cotangent weights (cot a + cot b) / 2 of the intrinsic triangulation, all >= 0 up to rounding.

@@ -34,7 +34,7 @@ std::vector<Complex> holomorphic_coefficient(const Mesh &mesh, const MeshEdges &
                                              const Eigen::VectorXcd &form) {
   const Eigen::MatrixX3d real_part = face_vectors(mesh, edges, geometry, form.real());
   const Eigen::MatrixX3d imaginary_part = face_vectors(mesh, edges, geometry, form.imag());
-  return local_coefficients(mesh, geometry, real_part, imaginary_part).f;
+  return local_coefficients(geometry, real_part, imaginary_part).f;
 }
 
 // A Hermitian system over the vertices of one region, numbered densely.

@@ -4,19 +4,58 @@
 #include <cmath>
 
 namespace meromorph {
-FaceGeometry face_geometry(const Mesh &mesh) {
+namespace {
+
+// Corner k of face f, as Eigen vectors, from either kind of faces.
+Eigen::Vector3d corner(const Mesh &mesh, size_t f, int k) {
+  return mesh.face[f].cP(k).ToEigenVector<Eigen::Vector3d>();
+}
+Eigen::Vector3d corner(const FaceCorners &faces, size_t f, int k) {
+  return faces[f][size_t(k)];
+}
+
+template <class Faces> FaceGeometry geometry_of(const Faces &faces, size_t face_count) {
   FaceGeometry geometry;
-  geometry.normals.reserve(mesh.face.size());
-  geometry.areas.reserve(mesh.face.size());
-  for (const MeshFace &face : mesh.face) {
-    const Eigen::Vector3d p0 = face.cP(0).ToEigenVector<Eigen::Vector3d>(),
-                          p1 = face.cP(1).ToEigenVector<Eigen::Vector3d>(),
-                          p2 = face.cP(2).ToEigenVector<Eigen::Vector3d>();
+  geometry.normals.reserve(face_count);
+  geometry.first_axes.reserve(face_count);
+  geometry.areas.reserve(face_count);
+  for (size_t f = 0; f < face_count; ++f) {
+    const Eigen::Vector3d p0 = corner(faces, f, 0), p1 = corner(faces, f, 1),
+                          p2 = corner(faces, f, 2);
     const Eigen::Vector3d cross = (p1 - p0).cross(p2 - p0);
     geometry.areas.push_back(0.5 * cross.norm());
     geometry.normals.push_back(cross.normalized());
+    geometry.first_axes.push_back((p1 - p0).normalized());
   }
   return geometry;
+}
+
+template <class Faces>
+Eigen::MatrixX3d vectors_of(const Faces &faces, size_t face_count, const MeshEdges &edges,
+                            const FaceGeometry &geometry, const Eigen::VectorXd &form) {
+  Eigen::MatrixX3d vectors(face_count, 3);
+  for (size_t f = 0; f < face_count; ++f) {
+    const Eigen::Vector3d p0 = corner(faces, f, 0), p1 = corner(faces, f, 1),
+                          p2 = corner(faces, f, 2);
+    // Local potential: u0 = 0, u1 = form along side 0, u2 = u1 + form along side 1.
+    const double u1 = edges.face_signs[f][0] * form[edges.face_edges[f][0]];
+    const double u2 = u1 + edges.face_signs[f][1] * form[edges.face_edges[f][1]];
+    const Eigen::Vector3d &n = geometry.normals[f];
+    // grad phi_i = n x (edge opposite corner i, counter-clockwise) / (2 area).
+    vectors.row(long(f)) =
+        (u1 * n.cross(p0 - p2) + u2 * n.cross(p1 - p0)) / (2.0 * geometry.areas[f]);
+  }
+  return vectors;
+}
+
+} // namespace
+
+FaceGeometry face_geometry(const Mesh &mesh) {
+  return geometry_of(mesh, mesh.face.size());
+}
+
+FaceGeometry face_geometry(const FaceCorners &faces) {
+  return geometry_of(faces, faces.size());
 }
 
 double corner_angle(const MeshFace &face, int k) {
@@ -42,21 +81,12 @@ std::vector<double> vertex_areas(const Mesh &mesh, const FaceGeometry &geometry)
 
 Eigen::MatrixX3d face_vectors(const Mesh &mesh, const MeshEdges &edges,
                               const FaceGeometry &geometry, const Eigen::VectorXd &form) {
-  Eigen::MatrixX3d vectors(mesh.face.size(), 3);
-  for (size_t f = 0; f < mesh.face.size(); ++f) {
-    const MeshFace &face = mesh.face[f];
-    const Eigen::Vector3d p0 = face.cP(0).ToEigenVector<Eigen::Vector3d>(),
-                          p1 = face.cP(1).ToEigenVector<Eigen::Vector3d>(),
-                          p2 = face.cP(2).ToEigenVector<Eigen::Vector3d>();
-    // Local potential: u0 = 0, u1 = form along side 0, u2 = u1 + form along side 1.
-    const double u1 = edges.face_signs[f][0] * form[edges.face_edges[f][0]];
-    const double u2 = u1 + edges.face_signs[f][1] * form[edges.face_edges[f][1]];
-    const Eigen::Vector3d &n = geometry.normals[f];
-    // grad phi_i = n x (edge opposite corner i, counter-clockwise) / (2 area).
-    vectors.row(long(f)) =
-        (u1 * n.cross(p0 - p2) + u2 * n.cross(p1 - p0)) / (2.0 * geometry.areas[f]);
-  }
-  return vectors;
+  return vectors_of(mesh, mesh.face.size(), edges, geometry, form);
+}
+
+Eigen::MatrixX3d face_vectors(const FaceCorners &faces, const MeshEdges &edges,
+                              const FaceGeometry &geometry, const Eigen::VectorXd &form) {
+  return vectors_of(faces, faces.size(), edges, geometry, form);
 }
 
 } // namespace meromorph

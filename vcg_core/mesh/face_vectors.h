@@ -1,12 +1,14 @@
 // Closed 1-forms as vectors on faces, and the face geometry they need.
 //
-// In:  a mesh, its oriented edges, and a closed 1-form (one value per edge).
+// In:  a mesh (or, for faces that share no corners, their corner positions: FaceCorners), its
+//      oriented edges, and a closed 1-form (one value per edge).
 // Out: per face, the unique vector a in the face's plane with <a, p_j - p_i> = form(ij) on its
 //      three sides (the gradient of the linear function the form integrates to on that face);
 //      face unit normals and areas, corner angles, the area each vertex stands for. The Hodge
 //      star of a face vector is n x a.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include <Eigen/Core>
@@ -17,11 +19,17 @@
 namespace meromorph {
 
 struct FaceGeometry {
-  std::vector<Eigen::Vector3d> normals; // unit
+  std::vector<Eigen::Vector3d> normals;    // unit
+  std::vector<Eigen::Vector3d> first_axes; // unit, along the side from corner 0 to corner 1
   std::vector<double> areas;
 };
 
+// Per face its three corner positions: faces on their own, without a shared vertex (the
+// intrinsic Delaunay triangulation's faces laid out flat), at 72 bytes a face.
+using FaceCorners = std::vector<std::array<Eigen::Vector3d, 3>>;
+
 FaceGeometry face_geometry(const Mesh &mesh);
+FaceGeometry face_geometry(const FaceCorners &faces);
 
 // The angle at corner k of a face, in radians.
 double corner_angle(const MeshFace &face, int k);
@@ -35,6 +43,8 @@ std::vector<double> vertex_areas(const Mesh &mesh, const FaceGeometry &geometry)
 
 // Face vectors, one row per face (F x 3).
 Eigen::MatrixX3d face_vectors(const Mesh &mesh, const MeshEdges &edges,
+                              const FaceGeometry &geometry, const Eigen::VectorXd &form);
+Eigen::MatrixX3d face_vectors(const FaceCorners &faces, const MeshEdges &edges,
                               const FaceGeometry &geometry, const Eigen::VectorXd &form);
 
 } // namespace meromorph
