@@ -37,11 +37,16 @@ std::vector<Complex> holomorphic_coefficient(const Mesh &mesh, const MeshEdges &
   return local_coefficients(geometry, real_part, imaginary_part).f;
 }
 
-// A Hermitian system over the vertices of one region, numbered densely.
+// A Hermitian system over the vertices of one region, numbered densely, assembled in place: its
+// diagonal per unknown and, per mesh edge with both ends in the region, the entry in the edge's
+// direction (the opposite entry is its conjugate). No per-face entry lists: at a million vertices
+// those took more memory than everything else.
 struct ChartSystem {
   std::vector<int> id; // per mesh vertex: its unknown, -1 outside the region
   int unknowns = 0;
-  std::vector<Eigen::Triplet<Complex>> entries;
+  std::vector<Complex> diagonal;    // per unknown
+  std::vector<Complex> along_edge;  // per mesh edge: H(id[from], id[to])
+  std::vector<char> edge_in_system; // per mesh edge: a face of the region has it
   Eigen::VectorXcd right;
   double largest_data_weight = 0;
 };
@@ -49,41 +54,45 @@ struct ChartSystem {
 // Face f's share: the data term (F at the centroid = mean of the corners, weighted by the face's
 // share of the area and the sphere's metric 1 / (1 + |ratio|^2)^2) when its sample is known, and
 // `stiffness` times the conformal energy (Dirichlet energy minus signed image area, zero for a
-// similarity on the face).
-void add_face(const MeshFace &face, const std::array<int, 3> &c, double area_share,
-              bool ratio_known, Complex ratio, ChartSystem &system) {
+// similarity on the face). `c`: the corners' unknowns.
+void add_face(const MeshFace &face, const MeshEdges &edges, size_t f, const std::array<int, 3> &c,
+              double area_share, bool ratio_known, Complex ratio, ChartSystem &system) {
   const double stiffness = 1.0; // conformal energy against the data's area-weighted misfit
   // The sphere's metric over the face (1 at F = 0): both terms measure the map on the sphere.
   const double metric = ratio_known ? 1.0 / std::pow(1.0 + std::norm(ratio), 2) : 0.0;
+  double data = 0; // the data term's weight on every pair of corners
   if (ratio_known) {
-    const double w = area_share * metric / 9.0;
-    system.largest_data_weight = std::max(system.largest_data_weight, w);
+    data = area_share * metric / 9.0;
+    system.largest_data_weight = std::max(system.largest_data_weight, data);
     for (int a : c) {
-      for (int b : c)
-        system.entries.emplace_back(a, b, w);
-      system.right[a] += 3.0 * w * ratio;
+      system.diagonal[size_t(a)] += data;
+      system.right[a] += 3.0 * data * ratio;
     }
   }
+  // The cotangent weight of each corner, on the side opposite it.
+  double opposite[3] = {0, 0, 0};
   for (int k = 0; k < 3; ++k) {
-    const int i = c[(k + 1) % 3], j = c[(k + 2) % 3];
     const Point3 u = face.cP((k + 1) % 3) - face.cP(k), v = face.cP((k + 2) % 3) - face.cP(k);
     const double cross = (u ^ v).Norm();
     if (!(cross > 0)) continue;
-    const double weight = stiffness * metric * 0.25 * (u * v) / cross;
-    system.entries.emplace_back(i, i, weight);
-    system.entries.emplace_back(j, j, weight);
-    system.entries.emplace_back(i, j, -weight);
-    system.entries.emplace_back(j, i, -weight);
-    // minus the signed image area, 1/2 Im(conj(F_a) F_b) along the side a -> b
-    const Complex area = stiffness * metric * Complex(0, -0.25);
-    system.entries.emplace_back(c[k], c[(k + 1) % 3], -area);
-    system.entries.emplace_back(c[(k + 1) % 3], c[k], -std::conj(area));
+    opposite[k] = stiffness * metric * 0.25 * (u * v) / cross;
+    system.diagonal[size_t(c[(k + 1) % 3])] += opposite[k];
+    system.diagonal[size_t(c[(k + 2) % 3])] += opposite[k];
+  }
+  // Minus the signed image area, 1/2 Im(conj(F_a) F_b) along the side a -> b.
+  const Complex area = stiffness * metric * Complex(0, -0.25);
+  for (int k = 0; k < 3; ++k) { // side k: corner k -> corner k + 1
+    const Complex entry = data - opposite[(k + 2) % 3] - area;
+    const size_t e = size_t(edges.face_edges[f][k]);
+    system.along_edge[e] += edges.face_signs[f][k] > 0 ? entry : std::conj(entry);
+    system.edge_in_system[e] = 1;
   }
 }
 
-ChartSystem chart_system(const Mesh &mesh, const FaceIncidence &in, const FaceGeometry &geometry,
-                         const std::vector<char> &region, const std::vector<Complex> &ratio,
-                         const std::vector<char> &ratio_known, const std::vector<Complex> &guess) {
+ChartSystem chart_system(const Mesh &mesh, const MeshEdges &edges, const FaceIncidence &in,
+                         const FaceGeometry &geometry, const std::vector<char> &region,
+                         const std::vector<Complex> &ratio, const std::vector<char> &ratio_known,
+                         const std::vector<Complex> &guess) {
   ChartSystem system;
   system.id.assign(region.size(), -1);
   for (size_t v = 0; v < region.size(); ++v)
@@ -92,22 +101,48 @@ ChartSystem chart_system(const Mesh &mesh, const FaceIncidence &in, const FaceGe
   for (double a : geometry.areas)
     mean_area += a;
   mean_area /= double(std::max<size_t>(1, geometry.areas.size()));
-  system.entries.reserve(in.corners.size() * 21 + region.size());
+  system.diagonal.assign(size_t(system.unknowns), Complex(0, 0));
+  system.along_edge.assign(size_t(edges.edge_count()), Complex(0, 0));
+  system.edge_in_system.assign(size_t(edges.edge_count()), 0);
   system.right = Eigen::VectorXcd::Zero(system.unknowns);
   for (size_t f = 0; f < in.corners.size(); ++f) {
     const auto &corners = in.corners[f];
     if (!region[corners[0]] || !region[corners[1]] || !region[corners[2]]) continue;
-    add_face(mesh.face[f], {system.id[corners[0]], system.id[corners[1]], system.id[corners[2]]},
+    add_face(mesh.face[f], edges, f,
+             {system.id[corners[0]], system.id[corners[1]], system.id[corners[2]]},
              geometry.areas[f] / mean_area, ratio_known[f], ratio[f], system);
   }
   // A faint pull towards `guess` keeps every vertex determined.
   const double pull = 1e-9 * (system.largest_data_weight > 0 ? system.largest_data_weight : 1.0);
   for (size_t v = 0; v < region.size(); ++v)
     if (system.id[v] >= 0) {
-      system.entries.emplace_back(system.id[v], system.id[v], pull);
+      system.diagonal[size_t(system.id[v])] += pull;
       system.right[system.id[v]] += pull * guess[v];
     }
   return system;
+}
+
+// The matrix of `system` (both triangles); empty when an entry is not finite.
+std::optional<Eigen::SparseMatrix<Complex>> hermitian_matrix(const MeshEdges &edges,
+                                                             const ChartSystem &system) {
+  auto finite = [](Complex z) { return std::isfinite(z.real()) && std::isfinite(z.imag()); };
+  std::vector<Eigen::Triplet<Complex>> entries;
+  entries.reserve(system.diagonal.size());
+  for (size_t i = 0; i < system.diagonal.size(); ++i) {
+    if (!finite(system.diagonal[i])) return std::nullopt;
+    entries.emplace_back(int(i), int(i), system.diagonal[i]);
+  }
+  for (size_t e = 0; e < system.along_edge.size(); ++e) {
+    if (!system.edge_in_system[e]) continue;
+    if (!finite(system.along_edge[e])) return std::nullopt;
+    const int from = system.id[size_t(edges.vertices[e][0])];
+    const int to = system.id[size_t(edges.vertices[e][1])];
+    entries.emplace_back(from, to, system.along_edge[e]);
+    entries.emplace_back(to, from, std::conj(system.along_edge[e]));
+  }
+  Eigen::SparseMatrix<Complex> hermitian(system.unknowns, system.unknowns);
+  hermitian.setFromTriplets(entries.begin(), entries.end());
+  return hermitian;
 }
 
 // The Hermitian positive definite system H x = r. Its data term makes it a screened problem
@@ -115,18 +150,17 @@ ChartSystem chart_system(const Mesh &mesh, const FaceIncidence &in, const FaceGe
 // first guess) converge in a number of steps independent of its size, each a product with H.
 // Where they do not converge (needles make H stiff), CHOLMOD factors it (supernodal, complex:
 // it reads the lower triangle). Empty when it cannot be solved.
-std::optional<Eigen::VectorXcd> solve_hermitian(ChartSystem &system,
+std::optional<Eigen::VectorXcd> solve_hermitian(const MeshEdges &edges, ChartSystem &system,
                                                 const Eigen::VectorXcd &start) {
   const int n = system.unknowns;
   // (CHOLMOD cannot analyse an empty matrix, and Eigen does not check that it could.)
   if (n == 0) return std::nullopt;
-  for (const Eigen::Triplet<Complex> &t : system.entries)
-    if (!std::isfinite(t.value().real()) || !std::isfinite(t.value().imag()))
-      return std::nullopt; // the forms are not resolved here
   if (!system.right.allFinite()) return std::nullopt;
-  Eigen::SparseMatrix<Complex> hermitian(n, n);
-  hermitian.setFromTriplets(system.entries.begin(), system.entries.end());
-  system.entries = {};
+  std::optional<Eigen::SparseMatrix<Complex>> matrix = hermitian_matrix(edges, system);
+  if (!matrix) return std::nullopt; // the forms are not resolved here
+  system.diagonal = {};
+  system.along_edge = {};
+  const Eigen::SparseMatrix<Complex> &hermitian = *matrix;
   {
     Eigen::ConjugateGradient<Eigen::SparseMatrix<Complex>, Eigen::Lower | Eigen::Upper> iterated;
     iterated.setTolerance(iterative_tolerance);
@@ -146,17 +180,17 @@ std::optional<Eigen::VectorXcd> solve_hermitian(ChartSystem &system,
 // In one chart of the sphere: values F at the vertices of `region` that fit the face samples
 // `ratio` while keeping the piecewise-linear map conformal (see add_face); `guess` where the
 // system cannot be solved or a value comes out not finite.
-std::vector<Complex> solve_chart(const Mesh &mesh, const FaceIncidence &in,
+std::vector<Complex> solve_chart(const Mesh &mesh, const MeshEdges &edges, const FaceIncidence &in,
                                  const FaceGeometry &geometry, const std::vector<char> &region,
                                  const std::vector<Complex> &ratio,
                                  const std::vector<char> &ratio_known,
                                  const std::vector<Complex> &guess) {
-  ChartSystem system = chart_system(mesh, in, geometry, region, ratio, ratio_known, guess);
+  ChartSystem system = chart_system(mesh, edges, in, geometry, region, ratio, ratio_known, guess);
   std::vector<Complex> values(guess);
   Eigen::VectorXcd start(system.unknowns);
   for (size_t v = 0; v < region.size(); ++v)
     if (system.id[v] >= 0) start[system.id[v]] = guess[v];
-  const std::optional<Eigen::VectorXcd> solution = solve_hermitian(system, start);
+  const std::optional<Eigen::VectorXcd> solution = solve_hermitian(edges, system, start);
   if (!solution) return values;
   for (size_t v = 0; v < region.size(); ++v) {
     const int i = system.id[v];
@@ -255,9 +289,9 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
   }
   // F where |F| < chart_bound, G = 1 / F where |F| > 1 / chart_bound; blended between.
   const std::vector<Complex> f =
-      solve_chart(mesh, in, geometry, near_zero, ratio_f, known_f, guess.f);
+      solve_chart(mesh, edges, in, geometry, near_zero, ratio_f, known_f, guess.f);
   const std::vector<Complex> g =
-      solve_chart(mesh, in, geometry, near_pole, ratio_g, known_g, guess.g);
+      solve_chart(mesh, edges, in, geometry, near_pole, ratio_g, known_g, guess.g);
   return blended_values(guess, f, g);
 }
 
