@@ -9,6 +9,9 @@
 namespace meromorph {
 namespace {
 
+// Determinants of three unit vectors below this are rounding, not a side (about 100 ulps).
+constexpr double side_tolerance = 1e-14;
+
 double det(const Eigen::Vector3d &a, const Eigen::Vector3d &b, const Eigen::Vector3d &c) {
   return a.dot(b.cross(c));
 }
@@ -74,7 +77,9 @@ std::optional<SurfacePoint> lift_arc(const MappedSurface &surface, const Surface
     for (int k = 0; k < 3; ++k) {
       const Eigen::Vector3d &s = surface.image[c[k]], &r = surface.image[c[(k + 1) % 3]];
       const double at_a = det(s, r, a), at_b = det(s, r, b);
-      if (at_b >= 0) continue; // b is on the inner side of this side
+      // b on the inner side of this side, or on its great circle up to rounding (b at one of the
+      // side's ends, a branch value, gives a determinant of rounding noise either sign).
+      if (at_b >= -side_tolerance) continue;
       if (surface.across[face][k] == came_from && came_from >= 0) continue;
       const double crossing = at_a > at_b ? at_a / (at_a - at_b) : t;
       if (crossing < exit_t) {
