@@ -187,12 +187,13 @@ void refine_to_target(const PartSurface &surface, RemeshPart &figures, double fa
   figures.frequency = best_frequency;
 }
 
-// A closed part whose lift has faces that do not close would come out open: refused, naming the
-// two branch values nearest each other on the sphere (where that has been seen to happen). A part
+// A closed part whose lift has faces that do not close, or sphere faces with a corner that did not
+// lift, would come out open: refused, naming the two branch values nearest each other on the
+// sphere (where that has been seen to happen). A part
 // with holes (closed for the map only) has gaps on the sphere, and its remesh has the holes: its
 // lift is not held to closing.
 void refuse_unclosed(const PartSurface &surface, const LiftedSphere &lifted, int part) {
-  if (lifted.unclosed_faces == 0) return;
+  if (lifted.unclosed_faces == 0 && lifted.unlifted_faces == 0) return;
   for (const auto &sides : surface.surface.across)
     for (int other : sides)
       if (other < 0) return; // the part has a hole
@@ -220,9 +221,14 @@ void refuse_unclosed(const PartSurface &surface, const LiftedSphere &lifted, int
           << std::setprecision(2) << nearest << " apart on the sphere";
     where = words.str();
   }
-  throw InputError("the remesh of part " + std::to_string(part) +
-                   " does not close: " + std::to_string(lifted.unclosed_faces) +
-                   " lifted faces do not close up (nothing was written)" + where);
+  std::string what;
+  if (lifted.unlifted_faces > 0)
+    what = std::to_string(lifted.unlifted_faces) + " sphere faces did not lift";
+  if (lifted.unclosed_faces > 0)
+    what += (what.empty() ? "" : " and ") + std::to_string(lifted.unclosed_faces) +
+            " lifted faces do not close up";
+  throw InputError("the remesh of part " + std::to_string(part) + " does not close: " + what +
+                   " (nothing was written)" + where);
 }
 
 void append_part(const LiftedSphere &lifted, int part, SurfaceRemesh &out) {
