@@ -3,11 +3,12 @@
 // face into four, the same surface) three times, the largest nearest 1M vertices (so about
 // 50k, 200k and 800k: each step multiplies by four). Per
 // mesh, each job in a process of its own (so its peak memory is its own):
-// - the floor: reading the file, the cotangent Laplacian, one CHOLMOD factorization and 2g solves
-//   (two for genus 0, the map's two coordinates);
+// - the floor: reading the file, the cotangent Laplacian, one CHOLMOD factorization (supernodal,
+//   CHOLMOD's default ordering) and 2g solves (two for genus 0, the map's two coordinates);
 // - the main job as `meromorph param` runs it: reading the file and `parameterize_surface`, with
 //   the time of every stage, the rest (validation, copies) and the total, the ratio of the total
 //   to the floor, and the peak memory.
+// Both jobs run with the process memory settings of the CLI (common/process_memory.h).
 // Then per genus and stage the scaling exponent: the slope of log time against log vertices over
 // the sizes (least squares). Prints Markdown tables.
 //
@@ -28,8 +29,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <Eigen/CholmodSupport>
+
 #include "common/process_memory.h"
-#include "forms/laplacian_solver.h"
 #include "io/mesh_reader.h"
 #include "io/mesh_writer.h"
 #include "maps/surface_map.h"
@@ -116,13 +118,15 @@ Figures floor_job(const std::string &path, int genus) {
     const MeshEdges edges = build_mesh_edges(mesh);
     laplacian = cotan_laplacian(mesh.VN(), edges, cotan_weights(mesh, edges));
   });
-  std::unique_ptr<LaplacianSolver> solver;
-  out["factorization"] = milliseconds([&] { solver = factor_laplacian(laplacian); });
+  // CHOLMOD as anyone calls it: supernodal, its default ordering (AMD, and METIS too where the
+  // fill looks high), not the settings meromorph chose for itself.
+  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> solver;
+  out["factorization"] = milliseconds([&] { solver.compute(laplacian); });
   Eigen::VectorXd right = Eigen::VectorXd::Random(mesh.VN());
   right.array() -= right.mean();
   out["solves"] = milliseconds([&] {
     for (int k = 0; k < std::max(2, 2 * genus); ++k)
-      solver->solve(right);
+      right = solver.solve(right);
   });
   out["floor"] = out["read"] + out["laplacian"] + out["factorization"] + out["solves"];
   return out;
