@@ -22,6 +22,7 @@
 #include <functional>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -121,7 +122,9 @@ Figures floor_job(const std::string &path, int genus) {
   // CHOLMOD as anyone calls it: supernodal, its default ordering (AMD, and METIS too where the
   // fill looks high), not the settings meromorph chose for itself.
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>> solver;
+  laplacian.coeffRef(0, 0) += laplacian.coeff(0, 0); // grounded at vertex 0: positive definite
   out["factorization"] = milliseconds([&] { solver.compute(laplacian); });
+  if (solver.info() != Eigen::Success) throw std::runtime_error("the floor's factorization failed");
   Eigen::VectorXd right = Eigen::VectorXd::Random(mesh.VN());
   right.array() -= right.mean();
   out["solves"] = milliseconds([&] {
