@@ -5,34 +5,69 @@
 
 #include <algorithm>
 #include <queue>
-#include <unordered_map>
 
 #include "common/errors.h"
 
 namespace meromorph {
+
+namespace {
+
+// Per half-edge h = 3 f + k (side k of face f), the first half-edge on the same two vertices: by
+// a counting sort of the half-edges on their lower vertex, then within each vertex's few.
+std::vector<int> first_half_edge_on_same_vertices(const Mesh &mesh) {
+  const size_t half_edges = 3 * mesh.face.size();
+  std::vector<int> low(half_edges), high(half_edges);
+  std::vector<int> start(mesh.vert.size() + 1, 0);
+  for (size_t h = 0; h < half_edges; ++h) {
+    const MeshFace &face = mesh.face[h / 3];
+    const int k = int(h % 3);
+    const int a = index_of(mesh, face.cV(k)), b = index_of(mesh, face.cV((k + 1) % 3));
+    low[h] = std::min(a, b);
+    high[h] = std::max(a, b);
+    ++start[size_t(low[h]) + 1];
+  }
+  for (size_t v = 0; v < mesh.vert.size(); ++v)
+    start[v + 1] += start[v];
+  std::vector<int> by_low(half_edges), fill(start.begin(), start.end() - 1);
+  for (size_t h = 0; h < half_edges; ++h) // in increasing h within each vertex
+    by_low[size_t(fill[size_t(low[h])]++)] = int(h);
+  std::vector<int> first(half_edges);
+  for (size_t v = 0; v < mesh.vert.size(); ++v)
+    for (int i = start[v]; i < start[v + 1]; ++i) {
+      const int h = by_low[size_t(i)];
+      first[size_t(h)] = h;
+      for (int j = start[v]; j < i; ++j)
+        if (high[size_t(by_low[size_t(j)])] == high[size_t(h)]) {
+          first[size_t(h)] = first[size_t(by_low[size_t(j)])];
+          break;
+        }
+    }
+  return first;
+}
+
+} // namespace
 
 MeshEdges build_mesh_edges(const Mesh &mesh) {
   MeshEdges edges;
   const int face_count = int(mesh.face.size());
   edges.face_edges.assign(face_count, {-1, -1, -1});
   edges.face_signs.assign(face_count, {0, 0, 0});
-  std::unordered_map<std::uint64_t, int> edge_of;
-  edge_of.reserve(size_t(face_count) * 2);
-  auto key = [](int a, int b) {
-    return (std::uint64_t(std::min(a, b)) << 32) | std::uint32_t(std::max(a, b));
-  };
+  edges.vertices.reserve(size_t(face_count) * 3 / 2);
+  edges.faces.reserve(size_t(face_count) * 3 / 2);
+  // Edges numbered in the order the faces first reach them.
+  const std::vector<int> first = first_half_edge_on_same_vertices(mesh);
   for (int f = 0; f < face_count; ++f) {
     const MeshFace &face = mesh.face[f];
     for (int k = 0; k < 3; ++k) {
       const int from = index_of(mesh, face.cV(k)), to = index_of(mesh, face.cV((k + 1) % 3));
-      auto [it, inserted] = edge_of.emplace(key(from, to), edges.edge_count());
-      if (inserted) {
+      const int h = 3 * f + k, earlier = first[size_t(h)];
+      if (earlier == h) {
+        edges.face_edges[f][k] = edges.edge_count();
+        edges.face_signs[f][k] = 1;
         edges.vertices.push_back({from, to});
         edges.faces.push_back({f, -1});
-        edges.face_edges[f][k] = it->second;
-        edges.face_signs[f][k] = 1;
       } else {
-        const int e = it->second;
+        const int e = edges.face_edges[size_t(earlier / 3)][size_t(earlier % 3)];
         if (edges.vertices[e][0] != to || edges.faces[e][1] != -1)
           throw InputError("edge " + std::to_string(from) + "-" + std::to_string(to) +
                            " is not shared by exactly two consistently oriented faces");
@@ -50,7 +85,13 @@ MeshEdges build_mesh_edges(const Mesh &mesh) {
 }
 
 std::vector<std::vector<int>> edges_at_vertices(const MeshEdges &edges, int vertex_count) {
+  std::vector<int> count(size_t(vertex_count), 0);
+  for (const auto &ends : edges.vertices)
+    for (int end : ends)
+      ++count[size_t(end)];
   std::vector<std::vector<int>> incident(vertex_count);
+  for (int v = 0; v < vertex_count; ++v) // one allocation a vertex
+    incident[size_t(v)].reserve(size_t(count[size_t(v)]));
   for (int e = 0; e < edges.edge_count(); ++e)
     for (int end : edges.vertices[e])
       incident[end].push_back(e);
@@ -59,13 +100,19 @@ std::vector<std::vector<int>> edges_at_vertices(const MeshEdges &edges, int vert
 
 FaceIncidence face_incidence(const Mesh &mesh) {
   FaceIncidence in;
-  in.faces_of_vertex.resize(mesh.vert.size());
   in.corners.resize(mesh.face.size());
+  std::vector<int> count(mesh.vert.size(), 0);
   for (size_t f = 0; f < mesh.face.size(); ++f)
     for (int k = 0; k < 3; ++k) {
       in.corners[f][k] = index_of(mesh, mesh.face[f].cV(k));
-      in.faces_of_vertex[in.corners[f][k]].push_back(int(f));
+      ++count[size_t(in.corners[f][k])];
     }
+  in.faces_of_vertex.resize(mesh.vert.size());
+  for (size_t v = 0; v < mesh.vert.size(); ++v) // one allocation a vertex
+    in.faces_of_vertex[v].reserve(size_t(count[v]));
+  for (size_t f = 0; f < mesh.face.size(); ++f)
+    for (int k = 0; k < 3; ++k)
+      in.faces_of_vertex[size_t(in.corners[f][k])].push_back(int(f));
   return in;
 }
 

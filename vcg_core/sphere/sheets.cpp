@@ -126,13 +126,19 @@ CutEdges cut_edges(const Mesh &mesh, const MeshEdges &edges, const std::vector<V
     at_branch_vertex[v] = 1;
   // A vertex whose image lies on a cut (symmetric meshes map whole rows of vertices onto the arcs
   // between branch values) leaves it to rounding which side its edges are on: those are cut.
+  std::vector<Vector> arc_normal;
+  std::vector<double> arc_length;
+  for (const auto &arc : arcs) {
+    arc_normal.push_back(nodes[size_t(arc[0])].cross(nodes[size_t(arc[1])]));
+    arc_length.push_back(arc_normal.back().norm());
+  }
   std::vector<char> on_cut(mesh.vert.size(), 0);
   for (size_t v = 0; v < mesh.vert.size(); ++v)
-    for (const auto &arc : arcs) {
-      const Vector &p = nodes[size_t(arc[0])], &q = nodes[size_t(arc[1])];
-      const Vector normal = p.cross(q);
-      const double length = normal.norm();
-      if (length > 0 && std::abs(sphere[v].dot(normal)) < 1e-12 * length && on_arc(sphere[v], p, q))
+    for (size_t a = 0; a < arcs.size(); ++a) {
+      const Vector &p = nodes[size_t(arcs[a][0])], &q = nodes[size_t(arcs[a][1])];
+      const double length = arc_length[a];
+      if (length > 0 && std::abs(sphere[v].dot(arc_normal[a])) < 1e-12 * length &&
+          on_arc(sphere[v], p, q))
         on_cut[v] = 1;
     }
   // `crossing`: the edge's image crosses a cut, or may (it starts on one); `edge_cut` adds the
@@ -143,9 +149,14 @@ CutEdges cut_edges(const Mesh &mesh, const MeshEdges &edges, const std::vector<V
   for (size_t e = 0; e < edges.vertices.size(); ++e) {
     const int i = edges.vertices[e][0], j = edges.vertices[e][1];
     crossing[e] = at_branch_vertex[i] || at_branch_vertex[j] || on_cut[i] || on_cut[j];
-    for (const auto &arc : arcs)
-      crossing[e] = crossing[e] ||
-                    arcs_cross(sphere[i], sphere[j], nodes[size_t(arc[0])], nodes[size_t(arc[1])]);
+    for (size_t a = 0; a < arcs.size() && !crossing[e]; ++a) {
+      // Both ends clearly on one side of the arc's great circle: no crossing (far above rounding).
+      const double side_i = sphere[i].dot(arc_normal[a]), side_j = sphere[j].dot(arc_normal[a]);
+      const double margin = 1e-9 * arc_length[a];
+      if ((side_i > margin && side_j > margin) || (side_i < -margin && side_j < -margin)) continue;
+      crossing[e] =
+          arcs_cross(sphere[i], sphere[j], nodes[size_t(arcs[a][0])], nodes[size_t(arcs[a][1])]);
+    }
   }
   // Edges whose image is too short for the crossing test to be sure of its side (where long thin
   // parts crowd, cross products of such nearby points are mostly rounding) are cut too, so that a
@@ -260,13 +271,15 @@ Sheets label_with_cuts(const Mesh &mesh, const MeshEdges &edges, const std::vect
     out.coverage[face_layer[f]] += areas[f] / (4 * M_PI);
 
   // A vertex takes the layer most of its faces have.
-  std::vector<std::vector<int>> votes(mesh.vert.size(), std::vector<int>(out.count, 0));
+  const size_t layers = size_t(out.count);
+  std::vector<int> votes(mesh.vert.size() * layers, 0); // per vertex, per layer
   for (int f = 0; f < face_count; ++f)
     for (int k = 0; k < 3; ++k)
-      ++votes[index_of(mesh, mesh.face[f].cV(k))][face_layer[f]];
-  for (size_t v = 0; v < mesh.vert.size(); ++v)
-    out.vertex_layer[v] =
-        int(std::max_element(votes[v].begin(), votes[v].end()) - votes[v].begin());
+      ++votes[size_t(index_of(mesh, mesh.face[f].cV(k))) * layers + size_t(face_layer[f])];
+  for (size_t v = 0; v < mesh.vert.size(); ++v) {
+    const auto first = votes.begin() + long(v * layers);
+    out.vertex_layer[v] = int(std::max_element(first, first + long(layers)) - first);
+  }
   return out;
 }
 
