@@ -154,23 +154,26 @@ TEST(Remesh, SharedMeshesOfGenus0And1MeetEveryBar) {
   expect_good_remesh(test::data_path("kitten.nf20k.off"), 1, 0.01);
 }
 
-TEST(Remesh, AGeneratedSphereLikeSurfaceMeetsEveryBar) {
+// `make genus -g GENUS --resolution 24`, remeshed and judged against every bar.
+void expect_good_generated_remesh(int genus) {
   test::TempDir dir;
-  const std::string input = dir.path("genus0.off");
-  ASSERT_EQ(
-      test::run_cli({"make", "genus", "-g", "0", "--resolution", "24", "-o", input}).exit_code, 0);
-  expect_good_remesh(input, 0, 0.01);
+  const std::string input = dir.path("genus" + std::to_string(genus) + ".off");
+  ASSERT_EQ(test::run_cli(
+                {"make", "genus", "-g", std::to_string(genus), "--resolution", "24", "-o", input})
+                .exit_code,
+            0);
+  expect_good_remesh(input, genus, 0.01);
+}
+
+TEST(Remesh, AGeneratedSphereLikeSurfaceMeetsEveryBar) {
+  expect_good_generated_remesh(0);
 }
 
 // A generated genus-2 surface (a bending row of rings of tubes, no symmetry): every bar, the
 // Hausdorff distance included (58 folded lifts and 5.5% before walks stopped stepping past the
 // ends of sides on rounding noise).
 TEST(Remesh, AGeneratedGenusTwoSurfaceMeetsEveryBar) {
-  test::TempDir dir;
-  const std::string input = dir.path("genus2.off");
-  ASSERT_EQ(
-      test::run_cli({"make", "genus", "-g", "2", "--resolution", "24", "-o", input}).exit_code, 0);
-  expect_good_remesh(input, 2, 0.01);
+  expect_good_generated_remesh(2);
 }
 
 // The shared genus-2 eight (766 vertices): topology, folds, angles and count hold; its Hausdorff
