@@ -69,12 +69,15 @@ void add_face(const MeshFace &face, const MeshEdges &edges, size_t f, const std:
       system.right[a] += 3.0 * data * ratio;
     }
   }
-  // The cotangent weight of each corner, on the side opposite it.
+  // The cotangent weight of each corner, on the side opposite it; a corner without area adds
+  // neither it nor the image area along the side leaving it.
   double opposite[3] = {0, 0, 0};
+  bool flat[3] = {true, true, true};
   for (int k = 0; k < 3; ++k) {
     const Point3 u = face.cP((k + 1) % 3) - face.cP(k), v = face.cP((k + 2) % 3) - face.cP(k);
     const double cross = (u ^ v).Norm();
     if (!(cross > 0)) continue;
+    flat[k] = false;
     opposite[k] = stiffness * metric * 0.25 * (u * v) / cross;
     system.diagonal[size_t(c[(k + 1) % 3])] += opposite[k];
     system.diagonal[size_t(c[(k + 2) % 3])] += opposite[k];
@@ -82,7 +85,7 @@ void add_face(const MeshFace &face, const MeshEdges &edges, size_t f, const std:
   // Minus the signed image area, 1/2 Im(conj(F_a) F_b) along the side a -> b.
   const Complex area = stiffness * metric * Complex(0, -0.25);
   for (int k = 0; k < 3; ++k) { // side k: corner k -> corner k + 1
-    const Complex entry = data - opposite[(k + 2) % 3] - area;
+    const Complex entry = data - opposite[(k + 2) % 3] - (flat[k] ? Complex(0, 0) : area);
     const size_t e = size_t(edges.face_edges[f][k]);
     system.along_edge[e] += edges.face_signs[f][k] > 0 ? entry : std::conj(entry);
     system.edge_in_system[e] = 1;
@@ -127,7 +130,7 @@ std::optional<Eigen::SparseMatrix<Complex>> hermitian_matrix(const MeshEdges &ed
                                                              const ChartSystem &system) {
   auto finite = [](Complex z) { return std::isfinite(z.real()) && std::isfinite(z.imag()); };
   std::vector<Eigen::Triplet<Complex>> entries;
-  entries.reserve(system.diagonal.size());
+  entries.reserve(system.diagonal.size() + 2 * system.along_edge.size());
   for (size_t i = 0; i < system.diagonal.size(); ++i) {
     if (!finite(system.diagonal[i])) return std::nullopt;
     entries.emplace_back(int(i), int(i), system.diagonal[i]);
