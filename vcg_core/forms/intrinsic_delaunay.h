@@ -7,9 +7,9 @@
 // In:  a mesh that validation accepted (closed, oriented, manifold) and its edges.
 // Out: `IntrinsicDelaunay`: its edges (`MeshEdges`: faces in the same numbering as the mesh's,
 //      vertices the mesh's; two edges may join the same two vertices), the length of every edge,
-//      every face laid out flat on its own (`lay_out_flat`: a mesh of separate triangles in the
-//      plane z = 0, corners in the face's order, for the stages that work per face), the number of
-//      flips, and `integrate_along_mesh_edges`: a closed 1-form on its edges taken to the mesh's
+//      every face laid out flat on its own (`laid_out_flat`: FaceCorners, the corners of separate
+//      triangles in the plane z = 0 in the face's order, built on request for the stages that work
+//      per face), the number of flips, and `integrate_along_mesh_edges`: a closed 1-form on its edges taken to the mesh's
 //      edges, each value the integral along a path homotopic to that mesh edge (exact: every flip
 //      keeps the flipped edge as the two sides of one of its triangles). Flips that would join a
 //      vertex to itself are skipped (the rare cost: an edge left non-Delaunay).
