@@ -9,10 +9,11 @@
 //      vertices the mesh's; two edges may join the same two vertices), the length of every edge,
 //      every face laid out flat on its own (`laid_out_flat`: FaceCorners, the corners of separate
 //      triangles in the plane z = 0 in the face's order, built on request for the stages that work
-//      per face), the number of flips, and `integrate_along_mesh_edges`: a closed 1-form on its edges taken to the mesh's
-//      edges, each value the integral along a path homotopic to that mesh edge (exact: every flip
-//      keeps the flipped edge as the two sides of one of its triangles). Flips that would join a
-//      vertex to itself are skipped (the rare cost: an edge left non-Delaunay).
+//      per face), the number of flips, and `integrate_along_mesh_edges`: a closed 1-form on its
+//      edges taken to the mesh's edges, each value the integral along a path homotopic to that mesh
+//      edge (exact: every flip keeps the flipped edge as the two sides of one of its triangles).
+//      Flips that would join a vertex to itself are skipped (the rare cost: an edge left
+//      non-Delaunay).
 #pragma once
 
 #include <array>
