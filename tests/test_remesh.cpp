@@ -152,6 +152,29 @@ void expect_good_remesh(const std::string &input, int genus, double hausdorff_ba
 TEST(Remesh, SharedMeshesOfGenus0And1MeetEveryBar) {
   expect_good_remesh(test::data_path("maxplanck.nf25k.off"), 0, 0.01);
   expect_good_remesh(test::data_path("kitten.nf20k.off"), 1, 0.01);
+  // A thin torus (R / r = 4): the P-function crowds its inner side into a spot of the sphere
+  // 1e-4 across; sampled on the sphere it folded (29 faces, 3% Hausdorff), on the flat torus not.
+  expect_good_remesh(test::data_path("torus.off"), 1, 0.01);
+}
+
+// A thinner torus (R / r = 10): every bar, and its four branch points (degree 2, ramification 4 by
+// Riemann-Hurwitz) are vertices of the remesh with local degree 2.
+TEST(Remesh, AThinTorusMeetsEveryBarWithItsFourBranchVertices) {
+  test::TempDir dir;
+  const std::string input = dir.path("thin.off"), output = dir.path("remeshed.ply");
+  ASSERT_EQ(
+      test::run_cli({"make", "torus", "-R", "3", "-r", "0.3", "--resolution", "24", "-o", input})
+          .exit_code,
+      0);
+  expect_good_remesh(input, 1, 0.01);
+  ASSERT_EQ(test::run_cli({"remesh", input, "-o", output, "--quiet"}).exit_code, 0);
+  const auto &branch = test::read_written_mesh(output).columns.at("branch");
+  int branch_vertices = 0;
+  for (double e : branch) {
+    EXPECT_TRUE(e == 0 || e == 2) << e;
+    branch_vertices += e == 2;
+  }
+  EXPECT_EQ(branch_vertices, 4);
 }
 
 // `make genus -g GENUS --resolution 24`, remeshed and judged against every bar.

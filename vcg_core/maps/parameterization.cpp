@@ -29,6 +29,7 @@ void adopt(WrittenSphere &&written, Parameterization &out, Branching &branching)
     out.origin_attempts = written.origin_attempts;
   }
   branching = std::move(written.branching);
+  out.flat = std::move(written.flat);
 }
 
 // Branch points, sheets and layers, texture coordinates, distortion and validity of the map as
@@ -108,6 +109,7 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
             : genus1_origin_candidates(prepared, forms.normalized[0],
                                        WeierstrassP(Complex(1, 0), forms.riemann_matrix(0, 0)));
     out.method = "genus 1: Weierstrass P-function of the flat coordinate";
+    out.flat_periods = WeierstrassP(Complex(1, 0), forms.riemann_matrix(0, 0)).periods();
     clock.done("meromorphic");
     written = written_genus1_map(prepared, forms, origins, options.mobius, progress, clock);
   } else {

@@ -98,6 +98,12 @@ struct Parameterization {
   std::vector<Eigen::Vector3d> sphere;  // unit sphere
   std::vector<Eigen::Vector3d> layered; // radius 1 + gap * layer
   std::vector<int> branch_flag;         // local degree at branch vertices, 0 elsewhere
+  // Genus 1: the flat coordinate z per vertex (the map is P(z); z is defined up to the lattice),
+  // in the numbering of `sphere` (several parts: 0 on parts of another genus), and the lattice's
+  // reduced basis (weierstrass_p.h; several parts: each part's own, in `components`). Empty
+  // otherwise.
+  std::vector<Complex> flat;
+  std::array<Complex, 2> flat_periods{};
   TextureCoordinates uv;
   std::vector<std::pair<std::string, double>> timings_ms;
   // What the method used.

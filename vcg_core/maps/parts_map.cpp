@@ -42,6 +42,10 @@ void place_part(const SurfaceParts &split, size_t p, Parameterization &map, Para
     out.sphere[size_t(source)] = map.sphere[v];
     out.layered[size_t(source)] = map.layered[v];
     out.branch_flag[size_t(source)] = map.branch_flag[v];
+    if (!map.flat.empty()) {
+      if (out.flat.empty()) out.flat.assign(out.sphere.size(), Complex(0, 0));
+      out.flat[size_t(source)] = map.flat[v];
+    }
     out.uv.vertex[size_t(source)] = map.uv.vertex[v];
     out.sheets.vertex_layer[size_t(source)] = map.sheets.vertex_layer[v];
     highest_layer = std::max(highest_layer, map.sheets.vertex_layer[v]);
@@ -196,6 +200,7 @@ Parameterization parameterize_parts(const Mesh &mesh, const Validation &validati
     map.sphere.clear();
     map.layered.clear();
     map.branch_flag.clear();
+    map.flat.clear();
     map.uv = {};
     map.sheets.vertex_layer.clear();
     map.sheets.face_layer.clear();

@@ -29,6 +29,7 @@ public:
   Complex g2() const { return g2_; }
   Complex g3() const { return g3_; }
   Complex tau() const { return tau_; }
+  std::array<Complex, 2> periods() const { return {w1_, w2_}; } // the reduced basis, tau = w2 / w1
   std::array<Complex, 3> half_periods() const { return {w1_ / 2.0, w2_ / 2.0, (w1_ + w2_) / 2.0}; }
   std::array<Complex, 3> roots() const { return {e1_, e2_, e3_}; } // P at the half periods
 

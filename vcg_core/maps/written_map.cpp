@@ -70,6 +70,7 @@ WrittenSphere written_genus1_map(const PreparedMesh &prepared, const Holomorphic
     WrittenSphere written;
     finish_on_sphere(prepared, mobius, &map, 0, map.values, written, progress, clock);
     written.origin_vertex = map.origin_vertex;
+    written.flat = map.flat;
     const bool valid = written.branching.degree == 2 && written.branching.riemann_hurwitz_ok &&
                        folded_face_count(prepared.incidence, written.sphere) == 0;
     if (valid || k == 0) first = std::move(written);

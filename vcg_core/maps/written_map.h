@@ -35,6 +35,7 @@ struct WrittenSphere {
   int snapped_branch_points = 0, untangled_vertices = 0;
   Branching branching;
   int origin_vertex = -1, origin_attempts = 0; // genus 1
+  std::vector<Complex> flat;                   // genus 1: z per vertex (genus1_map.h)
 };
 
 void finish_on_sphere(const PreparedMesh &prepared, bool mobius, const Genus1Map *torus_map,

@@ -73,6 +73,7 @@ void with_zero_area_faces(const Mesh &whole, const ZeroAreaFix &fix,
   expand(map.layered, Eigen::Vector3d());
   expand(map.uv.vertex, std::array<double, 2>{});
   expand(map.sheets.vertex_layer, 0);
+  if (!map.flat.empty()) expand(map.flat, Complex(0, 0));
   if (!map.vertex_component.empty()) expand(map.vertex_component, 0);
   std::vector<int> branch_flag = std::move(map.branch_flag);
   map.branch_flag.assign(vertex_count, 0);

@@ -7,6 +7,7 @@
 #include <vcg/complex/algorithms/update/topology.h>
 
 #include "common/errors.h"
+#include "remesh/flat_torus_lift.h"
 #include "remesh/geodesic_sphere.h"
 #include "remesh/layered_sphere_lift.h"
 #include "remesh/lifted_edge_flips.h"
@@ -52,6 +53,9 @@ struct PartSurface {
   std::vector<int> face_layer, local_degree, global_vertex;
   std::vector<Eigen::Vector3d> branch_values;
   int ramification = 0;
+  // Genus 1: the flat coordinate per vertex and the lattice (flat_torus_lift.h); empty otherwise.
+  std::vector<Complex> flat;
+  std::array<Complex, 2> flat_periods{};
 };
 
 PartSurface part_surface(const MappedMesh &mapped, const Parameterization &map, int part) {
@@ -69,7 +73,13 @@ PartSurface part_surface(const MappedMesh &mapped, const Parameterization &map, 
         out.branch_values.push_back(map.sphere[v]);
         out.ramification += e - 1;
       }
+      if (!map.flat.empty()) out.flat.push_back(map.flat[v]);
     }
+  const Parameterization &own = map.components.empty() ? map : map.components[size_t(part)];
+  if (own.genus == 1 && out.flat.size() == out.global_vertex.size())
+    out.flat_periods = own.flat_periods;
+  else
+    out.flat.clear();
   Mesh mesh; // for vcglib's face-face adjacency
   vcg::tri::Allocator<Mesh>::AddVertices(mesh, out.global_vertex.size());
   for (size_t f = 0; f < mapped.faces.size(); ++f) {
@@ -91,8 +101,14 @@ PartSurface part_surface(const MappedMesh &mapped, const Parameterization &map, 
 }
 
 // The part's geodesic sphere of `figures.frequency`, lifted; the vertex count it holds when
-// everything lifts goes into `figures`.
+// everything lifts goes into `figures`. Genus 1: as many samples on the flat torus.
 LiftedSphere lift_part(const PartSurface &surface, RemeshPart &figures, const Progress &progress) {
+  if (!surface.flat.empty()) {
+    const long long k = figures.frequency;
+    figures.target_vertices = (long long)figures.degree * (10 * k * k + 2) - figures.ramification;
+    return lift_flat_torus(surface.surface, surface.flat, surface.flat_periods, surface.face_layer,
+                           surface.local_degree, figures.target_vertices);
+  }
   const GeodesicSphere sphere = geodesic_sphere(figures.frequency, surface.branch_values);
   figures.target_vertices =
       (long long)figures.degree * (long long)sphere.vertices.size() - figures.ramification;
@@ -187,6 +203,31 @@ void refine_to_target(const PartSurface &surface, RemeshPart &figures, double fa
   figures.frequency = best_frequency;
 }
 
+// Genus 1: the flat torus sampled so that, refined where the surface is large against its flat
+// image, it holds about the target: the sample count and the largest face area allowed are both
+// scaled by how far a try lands, the closest of a few tries kept.
+LiftedSphere flat_torus_to_target(const PartSurface &surface, double face_area, long long target) {
+  LiftedSphere best;
+  double best_miss = 1e300, samples = double(target), scale = 1.0;
+  for (int attempt = 0; attempt < 6; ++attempt) {
+    LiftedSphere lifted =
+        lift_flat_torus(surface.surface, surface.flat, surface.flat_periods, surface.face_layer,
+                        surface.local_degree, std::llround(samples));
+    refine_lifted_sphere(surface.surface, refinement_limits(face_area, scale), refinement_rounds,
+                         lifted);
+    const double held = double(lifted.positions.size()) / double(target);
+    const double miss = std::abs(std::log(held));
+    if (miss < best_miss) {
+      best_miss = miss;
+      best = std::move(lifted);
+    }
+    if (miss < 0.03) break;
+    samples /= std::sqrt(held);
+    scale *= held;
+  }
+  return best;
+}
+
 // A closed part whose lift has faces that do not close, or sphere faces with a corner that did not
 // lift, would come out open: refused, naming the two branch values nearest each other on the
 // sphere (where that has been seen to happen). A part
@@ -277,17 +318,17 @@ void remesh_through_sphere(const Mesh &input, const Parameterization &map,
     if (options.even_out) {
       const long long even_target = options.resolution >= 0 ? figures.target_vertices : part_target;
       const double face_area = surface_area(surface.surface) / (2.0 * double(even_target));
-      if (options.resolution < 0) {
+      if (!surface.flat.empty() && options.resolution < 0) {
+        lifted = flat_torus_to_target(surface, face_area, even_target);
+      } else if (options.resolution < 0) {
         const int frequency =
             frequency_after_refinement(lifted, figures.frequency, face_area, even_target);
         if (frequency != figures.frequency) {
           figures.frequency = frequency;
           lifted = lift_part(surface, figures, step.range(0.5, 0.9));
         }
-      }
-      if (options.resolution < 0)
         refine_to_target(surface, figures, face_area, even_target, step.range(0.5, 0.9), lifted);
-      else
+      } else
         refine_lifted_sphere(surface.surface, refinement_limits(face_area, 1.0), refinement_rounds,
                              lifted);
       smooth_lifted_sphere(surface, options.relaxation_rounds, lifted);

@@ -6,7 +6,9 @@
 //      input's vertex count, shared among the parts by their vertex counts; whether to even out
 //      the triangles' sizes) and progress.
 // Out: `SurfaceRemesh`: per part, a geodesic sphere (geodesic_sphere.h) with the part's branch
-//      values on vertices, lifted to the part (layered_sphere_lift.h), evened out where its
+//      values on vertices, lifted to the part (layered_sphere_lift.h; a part of genus 1: a
+//      regular grid of its flat torus instead, flat_torus_lift.h, its sample count scaled so that
+//      the refined result holds about the target), evened out where its
 //      triangles lift large (lifted_refinement.h; the frequency chosen so the result holds about
 //      the target), then rounds of edge flips (lifted_edge_flips.h) and tangential relaxation
 //      through the sphere (lifted_relaxation.h) for the triangles' shapes; the parts' lifts
