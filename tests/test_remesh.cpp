@@ -168,7 +168,8 @@ TEST(Remesh, AThinTorusMeetsEveryBarWithItsFourBranchVertices) {
       0);
   expect_good_remesh(input, 1, 0.01);
   ASSERT_EQ(test::run_cli({"remesh", input, "-o", output, "--quiet"}).exit_code, 0);
-  const auto &branch = test::read_written_mesh(output).columns.at("branch");
+  const test::WrittenMesh written = test::read_written_mesh(output);
+  const auto &branch = written.columns.at("branch");
   int branch_vertices = 0;
   for (double e : branch) {
     EXPECT_TRUE(e == 0 || e == 2) << e;
@@ -199,11 +200,10 @@ TEST(Remesh, AGeneratedGenusTwoSurfaceMeetsEveryBar) {
   expect_good_generated_remesh(2);
 }
 
-// The shared genus-2 eight (766 vertices): topology, folds, angles and count hold; its Hausdorff
-// distance from the input is 1.06% of the diagonal today, over the issue's 1% (issue 13 open), so
-// the bar here is the figure measured, to catch it getting worse.
-TEST(Remesh, TheSharedEightKeepsItsGenusWithoutFolds) {
-  expect_good_remesh(test::data_path("eight.off"), 2, 0.0115);
+// The shared genus-2 eight (766 vertices): every bar, the Hausdorff distance included (1.06% from
+// the input before the sphere mesh graded down to close branch values).
+TEST(Remesh, TheSharedEightMeetsEveryBar) {
+  expect_good_remesh(test::data_path("eight.off"), 2, 0.01);
 }
 
 // The same eight with its coordinates rounded to float, as MeshLab hands meshes over: its map
@@ -226,28 +226,19 @@ TEST(Remesh, TheEightInFloatCoordinatesKeepsItsGenusWithoutFolds) {
   }
   out << in.rdbuf();
   out.close();
-  expect_good_remesh(dir.path("eight_float.off"), 2, 0.0115);
+  expect_good_remesh(dir.path("eight_float.off"), 2, 0.01);
 }
 
-// Never a broken surface with exit 0: on genus 3 (whose symmetric branch values lie very close on
-// the sphere) the remesh either keeps the genus and closes, or exits 3 naming why and writes
-// nothing.
-TEST(Remesh, GenusThreeIsClosedOrRefusedWithTheCause) {
-  test::TempDir dir;
-  const std::string input = dir.path("genus3.off"), output = dir.path("remeshed.ply");
-  ASSERT_EQ(
-      test::run_cli({"make", "genus", "-g", "3", "--resolution", "24", "-o", input}).exit_code, 0);
-  const auto run = test::run_cli({"remesh", input, "-o", output, "--quiet"});
-  if (run.exit_code == 0) {
-    const RemeshFigures figures = judge_remesh(input, output);
-    EXPECT_EQ(figures.euler, -4);
-    EXPECT_EQ(figures.boundary_sides, 0);
-  } else {
-    EXPECT_EQ(run.exit_code, 3) << run.err;
-    EXPECT_NE(run.err.find("does not close"), std::string::npos) << run.err;
-    EXPECT_NE(run.err.find("vertices"), std::string::npos) << run.err;
-    EXPECT_FALSE(std::ifstream(output).good()) << "nothing is written";
-  }
+// A generated genus-3 surface: its symmetric branch values lie in pairs 1.6e-4 to 7e-3 apart on
+// the sphere (a neck of a handle crushed into a spot); the sphere mesh was slivers between them
+// and 28 lifted faces folded (2.2% Hausdorff); the sphere now grades down to each such pair.
+TEST(Remesh, AGeneratedGenusThreeSurfaceMeetsEveryBar) {
+  expect_good_generated_remesh(3);
+}
+
+// Genus 5 (eight sheets, sixteen branch points): every bar.
+TEST(Remesh, AGeneratedGenusFiveSurfaceMeetsEveryBar) {
+  expect_good_generated_remesh(5);
 }
 
 // A scan with holes (the bunny: 5 holes), closed for the map only: the remesh keeps the holes

@@ -89,8 +89,145 @@ bool holds(const GeodesicSphere &sphere, const std::array<int, 3> &face, const E
   return sphere.vertices[face[0]].dot(p) > 0;
 }
 
-// Branch value `value` (index `index`) onto a vertex: the nearest, or a new one splitting its face.
-void put_on_vertex(GeodesicSphere &sphere, const Eigen::Vector3d &value, int index) {
+// Sphere faces refined around branch values that lie close to another one (closer than an edge
+// of the sphere and than 0.05): each round, a face whose centre lies within 0.6 of its longest side
+// from such a value (the faces at the value) is split 1-to-4 (the midpoints pushed onto the
+// sphere) while that side is longer than a third of the value's distance to the other; a
+// neighbour with one side split is halved, one with more is split too. The sphere mesh grades
+// down to the pair in a few faces per halving, so each value gets a vertex of its own nearby
+// instead of slivers between two values a hair apart. Returns, per vertex, whether refinement
+// made or changed faces around it.
+std::vector<char> refine_around_close_values(GeodesicSphere &sphere,
+                                             const std::vector<Eigen::Vector3d> &values) {
+  std::vector<char> touched(sphere.vertices.size(), 0);
+  double edge = 0;
+  for (const auto &face : sphere.faces)
+    edge = std::max(edge, (sphere.vertices[face[0]] - sphere.vertices[face[1]]).norm());
+  std::vector<std::pair<Eigen::Vector3d, double>> close; // value, a third of its separation
+  for (size_t a = 0; a < values.size(); ++a) {
+    double separation = 1e300;
+    for (size_t b = 0; b < values.size(); ++b)
+      if (b != a) separation = std::min(separation, (values[a] - values[b]).norm());
+    if (separation < std::min(edge, 0.05))
+      close.push_back({values[a], std::max(separation / 3, 1e-9)});
+  }
+  if (close.empty()) return touched;
+  auto longest_side = [&](const std::array<int, 3> &face) {
+    double longest = 0;
+    for (int k = 0; k < 3; ++k)
+      longest =
+          std::max(longest, (sphere.vertices[face[k]] - sphere.vertices[face[(k + 1) % 3]]).norm());
+    return longest;
+  };
+  for (int round = 0; round < 40; ++round) {
+    std::vector<char> split(sphere.faces.size(), 0);
+    bool any = false;
+    for (size_t f = 0; f < sphere.faces.size(); ++f) {
+      const auto &face = sphere.faces[f];
+      const Eigen::Vector3d middle =
+          (sphere.vertices[face[0]] + sphere.vertices[face[1]] + sphere.vertices[face[2]]) / 3;
+      const double longest = longest_side(face);
+      for (const auto &[value, third] : close)
+        if (longest > third && (middle - value).norm() < 0.6 * longest) split[f] = any = true;
+    }
+    if (!any) break;
+    // Closure: a face with two or three sides split is split in four too.
+    std::map<std::pair<int, int>, int> middle_of;
+    auto side = [](int a, int b) { return std::make_pair(std::min(a, b), std::max(a, b)); };
+    for (size_t f = 0; f < sphere.faces.size(); ++f)
+      if (split[f])
+        for (int k = 0; k < 3; ++k)
+          middle_of.emplace(side(sphere.faces[f][k], sphere.faces[f][(k + 1) % 3]), -1);
+    for (bool grew = true; grew;) {
+      grew = false;
+      for (size_t f = 0; f < sphere.faces.size(); ++f) {
+        const auto &face = sphere.faces[f];
+        if (split[f]) continue;
+        int sides = 0;
+        for (int k = 0; k < 3; ++k)
+          sides += middle_of.count(side(face[k], face[(k + 1) % 3]));
+        if (sides < 2) continue;
+        split[f] = grew = true;
+        for (int k = 0; k < 3; ++k)
+          middle_of.emplace(side(face[k], face[(k + 1) % 3]), -1);
+      }
+    }
+    for (auto &[ends, middle] : middle_of) {
+      middle = int(sphere.vertices.size());
+      sphere.vertices.push_back(
+          (sphere.vertices[ends.first] + sphere.vertices[ends.second]).normalized());
+      touched.push_back(1);
+    }
+    const size_t count = sphere.faces.size();
+    for (size_t f = 0; f < count; ++f) {
+      const std::array<int, 3> face = sphere.faces[f];
+      std::array<int, 3> m{};
+      int sides = 0, which = 0;
+      for (int k = 0; k < 3; ++k) {
+        const auto found = middle_of.find(side(face[k], face[(k + 1) % 3]));
+        m[k] = found == middle_of.end() ? -1 : found->second;
+        if (m[k] >= 0) ++sides, which = k;
+      }
+      if (sides == 3) {
+        sphere.faces[f] = {face[0], m[0], m[2]};
+        sphere.faces.push_back({m[0], face[1], m[1]});
+        sphere.faces.push_back({m[2], m[1], face[2]});
+        sphere.faces.push_back({m[0], m[1], m[2]});
+      } else if (sides == 1) { // halved across the split side
+        const int a = face[which], b = face[(which + 1) % 3], c = face[(which + 2) % 3];
+        sphere.faces[f] = {a, m[which], c};
+        sphere.faces.push_back({m[which], b, c});
+      }
+      if (sides > 0)
+        for (int corner : face)
+          touched[size_t(corner)] = 1;
+    }
+  }
+  return touched;
+}
+
+// Edge flips toward the Delaunay triangulation of the sphere (the convex hull of its points) on
+// the sides with an end in `touched`: a side is flipped when the far corner of the face across it
+// lies inside the circumcircle of the face (beyond the plane through its corners). A flip that
+// would join two branch values, or turn a face over, is not made.
+void flip_touched_toward_delaunay(GeodesicSphere &sphere, const std::vector<char> &touched) {
+  for (int round = 0; round < 20; ++round) {
+    std::map<std::pair<int, int>, std::pair<int, int>> across; // directed side -> face, corner
+    for (size_t f = 0; f < sphere.faces.size(); ++f)
+      for (int k = 0; k < 3; ++k)
+        across[{sphere.faces[f][k], sphere.faces[f][(k + 1) % 3]}] = {int(f), (k + 2) % 3};
+    bool flipped = false;
+    std::vector<char> changed(sphere.faces.size(), 0);
+    for (size_t f = 0; f < sphere.faces.size(); ++f)
+      for (int k = 0; k < 3 && !changed[f]; ++k) {
+        const int a = sphere.faces[f][k], b = sphere.faces[f][(k + 1) % 3],
+                  c = sphere.faces[f][(k + 2) % 3];
+        if (!touched[size_t(a)] && !touched[size_t(b)]) continue;
+        const auto other = across.find({b, a});
+        if (other == across.end() || changed[size_t(other->second.first)]) continue;
+        const int g = other->second.first,
+                  d = sphere.faces[size_t(g)][size_t(other->second.second)];
+        const Eigen::Vector3d &pa = sphere.vertices[a], &pb = sphere.vertices[b],
+                              &pc = sphere.vertices[c], &pd = sphere.vertices[d];
+        const Eigen::Vector3d normal = (pb - pa).cross(pc - pa);
+        if (!(normal.dot(pd - pa) > 1e-12 * normal.norm() * (pd - pa).norm())) continue;
+        if (sphere.branch_value[c] >= 0 && sphere.branch_value[d] >= 0) continue;
+        if (across.count({c, d}) || across.count({d, c})) continue; // c and d already joined
+        // The new faces (c, a, d) and (d, b, c) must stay counter-clockwise seen from outside.
+        if ((pa - pc).cross(pd - pc).dot(pc) <= 0 || (pb - pd).cross(pc - pd).dot(pd) <= 0)
+          continue;
+        sphere.faces[f] = {c, a, d};
+        sphere.faces[size_t(g)] = {d, b, c};
+        changed[f] = changed[size_t(g)] = 1;
+        flipped = true;
+      }
+    if (!flipped) break;
+  }
+}
+
+// Branch value `value` (index `index`) onto a vertex: the nearest, or a new one splitting its face;
+// returns that vertex.
+int put_on_vertex(GeodesicSphere &sphere, const Eigen::Vector3d &value, int index) {
   int nearest = 0;
   for (int v = 1; v < int(sphere.vertices.size()); ++v)
     if ((sphere.vertices[v] - value).squaredNorm() <
@@ -99,7 +236,7 @@ void put_on_vertex(GeodesicSphere &sphere, const Eigen::Vector3d &value, int ind
   if (sphere.branch_value[nearest] < 0) {
     sphere.vertices[nearest] = value;
     sphere.branch_value[nearest] = index;
-    return;
+    return nearest;
   }
   for (size_t f = 0; f < sphere.faces.size(); ++f) {
     const std::array<int, 3> face = sphere.faces[f];
@@ -110,8 +247,9 @@ void put_on_vertex(GeodesicSphere &sphere, const Eigen::Vector3d &value, int ind
     sphere.faces[f] = {face[0], face[1], added};
     sphere.faces.push_back({face[1], face[2], added});
     sphere.faces.push_back({face[2], face[0], added});
-    return;
+    return added;
   }
+  return -1;
 }
 
 // Splits at its midpoint every edge whose two ends carry branch values: the lift of such an arc
@@ -166,8 +304,14 @@ GeodesicSphere geodesic_sphere(int frequency, const std::vector<Eigen::Vector3d>
       seen |= (other - value).norm() < 1e-12;
     if (!seen) distinct.push_back(value.normalized());
   }
-  for (size_t b = 0; b < distinct.size(); ++b)
-    put_on_vertex(out, distinct[b], int(b));
+  std::vector<char> touched = refine_around_close_values(out, distinct);
+  out.branch_value.assign(out.vertices.size(), -1);
+  for (size_t b = 0; b < distinct.size(); ++b) {
+    const int vertex = put_on_vertex(out, distinct[b], int(b));
+    touched.resize(out.vertices.size(), 0);
+    if (vertex >= 0) touched[size_t(vertex)] = 1;
+  }
+  flip_touched_toward_delaunay(out, touched);
   split_edges_between_branch_values(out);
   out.neighbours.assign(out.vertices.size(), {});
   for (const auto &face : out.faces)

@@ -179,7 +179,7 @@ void refine_to_target(const PartSurface &surface, RemeshPart &figures, double fa
   LiftedSphere best;
   double best_miss = 1e300, scale = 1.0;
   int best_frequency = figures.frequency;
-  for (int attempt = 0; attempt < 4; ++attempt) {
+  for (int attempt = 0; attempt < 6; ++attempt) {
     LiftedSphere refined = lifted;
     refine_lifted_sphere(surface.surface, refinement_limits(face_area, scale), refinement_rounds,
                          refined);
@@ -191,7 +191,7 @@ void refine_to_target(const PartSurface &surface, RemeshPart &figures, double fa
       best_frequency = figures.frequency;
     }
     if (held > 0.95 && held < 1.05) break;
-    scale *= held;
+    scale *= std::pow(held, 1.5);
     const double lift_holds = double(lifted.positions.size()) / double(target);
     if (lift_holds > 0.9 && figures.frequency > 1) {
       figures.frequency =
