@@ -33,7 +33,8 @@ Vec3 centroid(const std::vector<Vec3> &p, const std::array<int, 3> &t) {
           (p[t[0]][2] + p[t[1]][2] + p[t[2]][2]) / 3};
 }
 
-// Every vertex's faces form one fan: walking around it across shared sides reaches them all.
+// Every vertex's faces form one fan: walking around it across shared sides reaches them all
+// (from the fan's first face where it is open, on a boundary).
 int nonmanifold_vertex_count(int vertices, const std::vector<std::array<int, 3>> &triangles) {
   std::vector<std::map<int, int>> next(vertices); // at v: corner after v -> corner before v
   for (const auto &t : triangles)
@@ -45,13 +46,21 @@ int nonmanifold_vertex_count(int vertices, const std::vector<std::array<int, 3>>
       ++bad; // a vertex on no face
       continue;
     }
-    int steps = 0, at = next[v].begin()->first;
+    // An open fan (on a boundary) is walked from its first face: the one whose corner after v is
+    // no face's corner before v.
+    std::set<int> before;
+    for (const auto &[after, previous] : next[v])
+      before.insert(previous);
+    int start = next[v].begin()->first;
+    for (const auto &entry : next[v])
+      if (!before.count(entry.first)) start = entry.first;
+    int steps = 0, at = start;
     do {
       const auto found = next[v].find(at);
       if (found == next[v].end()) break;
       at = found->second;
       ++steps;
-    } while (at != next[v].begin()->first && steps <= int(next[v].size()));
+    } while (at != start && steps <= int(next[v].size()));
     bad += steps != int(next[v].size());
   }
   return bad;
@@ -253,6 +262,22 @@ TEST(Remesh, AScanWithHolesKeepsItsHoles) {
   EXPECT_GT(figures.boundary_sides, 0);
   EXPECT_EQ(figures.nonmanifold_sides, 0);
   EXPECT_EQ(figures.misoriented_sides, 0);
+  EXPECT_EQ(figures.folded, 0);
+}
+
+// The eight with a hole (genus 2, one boundary loop): the remesh keeps the hole and every vertex
+// lies on a face (a lift whose faces all fell in the hole's gap was written on its own, which made
+// the Euler characteristic -2).
+TEST(Remesh, AHoleInTheEightLeavesNoLooseVertex) {
+  test::TempDir dir;
+  const std::string input = test::data_path("eight.hole.off"), output = dir.path("remeshed.ply");
+  const auto run = test::run_cli({"remesh", input, "-o", output, "--close-holes", "--quiet"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const RemeshFigures figures = judge_remesh(input, output);
+  EXPECT_EQ(figures.euler, 2 - 2 * 2 - 1);
+  EXPECT_GT(figures.boundary_sides, 0);
+  EXPECT_EQ(figures.nonmanifold_vertices, 0);
+  EXPECT_EQ(figures.nonmanifold_sides, 0);
   EXPECT_EQ(figures.folded, 0);
 }
 

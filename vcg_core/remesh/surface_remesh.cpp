@@ -272,20 +272,31 @@ void refuse_unclosed(const PartSurface &surface, const LiftedSphere &lifted, int
                    " (nothing was written)" + where);
 }
 
+// The part's lift appended to the remesh, without the vertices on no face (a lift whose faces all
+// fell in a hole's gap).
 void append_part(const LiftedSphere &lifted, int part, SurfaceRemesh &out) {
+  std::vector<int> index(lifted.positions.size(), -1);
+  for (const auto &face : lifted.faces)
+    for (int corner : face)
+      index[size_t(corner)] = 0;
+  int kept = int(out.mesh.vert.size());
+  for (int &slot : index)
+    if (slot == 0) slot = kept++;
   const int offset = int(out.mesh.vert.size());
-  auto vertex = vcg::tri::Allocator<Mesh>::AddVertices(out.mesh, lifted.positions.size());
-  for (size_t v = 0; v < lifted.positions.size(); ++v, ++vertex) {
+  auto vertex = vcg::tri::Allocator<Mesh>::AddVertices(out.mesh, size_t(kept - offset));
+  for (size_t v = 0; v < lifted.positions.size(); ++v) {
+    if (index[v] < 0) continue;
     vertex->P() = Point3(lifted.positions[v].x(), lifted.positions[v].y(), lifted.positions[v].z());
+    ++vertex;
     out.layer.push_back(lifted.layer[v]);
     out.local_degree.push_back(lifted.local_degree[v]);
     out.part.push_back(part);
     out.sphere.push_back(lifted.sphere[v]);
   }
   for (const auto &face : lifted.faces)
-    vcg::tri::Allocator<Mesh>::AddFace(out.mesh, &out.mesh.vert[offset + face[0]],
-                                       &out.mesh.vert[offset + face[1]],
-                                       &out.mesh.vert[offset + face[2]]);
+    vcg::tri::Allocator<Mesh>::AddFace(out.mesh, &out.mesh.vert[size_t(index[size_t(face[0])])],
+                                       &out.mesh.vert[size_t(index[size_t(face[1])])],
+                                       &out.mesh.vert[size_t(index[size_t(face[2])])]);
   out.unlifted_faces += lifted.unlifted_faces;
   out.unclosed_faces += lifted.unclosed_faces;
   out.folded_lifts += lifted.folded_lifts;

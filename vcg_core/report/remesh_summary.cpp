@@ -12,11 +12,12 @@ std::string remesh_summary(const std::string &input, const Parameterization &map
   line << std::fixed << std::setprecision(2) << input << ": remeshed through " << map.degree
        << (map.degree == 1 ? " layer" : " layers") << ": " << q.vertices << " vertices (target "
        << remesh.target_vertices << "), " << q.faces << " faces, Euler characteristic " << q.euler
-       << " (input " << map.euler << "); Hausdorff distance " << std::setprecision(3)
-       << 100 * q.hausdorff_to_input << "% / " << 100 * q.hausdorff_from_input
-       << "% of the diagonal; angles min " << std::setprecision(1) << q.min_angle_degrees
-       << " (away from branch vertices " << q.min_angle_away_from_branch_degrees << "), mean "
-       << q.mean_angle_degrees << " deg; folded lifts " << remesh.folded_lifts;
+       << " (input " << map.euler << (map.holes_closed.empty() ? "" : " with its holes closed")
+       << "); Hausdorff distance " << std::setprecision(3) << 100 * q.hausdorff_to_input << "% / "
+       << 100 * q.hausdorff_from_input << "% of the diagonal; angles min " << std::setprecision(1)
+       << q.min_angle_degrees << " (away from branch vertices "
+       << q.min_angle_away_from_branch_degrees << "), mean " << q.mean_angle_degrees
+       << " deg; folded lifts " << remesh.folded_lifts;
   if (remesh.unlifted_faces) line << "; faces not lifted " << remesh.unlifted_faces;
   if (map.area_correction.applied)
     line << "; area distortion " << std::setprecision(3) << map.area_correction.distortion_before
