@@ -102,18 +102,29 @@ private:
     }
   }
 
-  // A walk that ends over a branch value ends at the corner of its face whose image that value
-  // is (within its face the map takes the value nowhere else). Near a branch point the surface
-  // position moves as the square root of the value, so an end a rounding away from the corner
-  // would lie farther from it than lifts are matched by (seen on two branch points of one pair
-  // of sheets 1.6e-4 apart on the sphere: the branch point found three times).
+  // A walk that ends over a branch value ends at the corner of its face (or of a face one or two
+  // sides away) whose image that value is (within its face the map takes the value nowhere else).
+  // Near a branch point the surface position moves as the square root of the value, so an end a
+  // rounding away from the corner would lie farther from it than lifts are matched by (seen on two
+  // branch points of one pair of sheets 1.6e-4 apart on the sphere: the branch point found three
+  // times).
   SurfacePoint at_corner_over(const SurfacePoint &point, const Eigen::Vector3d &value) const {
-    for (int k = 0; k < 3; ++k)
-      if ((surface_.image[size_t(surface_.faces[size_t(point.face)][k])] - value).norm() < 1e-12) {
-        SurfacePoint corner{point.face, Eigen::Vector3d::Zero()};
-        corner.weights[k] = 1;
-        return corner;
-      }
+    // The face itself, then the faces across its sides and theirs (a walk may stop a rounding
+    // short, in a face next to the branch vertex's own where the image is tiny).
+    std::vector<int> faces{point.face};
+    for (size_t next = 0; next < faces.size() && faces.size() < 16; ++next) {
+      const int f = faces[next];
+      for (int k = 0; k < 3; ++k)
+        if ((surface_.image[size_t(surface_.faces[size_t(f)][k])] - value).norm() < 1e-12) {
+          SurfacePoint corner{f, Eigen::Vector3d::Zero()};
+          corner.weights[k] = 1;
+          return corner;
+        }
+      if (next < 4)
+        for (int across : surface_.across[size_t(f)])
+          if (across >= 0 && std::find(faces.begin(), faces.end(), across) == faces.end())
+            faces.push_back(across);
+    }
     return point;
   }
 
