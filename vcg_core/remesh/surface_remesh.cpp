@@ -171,25 +171,38 @@ void smooth_lifted_sphere(const PartSurface &surface, int rounds, LiftedSphere &
   }
 }
 
+// Of several tries, the lift whose vertex count lands closest to a target (on a log scale).
+struct ClosestTry {
+  LiftedSphere best;
+  double best_miss = 1e300;
+  bool kept_last = false;
+  // Keeps `lifted` when it is the closest so far (kept_last); returns its count over the target.
+  double offer(LiftedSphere &&lifted, long long target) {
+    const double held = double(lifted.positions.size()) / double(target);
+    const double miss = std::abs(std::log(held));
+    kept_last = miss < best_miss;
+    if (kept_last) {
+      best_miss = miss;
+      best = std::move(lifted);
+    }
+    return held;
+  }
+};
+
 // The lifted sphere refined so that it holds about `target` vertices: the largest face area
 // allowed is scaled by how far a try lands from the target, and where the plain lift alone holds
 // more than the target the sphere's frequency is lowered; the closest of a few tries is kept.
 void refine_to_target(const PartSurface &surface, RemeshPart &figures, double face_area,
                       long long target, const Progress &progress, LiftedSphere &lifted) {
-  LiftedSphere best;
-  double best_miss = 1e300, scale = 1.0;
+  ClosestTry closest;
+  double scale = 1.0;
   int best_frequency = figures.frequency;
   for (int attempt = 0; attempt < 6; ++attempt) {
     LiftedSphere refined = lifted;
     refine_lifted_sphere(surface.surface, refinement_limits(face_area, scale), refinement_rounds,
                          refined);
-    const double held = double(refined.positions.size()) / double(target);
-    const double miss = std::abs(std::log(held));
-    if (miss < best_miss) {
-      best_miss = miss;
-      best = std::move(refined);
-      best_frequency = figures.frequency;
-    }
+    const double held = closest.offer(std::move(refined), target);
+    if (closest.kept_last) best_frequency = figures.frequency;
     if (held > 0.95 && held < 1.05) break;
     scale *= std::pow(held, 1.5);
     const double lift_holds = double(lifted.positions.size()) / double(target);
@@ -199,7 +212,7 @@ void refine_to_target(const PartSurface &surface, RemeshPart &figures, double fa
       lifted = lift_part(surface, figures, progress);
     }
   }
-  lifted = std::move(best);
+  lifted = std::move(closest.best);
   figures.frequency = best_frequency;
 }
 
@@ -207,25 +220,20 @@ void refine_to_target(const PartSurface &surface, RemeshPart &figures, double fa
 // image, it holds about the target: the sample count and the largest face area allowed are both
 // scaled by how far a try lands, the closest of a few tries kept.
 LiftedSphere flat_torus_to_target(const PartSurface &surface, double face_area, long long target) {
-  LiftedSphere best;
-  double best_miss = 1e300, samples = double(target), scale = 1.0;
+  ClosestTry closest;
+  double samples = double(target), scale = 1.0;
   for (int attempt = 0; attempt < 6; ++attempt) {
     LiftedSphere lifted =
         lift_flat_torus(surface.surface, surface.flat, surface.flat_periods, surface.face_layer,
                         surface.local_degree, std::llround(samples));
     refine_lifted_sphere(surface.surface, refinement_limits(face_area, scale), refinement_rounds,
                          lifted);
-    const double held = double(lifted.positions.size()) / double(target);
-    const double miss = std::abs(std::log(held));
-    if (miss < best_miss) {
-      best_miss = miss;
-      best = std::move(lifted);
-    }
-    if (miss < 0.03) break;
+    const double held = closest.offer(std::move(lifted), target);
+    if (std::abs(std::log(held)) < 0.03) break;
     samples /= std::sqrt(held);
     scale *= held;
   }
-  return best;
+  return std::move(closest.best);
 }
 
 // A closed part whose lift has faces that do not close, or sphere faces with a corner that did not
