@@ -187,14 +187,15 @@ TEST(Remesh, AThinTorusMeetsEveryBarWithItsFourBranchVertices) {
   EXPECT_EQ(branch_vertices, 4);
 }
 
-// `make genus -g GENUS --resolution 24`, remeshed and judged against every bar.
-void expect_good_generated_remesh(int genus) {
+// `make genus -g GENUS --resolution 24` (with `extra` options), remeshed and judged against every
+// bar.
+void expect_good_generated_remesh(int genus, const std::vector<std::string> &extra = {}) {
   test::TempDir dir;
   const std::string input = dir.path("genus" + std::to_string(genus) + ".off");
-  ASSERT_EQ(test::run_cli(
-                {"make", "genus", "-g", std::to_string(genus), "--resolution", "24", "-o", input})
-                .exit_code,
-            0);
+  std::vector<std::string> make{"make",         "genus", "-g", std::to_string(genus),
+                                "--resolution", "24",    "-o", input};
+  make.insert(make.end(), extra.begin(), extra.end());
+  ASSERT_EQ(test::run_cli(make).exit_code, 0);
   expect_good_remesh(input, genus, 0.01);
 }
 
@@ -243,6 +244,13 @@ TEST(Remesh, TheEightInFloatCoordinatesKeepsItsGenusWithoutFolds) {
 // and 28 lifted faces folded (2.2% Hausdorff); the sphere now grades down to each such pair.
 TEST(Remesh, AGeneratedGenusThreeSurfaceMeetsEveryBar) {
   expect_good_generated_remesh(3);
+}
+
+// Genus 3 with needles down to 0.1 degrees (as scans and exporters leave them) and with raw
+// marching cubes' triangles: every bar.
+TEST(Remesh, GeneratedGenusThreeSurfacesWithNeedlesMeetEveryBar) {
+  expect_good_generated_remesh(3, {"--needles", "0.2"});
+  expect_good_generated_remesh(3, {"--raw-marching-cubes"});
 }
 
 // Genus 5 (eight sheets, sixteen branch points): every bar.
