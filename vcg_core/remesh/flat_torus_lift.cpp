@@ -122,6 +122,7 @@ LiftedSphere lift_flat_torus(const MappedSurface &surface, const std::vector<Com
     out.sphere.push_back(value.normalized());
     out.layer.push_back(face_layer.empty() ? 0 : face_layer[point.face]);
     out.local_degree.push_back(grid_degree[g]);
+    out.on_boundary.push_back(0);
     out.surface_point.push_back(point);
   }
   // Each grid cell in two triangles across its shorter diagonal.

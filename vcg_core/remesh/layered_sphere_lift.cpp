@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <iterator>
 #include <limits>
+#include <map>
+#include <set>
 
 #include <Eigen/Geometry>
 
@@ -17,6 +20,15 @@ struct Lift {
   Eigen::Vector3d position;
 };
 
+// Where the lift of a sphere edge runs off the surface's boundary: the sphere value there, the
+// sphere vertex and lift the edge starts from, and how far along the edge (0 to 1).
+struct Stop {
+  Lift lift;
+  Eigen::Vector3d value;
+  int from = -1, from_lift = -1;
+  double t = 0;
+};
+
 // The lifts of every sphere vertex, and for every directed sphere edge from a vertex that carries
 // no branch value and each lift of its start, which lift of its end the edge's lift reaches.
 class EdgeLifting {
@@ -27,6 +39,7 @@ public:
     for (const auto &around : sphere.neighbours)
       first_edge_.push_back(first_edge_.back() + int(around.size()));
     reached_.assign(size_t(first_edge_.back()) * degree, -1);
+    stop_.assign(reached_.size(), -1);
     double extent = 0;
     for (const Eigen::Vector3d &p : surface.positions)
       extent = std::max(extent, p.cwiseAbs().maxCoeff());
@@ -55,12 +68,11 @@ public:
 
   const std::vector<Lift> &lifts(int q) const { return lifts_[q]; }
   // The lift of r reached from lift i of q along edge q -> r, or -1.
-  int reached(int q, int r, int i) const {
-    const auto &around = sphere_.neighbours[q];
-    for (size_t n = 0; n < around.size(); ++n)
-      if (around[n] == r) return reached_[(size_t(first_edge_[q]) + n) * degree_ + i];
-    return -1;
-  }
+  int reached(int q, int r, int i) const { return slot_value(reached_, q, r, i); }
+  // Where the lift of edge q -> r from lift i of q runs off the surface's boundary (an index into
+  // stops()), or -1.
+  int stop(int q, int r, int i) const { return slot_value(stop_, q, r, i); }
+  const std::vector<Stop> &stops() const { return stops_; }
 
 private:
   // A vertex carrying no branch value over which exactly d points are found.
@@ -95,9 +107,19 @@ private:
     for (size_t n = 0; n < around.size(); ++n) {
       const int r = around[n];
       for (int i = 0; i < lifts; ++i) {
-        const std::optional<SurfacePoint> end = lift_arc(
-            surface_, lifts_[q][i].point, sphere_.vertices[q], sphere_.vertices[r], max_steps_);
-        if (end) reached_[(size_t(first_edge_[q]) + n) * degree_ + i] = match(r, *end);
+        PathPoint exit;
+        const std::optional<SurfacePoint> end =
+            lift_arc(surface_, lifts_[q][i].point, sphere_.vertices[q], sphere_.vertices[r],
+                     max_steps_, nullptr, &exit);
+        const size_t slot = (size_t(first_edge_[q]) + n) * degree_ + i;
+        if (end) {
+          reached_[slot] = match(r, *end);
+        } else if (exit.point.face >= 0) {
+          stop_[slot] = int(stops_.size());
+          const Eigen::Vector3d value =
+              ((1 - exit.t) * sphere_.vertices[q] + exit.t * sphere_.vertices[r]).normalized();
+          stops_.push_back({{exit.point, position_of(surface_, exit.point)}, value, q, i, exit.t});
+        }
       }
     }
   }
@@ -128,11 +150,19 @@ private:
     return point;
   }
 
+  int slot_value(const std::vector<int> &values, int q, int r, int i) const {
+    const auto &around = sphere_.neighbours[q];
+    for (size_t n = 0; n < around.size(); ++n)
+      if (around[n] == r) return values[(size_t(first_edge_[q]) + n) * degree_ + i];
+    return -1;
+  }
+
   const MappedSurface &surface_;
   const GeodesicSphere &sphere_;
   int degree_;
   std::vector<std::vector<Lift>> lifts_;
-  std::vector<int> first_edge_, reached_;
+  std::vector<int> first_edge_, reached_, stop_;
+  std::vector<Stop> stops_;
   double same_point_ = 0;
   int max_steps_ = 0;
 };
@@ -154,6 +184,50 @@ int local_degree_at(const MappedSurface &surface, const SurfacePoint &point,
       return e >= 2 ? e : 0;
     }
   return 0;
+}
+
+// Two cuts on the boundary a hair apart (two sides from one lift leave the surface near one point)
+// make a sliver: where a face's side between two boundary vertices is under a tenth of its longest
+// side, the two become one (the face goes), if they share no neighbour but that face's third
+// corner (so the surface stays a manifold).
+void join_near_stops(LiftedSphere &out) {
+  std::vector<std::set<int>> around(out.positions.size());
+  for (const auto &face : out.faces)
+    for (int k = 0; k < 3; ++k) {
+      around[size_t(face[k])].insert(face[(k + 1) % 3]);
+      around[size_t(face[k])].insert(face[(k + 2) % 3]);
+    }
+  std::vector<int> into(out.positions.size(), -1);
+  std::vector<char> touched(out.positions.size(), 0);
+  for (const auto &face : out.faces) {
+    double longest = 0;
+    for (int k = 0; k < 3; ++k)
+      longest = std::max(
+          longest,
+          (out.positions[size_t(face[k])] - out.positions[size_t(face[(k + 1) % 3])]).norm());
+    for (int k = 0; k < 3; ++k) {
+      const int a = face[k], b = face[(k + 1) % 3], c = face[(k + 2) % 3];
+      if (!out.on_boundary[size_t(a)] || !out.on_boundary[size_t(b)] || touched[size_t(a)] ||
+          touched[size_t(b)] || touched[size_t(c)])
+        continue;
+      if ((out.positions[size_t(a)] - out.positions[size_t(b)]).norm() >= 0.1 * longest) continue;
+      std::vector<int> common;
+      std::set_intersection(around[size_t(a)].begin(), around[size_t(a)].end(),
+                            around[size_t(b)].begin(), around[size_t(b)].end(),
+                            std::back_inserter(common));
+      if (common != std::vector<int>{c}) continue;
+      into[size_t(b)] = a;
+      touched[size_t(a)] = touched[size_t(b)] = touched[size_t(c)] = 1;
+      break;
+    }
+  }
+  std::vector<std::array<int, 3>> kept;
+  for (auto face : out.faces) {
+    for (int &corner : face)
+      if (into[size_t(corner)] >= 0) corner = into[size_t(corner)];
+    if (face[0] != face[1] && face[1] != face[2] && face[2] != face[0]) kept.push_back(face);
+  }
+  out.faces = std::move(kept);
 }
 
 } // namespace
@@ -194,6 +268,41 @@ int count_folded_lifts(const MappedSurface &surface, const LiftedSphere &lifted)
   return folded;
 }
 
+int drop_folded_boundary_faces(const MappedSurface &surface, LiftedSphere &lifted) {
+  int dropped = 0;
+  for (bool changed = true; changed;) {
+    changed = false;
+    std::map<std::pair<int, int>, int> faces_on; // per side
+    auto side = [](int a, int b) { return std::make_pair(std::min(a, b), std::max(a, b)); };
+    for (const auto &face : lifted.faces)
+      for (int k = 0; k < 3; ++k)
+        ++faces_on[side(face[k], face[(k + 1) % 3])];
+    std::vector<char> open_fan(lifted.positions.size(), 0), touched(lifted.positions.size(), 0);
+    for (const auto &[ends, count] : faces_on)
+      if (count == 1) open_fan[size_t(ends.first)] = open_fan[size_t(ends.second)] = 1;
+    std::vector<std::array<int, 3>> kept;
+    for (const auto &face : lifted.faces) {
+      bool drop = false;
+      if (!touched[size_t(face[0])] && !touched[size_t(face[1])] && !touched[size_t(face[2])] &&
+          lifted_face_folds(surface, lifted, face))
+        for (int k = 0; k < 3; ++k)
+          drop |= faces_on[side(face[k], face[(k + 1) % 3])] == 1 &&
+                  !open_fan[size_t(face[(k + 2) % 3])];
+      if (!drop) {
+        kept.push_back(face);
+        continue;
+      }
+      for (int corner : face)
+        touched[size_t(corner)] = 1;
+      ++dropped;
+      changed = true;
+    }
+    lifted.faces = std::move(kept);
+  }
+  lifted.folded_lifts = count_folded_lifts(surface, lifted);
+  return dropped;
+}
+
 LiftedSphere lift_sphere(const MappedSurface &surface, const std::vector<int> &face_layer,
                          const std::vector<int> &local_degree, int degree,
                          const GeodesicSphere &sphere, const Progress &progress) {
@@ -210,37 +319,101 @@ LiftedSphere lift_sphere(const MappedSurface &surface, const std::vector<int> &f
       out.layer.push_back(face_layer.empty() ? 0 : face_layer[lift.point.face]);
       out.local_degree.push_back(local_degree_at(surface, lift.point, local_degree));
       out.surface_point.push_back(lift.point);
+      out.on_boundary.push_back(0);
     }
   }
   progress.report(0.9, "joining the lifted faces");
-  for (const auto &face : sphere.faces) {
-    int base = 0; // a corner that carries no branch value starts the lifts
-    while (base < 3 && sphere.branch_value[face[base]] >= 0)
-      ++base;
-    if (base == 3 || lifting.lifts(face[base]).empty()) {
-      out.unlifted_faces += degree;
-      continue;
-    }
-    const int a = face[base], b = face[(base + 1) % 3], c = face[(base + 2) % 3];
-    const int lifts = std::min<int>(int(lifting.lifts(a).size()), degree);
-    out.unlifted_faces += degree - lifts;
-    for (int i = 0; i < lifts; ++i) {
-      const int j = lifting.reached(a, b, i), k = lifting.reached(a, c, i);
-      if (j < 0 || k < 0) {
-        ++out.unlifted_faces;
-        continue;
-      }
-      if (sphere.branch_value[b] < 0 && lifting.reached(b, c, j) != k) {
-        ++out.unclosed_faces;
-        continue;
-      }
-      std::array<int, 3> lifted{first[a] + i, first[b] + j, first[c] + k};
-      std::array<int, 3> rotated{};
-      for (int m = 0; m < 3; ++m)
-        rotated[(base + m) % 3] = lifted[m];
-      out.faces.push_back(rotated);
-    }
+  // A stop very near the lift its edge starts from would make a sliver: the nearest such stop of
+  // each lift is that lift itself (the boundary passes a few hundredths of a side from it; faces
+  // made degenerate go).
+  std::vector<int> stop_vertex(lifting.stops().size(), -1);
+  std::vector<int> nearest_stop(out.positions.size(), -1);
+  for (size_t s = 0; s < lifting.stops().size(); ++s) {
+    const Stop &stop = lifting.stops()[s];
+    int &nearest = nearest_stop[size_t(first[stop.from] + stop.from_lift)];
+    if (stop.t < 0.15 && (nearest < 0 || stop.t < lifting.stops()[size_t(nearest)].t))
+      nearest = int(s);
   }
+  for (size_t v = 0; v < nearest_stop.size(); ++v)
+    if (nearest_stop[v] >= 0) stop_vertex[size_t(nearest_stop[v])] = int(v);
+  auto stop_at = [&](int stop) { // the lifted vertex of a boundary stop, added when first used
+    if (stop_vertex[size_t(stop)] < 0) {
+      const Stop &where = lifting.stops()[size_t(stop)];
+      stop_vertex[size_t(stop)] = int(out.positions.size());
+      out.positions.push_back(where.lift.position);
+      out.sphere.push_back(where.value);
+      out.layer.push_back(face_layer.empty() ? 0 : face_layer[where.lift.point.face]);
+      out.local_degree.push_back(0);
+      out.surface_point.push_back(where.lift.point);
+      out.on_boundary.push_back(1);
+    }
+    return stop_vertex[size_t(stop)];
+  };
+  auto add_cut_face = [&](const std::array<int, 3> &corners) { // a stop merged into a corner
+    if (corners[0] != corners[1] && corners[1] != corners[2] && corners[2] != corners[0])
+      out.faces.push_back(corners);
+  };
+  // One copy of a face: from lift i of corner x0 (no branch value) along its sides to x1 and x2
+  // (counter-clockwise); which lifts of x1 and x2 it reached go into `reached_lifts` (-1: none).
+  auto lift_copy = [&](int x0, int x1, int x2, int i, std::array<int, 2> &reached_lifts) {
+    const int j = lifting.reached(x0, x1, i), k = lifting.reached(x0, x2, i);
+    reached_lifts = {j, k};
+    const int l0 = first[x0] + i;
+    if (j >= 0 && k >= 0) {
+      if (sphere.branch_value[x1] < 0 && lifting.reached(x1, x2, j) != k) {
+        ++out.unclosed_faces;
+        return true;
+      }
+      out.faces.push_back({l0, first[x1] + j, first[x2] + k});
+      return true;
+    }
+    // The lift runs off a hole: the face is cut where its sides' lifts leave the surface.
+    const int s01 = j < 0 ? lifting.stop(x0, x1, i) : -1,
+              s02 = k < 0 ? lifting.stop(x0, x2, i) : -1;
+    if ((j < 0 && s01 < 0) || (k < 0 && s02 < 0)) return false;
+    if (j < 0 && k < 0) {
+      add_cut_face({l0, stop_at(s01), stop_at(s02)});
+    } else if (j >= 0) { // x1 lifted, x2 not: cut along x1 -> x2 too
+      const int s12 = sphere.branch_value[x1] < 0 ? lifting.stop(x1, x2, j) : -1;
+      if (s12 < 0) return false;
+      add_cut_face({l0, first[x1] + j, stop_at(s12)});
+      add_cut_face({l0, stop_at(s12), stop_at(s02)});
+    } else { // x2 lifted, x1 not: cut along x2 -> x1 too
+      const int s21 = sphere.branch_value[x2] < 0 ? lifting.stop(x2, x1, k) : -1;
+      if (s21 < 0) return false;
+      add_cut_face({l0, stop_at(s01), stop_at(s21)});
+      add_cut_face({l0, stop_at(s21), first[x2] + k});
+    }
+    return true;
+  };
+  for (const auto &face : sphere.faces) {
+    // Each corner that carries no branch value starts the copies its lifts are in and no earlier
+    // corner's lift reached (a corner in a hole's gap in one sheet has fewer lifts).
+    std::array<std::vector<char>, 3> covered;
+    for (int m = 0; m < 3; ++m)
+      covered[size_t(m)].assign(lifting.lifts(face[size_t(m)]).size(), 0);
+    int copies = 0;
+    for (int m = 0; m < 3; ++m) {
+      const int x0 = face[size_t(m)], x1 = face[size_t((m + 1) % 3)],
+                x2 = face[size_t((m + 2) % 3)];
+      if (sphere.branch_value[x0] >= 0) continue;
+      const int lifts = std::min<int>(int(lifting.lifts(x0).size()), degree);
+      for (int i = 0; i < lifts; ++i) {
+        if (covered[size_t(m)][size_t(i)]) continue;
+        std::array<int, 2> reached_lifts{};
+        if (!lift_copy(x0, x1, x2, i, reached_lifts)) continue;
+        ++copies;
+        covered[size_t(m)][size_t(i)] = 1;
+        for (int n = 0; n < 2; ++n) {
+          auto &other = covered[size_t((m + 1 + n) % 3)];
+          const int lift = reached_lifts[size_t(n)];
+          if (lift >= 0 && size_t(lift) < other.size()) other[size_t(lift)] = 1;
+        }
+      }
+    }
+    out.unlifted_faces += std::max(0, degree - copies);
+  }
+  join_near_stops(out);
   out.folded_lifts = count_folded_lifts(surface, out);
   progress.report(1.0, "lifted");
   return out;

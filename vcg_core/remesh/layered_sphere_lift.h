@@ -12,9 +12,13 @@
 //      branch value) without cutting anything. Per lifted vertex its surface position (on a
 //      face of the surface, interpolated), sphere value, layer (of the surface face it lies in),
 //      local degree (at a surface branch vertex, else 0) and surface point; faces oriented as the
-//      surface. Also what did not lift: sphere faces with a corner that has no lift (the walk ran
-//      off a boundary: a hole's gap on the sphere) and faces whose three edge lifts do not close
-//      (a folded image), and folded lifts: faces whose normal points against the surface's.
+//      surface. A surface with holes leaves gaps on the sphere: a face copy with a corner in the
+//      gap is cut where the lifts of its sides leave the surface (vertices on the boundary, which
+//      stay put later; a cut a hair from a lift is that lift, two cuts a hair apart are one), so
+//      the remesh's holes follow the input's. Also what did not lift (a copy with a side whose
+//      lift neither arrives nor leaves by a boundary, or a cut needing a walk from a branch
+//      value), faces whose three edge lifts do not close (a folded image), and folded lifts:
+//      faces whose normal points against the surface's.
 #pragma once
 
 #include <array>
@@ -32,6 +36,9 @@ struct LiftedSphere {
   std::vector<Eigen::Vector3d> positions, sphere;
   std::vector<int> layer, local_degree;
   std::vector<SurfacePoint> surface_point;
+  // Per vertex: whether it lies on the surface's boundary, where the lift of a sphere edge runs off
+  // a hole (such vertices stay where they are).
+  std::vector<char> on_boundary;
   std::vector<std::array<int, 3>> faces;
   int unlifted_faces = 0, unclosed_faces = 0, folded_lifts = 0;
 };
@@ -55,5 +62,10 @@ bool positive_on_sphere(const LiftedSphere &lifted, const std::array<int, 3> &fa
 
 // Lifted faces whose normal points against the surface's normals at their corners' points.
 int count_folded_lifts(const MappedSurface &surface, const LiftedSphere &lifted);
+
+// Folded faces along a hole's boundary (a side on no other face, the corner across it on a
+// closed fan of faces, so the surface stays a manifold) are taken out, pass by pass; returns how
+// many. Where the boundary bends between two cuts, the face between them can turn over.
+int drop_folded_boundary_faces(const MappedSurface &surface, LiftedSphere &lifted);
 
 } // namespace meromorph

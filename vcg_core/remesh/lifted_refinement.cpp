@@ -21,6 +21,12 @@ std::map<Side, int> sides_to_split(const MappedSurface &surface, const LiftedSph
   const std::vector<double> areas = lifted_face_areas(lifted);
   for (size_t f = 0; f < lifted.faces.size(); ++f) {
     const auto &face = lifted.faces[f];
+    // Faces along a hole's boundary are left as lifted (their sides' middles may lie off the
+    // surface).
+    if (lifted.on_boundary[size_t(face[0])] + lifted.on_boundary[size_t(face[1])] +
+            lifted.on_boundary[size_t(face[2])] >=
+        2)
+      continue;
     if (areas[f] > limits.face_area || (limits.folded && lifted_face_folds(surface, lifted, face)))
       for (int k = 0; k < 3; ++k)
         split.emplace(side(face[k], face[(k + 1) % 3]), -1);
@@ -42,11 +48,15 @@ std::map<Side, int> sides_to_split(const MappedSurface &surface, const LiftedSph
 
 // The point halfway along the lift of side (a, b), measured on the surface (a conformal map's
 // scale changes fast where it shrinks the surface, so the sphere's midpoint would lift far off
-// the middle), walked from an end that is no branch vertex.
-void add_midpoint(const MappedSurface &surface, const Side &ends, int max_steps,
+// the middle), walked from an end that is no branch vertex (nor on the boundary, where the other is
+// not).
+void add_midpoint(const MappedSurface &surface, const Side &ends, int opposite, int max_steps,
                   LiftedSphere &lifted) {
   int from = ends.first, to = ends.second;
-  if (lifted.local_degree[from] >= 2) std::swap(from, to);
+  // From an end that is no branch vertex, and inside the surface where an end is on its boundary.
+  if (lifted.local_degree[from] >= 2 ||
+      (lifted.on_boundary[from] && !lifted.on_boundary[to] && lifted.local_degree[to] < 2))
+    std::swap(from, to);
   const Eigen::Vector3d &a = lifted.sphere[from], &b = lifted.sphere[to];
   std::vector<PathPoint> path{{lifted.surface_point[from], 0.0}};
   const bool walked = bool(lift_arc(surface, path.front().point, a, b, max_steps, &path));
@@ -64,17 +74,35 @@ void add_midpoint(const MappedSurface &surface, const Side &ends, int max_steps,
     const double along = span > 0 ? (0.5 * length.back() - length[k - 1]) / span : 0.5;
     t = path[k - 1].t + std::clamp(along, 0.0, 1.0) * (path[k].t - path[k - 1].t);
   }
-  const Eigen::Vector3d middle = ((1 - t) * a + t * b).normalized();
-  const std::optional<SurfacePoint> point =
-      lift_arc(surface, lifted.surface_point[from], a, middle, max_steps);
-  const SurfacePoint at = point ? *point : lifted.surface_point[from];
-  lifted.positions.push_back(
-      point ? position_of(surface, at)
-            : Eigen::Vector3d(0.5 * (lifted.positions[from] + lifted.positions[to])));
+  Eigen::Vector3d middle = ((1 - t) * a + t * b).normalized();
+  // A side with both ends on the boundary: its lift from either end may leave the surface at once;
+  // the middle is reached from the face's third corner inside instead (or where that walk leaves
+  // the surface, on the boundary near the middle).
+  const bool along_boundary = lifted.on_boundary[from] && lifted.on_boundary[to] && opposite >= 0 &&
+                              !lifted.on_boundary[size_t(opposite)] &&
+                              lifted.local_degree[size_t(opposite)] < 2;
+  const int walker = along_boundary ? opposite : from;
+  const Eigen::Vector3d &start = lifted.sphere[size_t(walker)];
+  PathPoint exit;
+  const std::optional<SurfacePoint> point = lift_arc(surface, lifted.surface_point[size_t(walker)],
+                                                     start, middle, max_steps, nullptr, &exit);
+  SurfacePoint at = point ? *point : lifted.surface_point[from];
+  Eigen::Vector3d position = 0.5 * (lifted.positions[from] + lifted.positions[to]);
+  // A side along the boundary whose middle lies off the surface: its middle goes where the lift
+  // leaves the surface, on the boundary.
+  const bool on_boundary = !point && exit.point.face >= 0;
+  if (point) position = position_of(surface, at);
+  if (on_boundary) {
+    at = exit.point;
+    position = position_of(surface, at);
+    middle = ((1 - exit.t) * start + exit.t * middle).normalized();
+  }
+  lifted.positions.push_back(position);
   lifted.sphere.push_back(middle);
   lifted.layer.push_back(lifted.layer[from]);
   lifted.local_degree.push_back(0);
   lifted.surface_point.push_back(at);
+  lifted.on_boundary.push_back(on_boundary);
 }
 
 // A face halved through the midpoint of one side: the halves, until the next round puts the face
@@ -173,10 +201,17 @@ void refine_lifted_sphere(const MappedSurface &surface, const RefinementLimits &
     }
     halved.clear();
     std::map<Side, int> split = sides_to_split(surface, lifted, limits, known);
+    std::map<Side, int> opposite; // sides with both ends on the boundary: a face's third corner
+    for (const auto &face : lifted.faces)
+      for (int k = 0; k < 3; ++k)
+        if (lifted.on_boundary[size_t(face[k])] && lifted.on_boundary[size_t(face[(k + 1) % 3])])
+          opposite[side(face[k], face[(k + 1) % 3])] = face[(k + 2) % 3];
     for (auto &[ends, middle] : split)
       if (middle < 0) {
         middle = int(lifted.positions.size());
-        add_midpoint(surface, ends, max_steps, lifted);
+        const auto third = opposite.find(ends);
+        add_midpoint(surface, ends, third == opposite.end() ? -1 : third->second, max_steps,
+                     lifted);
       }
     split_faces(lifted, split, halved);
     if (split.size() == known.size()) break; // nothing new to split

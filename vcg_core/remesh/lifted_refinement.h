@@ -8,7 +8,9 @@
 //      third split too; a face with one side split is halved), each new vertex lifted from a side's
 //      end that is no branch vertex along the sphere arc to the midpoint, so it lies on the surface
 //      in that end's sheet. Each lifted copy is refined on its own (the sheets need not agree).
-//      Folded lifts recounted.
+//      Along a hole: faces with two corners on the boundary are not split for their size; a side
+//      between two boundary vertices gets its middle by a walk from the face's third corner (or
+//      where that walk leaves the surface: a new boundary vertex). Folded lifts recounted.
 #pragma once
 
 #include "remesh/layered_sphere_lift.h"

@@ -107,7 +107,8 @@ void relax_lifted_sphere(const MappedSurface &surface, const std::vector<int> &f
   for (int round = 0; round < rounds; ++round) {
     for (size_t v = 0; v < lifted.positions.size(); ++v) {
       const Star &star = stars[v];
-      if (lifted.local_degree[v] >= 2 || star.neighbours.size() < 3) continue;
+      if (lifted.local_degree[v] >= 2 || lifted.on_boundary[v] || star.neighbours.size() < 3)
+        continue;
       const Eigen::Vector3d start = lifted.sphere[v], start_position = lifted.positions[v];
       const SurfacePoint start_point = lifted.surface_point[v];
       const int start_layer = lifted.layer[v];

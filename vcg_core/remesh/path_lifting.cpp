@@ -64,7 +64,9 @@ std::vector<SurfacePoint> points_over(const MappedSurface &surface, const Eigen:
 
 std::optional<SurfacePoint> lift_arc(const MappedSurface &surface, const SurfacePoint &start,
                                      const Eigen::Vector3d &a, const Eigen::Vector3d &b,
-                                     int max_steps, std::vector<PathPoint> *path) {
+                                     int max_steps, std::vector<PathPoint> *path,
+                                     PathPoint *boundary_exit) {
+  if (boundary_exit) boundary_exit->point.face = -1;
   // The chord x(t) = (1 - t) a + t b projects onto the arc; side k of a face is crossed where
   // det(s_k, s_k+1, x(t)), linear in t, turns negative. The lift leaves each face by the side
   // crossed first and enters the face across it.
@@ -93,7 +95,13 @@ std::optional<SurfacePoint> lift_arc(const MappedSurface &surface, const Surface
       return end;
     }
     const int next = surface.across[face][exit];
-    if (next < 0) return std::nullopt;
+    if (next < 0) {
+      if (boundary_exit) {
+        const double at = std::clamp(exit_t, t, 1.0);
+        *boundary_exit = {settled(surface, face, (1 - at) * a + at * b), at};
+      }
+      return std::nullopt;
+    }
     came_from = face;
     face = next;
     t = std::max(t, exit_t);

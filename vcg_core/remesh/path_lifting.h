@@ -46,8 +46,11 @@ struct PathPoint {
   double t = 0;
 };
 
+// `boundary_exit`, when given and the lift runs off a boundary, gets the point of the boundary
+// where it leaves the surface and its chord parameter t (its face is -1 otherwise).
 std::optional<SurfacePoint> lift_arc(const MappedSurface &surface, const SurfacePoint &start,
                                      const Eigen::Vector3d &a, const Eigen::Vector3d &b,
-                                     int max_steps, std::vector<PathPoint> *path = nullptr);
+                                     int max_steps, std::vector<PathPoint> *path = nullptr,
+                                     PathPoint *boundary_exit = nullptr);
 
 } // namespace meromorph

@@ -363,6 +363,7 @@ void remesh_through_sphere(const Mesh &input, const Parameterization &map,
       }
       figures.target_vertices = even_target;
     }
+    if (lifted.folded_lifts > 0) drop_folded_boundary_faces(surface.surface, lifted);
     refuse_unclosed(surface, lifted, part);
     out.target_vertices += figures.target_vertices;
     append_part(lifted, part, out);
