@@ -186,11 +186,45 @@ int local_degree_at(const MappedSurface &surface, const SurfacePoint &point,
   return 0;
 }
 
-// Two cuts on the boundary a hair apart (two sides from one lift leave the surface near one point)
-// make a sliver: where a face's side between two boundary vertices is under a tenth of its longest
-// side, the two become one (the face goes), if they share no neighbour but that face's third
-// corner (so the surface stays a manifold).
-void join_near_stops(LiftedSphere &out) {
+} // namespace
+
+bool lifted_face_folds(const MappedSurface &surface, const LiftedSphere &lifted,
+                       const std::array<int, 3> &face) {
+  const Eigen::Vector3d &p = lifted.positions[face[0]], &q = lifted.positions[face[1]],
+                        &r = lifted.positions[face[2]];
+  Eigen::Vector3d reference = Eigen::Vector3d::Zero();
+  for (int corner : face)
+    reference += surface_normal_at(surface, lifted.surface_point[corner]);
+  return (q - p).cross(r - p).dot(reference) < 0;
+}
+
+double corner_angle(const Eigen::Vector3d &at, const Eigen::Vector3d &to,
+                    const Eigen::Vector3d &from) {
+  const Eigen::Vector3d u = to - at, v = from - at;
+  return std::atan2(u.cross(v).norm(), u.dot(v));
+}
+
+double smallest_corner_angle(const LiftedSphere &lifted, const std::array<int, 3> &face) {
+  double smallest = M_PI;
+  for (int k = 0; k < 3; ++k)
+    smallest = std::min(smallest,
+                        corner_angle(lifted.positions[face[k]], lifted.positions[face[(k + 1) % 3]],
+                                     lifted.positions[face[(k + 2) % 3]]));
+  return smallest;
+}
+
+bool positive_on_sphere(const LiftedSphere &lifted, const std::array<int, 3> &face) {
+  return lifted.sphere[face[0]].dot(lifted.sphere[face[1]].cross(lifted.sphere[face[2]])) > 0;
+}
+
+int count_folded_lifts(const MappedSurface &surface, const LiftedSphere &lifted) {
+  int folded = 0;
+  for (const auto &face : lifted.faces)
+    folded += lifted_face_folds(surface, lifted, face);
+  return folded;
+}
+
+void join_near_boundary_vertices(LiftedSphere &out) {
   std::vector<std::set<int>> around(out.positions.size());
   for (const auto &face : out.faces)
     for (int k = 0; k < 3; ++k) {
@@ -228,44 +262,6 @@ void join_near_stops(LiftedSphere &out) {
     if (face[0] != face[1] && face[1] != face[2] && face[2] != face[0]) kept.push_back(face);
   }
   out.faces = std::move(kept);
-}
-
-} // namespace
-
-bool lifted_face_folds(const MappedSurface &surface, const LiftedSphere &lifted,
-                       const std::array<int, 3> &face) {
-  const Eigen::Vector3d &p = lifted.positions[face[0]], &q = lifted.positions[face[1]],
-                        &r = lifted.positions[face[2]];
-  Eigen::Vector3d reference = Eigen::Vector3d::Zero();
-  for (int corner : face)
-    reference += surface_normal_at(surface, lifted.surface_point[corner]);
-  return (q - p).cross(r - p).dot(reference) < 0;
-}
-
-double corner_angle(const Eigen::Vector3d &at, const Eigen::Vector3d &to,
-                    const Eigen::Vector3d &from) {
-  const Eigen::Vector3d u = to - at, v = from - at;
-  return std::atan2(u.cross(v).norm(), u.dot(v));
-}
-
-double smallest_corner_angle(const LiftedSphere &lifted, const std::array<int, 3> &face) {
-  double smallest = M_PI;
-  for (int k = 0; k < 3; ++k)
-    smallest = std::min(smallest,
-                        corner_angle(lifted.positions[face[k]], lifted.positions[face[(k + 1) % 3]],
-                                     lifted.positions[face[(k + 2) % 3]]));
-  return smallest;
-}
-
-bool positive_on_sphere(const LiftedSphere &lifted, const std::array<int, 3> &face) {
-  return lifted.sphere[face[0]].dot(lifted.sphere[face[1]].cross(lifted.sphere[face[2]])) > 0;
-}
-
-int count_folded_lifts(const MappedSurface &surface, const LiftedSphere &lifted) {
-  int folded = 0;
-  for (const auto &face : lifted.faces)
-    folded += lifted_face_folds(surface, lifted, face);
-  return folded;
 }
 
 int drop_folded_boundary_faces(const MappedSurface &surface, LiftedSphere &lifted) {
@@ -413,7 +409,8 @@ LiftedSphere lift_sphere(const MappedSurface &surface, const std::vector<int> &f
     }
     out.unlifted_faces += std::max(0, degree - copies);
   }
-  join_near_stops(out);
+  for (int pass = 0; pass < 3; ++pass)
+    join_near_boundary_vertices(out);
   out.folded_lifts = count_folded_lifts(surface, out);
   progress.report(1.0, "lifted");
   return out;

@@ -63,6 +63,11 @@ bool positive_on_sphere(const LiftedSphere &lifted, const std::array<int, 3> &fa
 // Lifted faces whose normal points against the surface's normals at their corners' points.
 int count_folded_lifts(const MappedSurface &surface, const LiftedSphere &lifted);
 
+// Two boundary vertices a hair apart make a sliver: where a face's side between two boundary
+// vertices is under a tenth of its longest side, the two become one (the face goes), if they
+// share no neighbour but that face's third corner (the surface stays a manifold). One pass.
+void join_near_boundary_vertices(LiftedSphere &lifted);
+
 // Folded faces along a hole's boundary (a side on no other face, the corner across it on a
 // closed fan of faces, so the surface stays a manifold) are taken out, pass by pass; returns how
 // many. Where the boundary bends between two cuts, the face between them can turn over.

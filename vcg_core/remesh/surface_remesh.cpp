@@ -363,6 +363,8 @@ void remesh_through_sphere(const Mesh &input, const Parameterization &map,
       }
       figures.target_vertices = even_target;
     }
+    for (int pass = 0; pass < 3; ++pass)
+      join_near_boundary_vertices(lifted);
     if (lifted.folded_lifts > 0) drop_folded_boundary_faces(surface.surface, lifted);
     refuse_unclosed(surface, lifted, part);
     out.target_vertices += figures.target_vertices;
