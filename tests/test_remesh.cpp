@@ -253,6 +253,26 @@ TEST(Remesh, GeneratedGenusThreeSurfacesWithNeedlesMeetEveryBar) {
   expect_good_generated_remesh(3, {"--raw-marching-cubes"});
 }
 
+// Genus 8 with needles (14 sheets): a sphere face whose side lifts did not close (a walk passing a
+// branch point a rounding apart) was refused; the sphere is refined there and lifted again, and
+// the remesh closes with the genus kept.
+TEST(Remesh, AGeneratedGenusEightSurfaceWithNeedlesCloses) {
+  test::TempDir dir;
+  const std::string input = dir.path("genus8.off"), output = dir.path("remeshed.ply");
+  ASSERT_EQ(test::run_cli(
+                {"make", "genus", "-g", "8", "--resolution", "24", "--needles", "0.2", "-o", input})
+                .exit_code,
+            0);
+  const auto run = test::run_cli({"remesh", input, "-o", output, "--quiet"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const RemeshFigures figures = judge_remesh(input, output);
+  EXPECT_EQ(figures.euler, 2 - 2 * 8);
+  EXPECT_EQ(figures.boundary_sides, 0);
+  EXPECT_EQ(figures.nonmanifold_sides, 0);
+  EXPECT_EQ(figures.nonmanifold_vertices, 0);
+  EXPECT_EQ(figures.misoriented_sides, 0);
+}
+
 // Genus 5 (eight sheets, sixteen branch points): every bar.
 TEST(Remesh, AGeneratedGenusFiveSurfaceMeetsEveryBar) {
   expect_good_generated_remesh(5);

@@ -95,10 +95,12 @@ bool holds(const GeodesicSphere &sphere, const std::array<int, 3> &face, const E
 // sphere) while that side is longer than a third of the value's distance to the other; a
 // neighbour with one side split is halved, one with more is split too. The sphere mesh grades
 // down to the pair in a few faces per halving, so each value gets a vertex of its own nearby
-// instead of slivers between two values a hair apart. Returns, per vertex, whether refinement
+// instead of slivers between two values a hair apart. Points in `refine_at` get the same, down
+// to an eighth of the longest side. Returns, per vertex, whether refinement
 // made or changed faces around it.
 std::vector<char> refine_around_close_values(GeodesicSphere &sphere,
-                                             const std::vector<Eigen::Vector3d> &values) {
+                                             const std::vector<Eigen::Vector3d> &values,
+                                             const std::vector<Eigen::Vector3d> &refine_at) {
   std::vector<char> touched(sphere.vertices.size(), 0);
   double edge = 0;
   for (const auto &face : sphere.faces)
@@ -111,6 +113,8 @@ std::vector<char> refine_around_close_values(GeodesicSphere &sphere,
     if (separation < std::min(edge, 0.05))
       close.push_back({values[a], std::max(separation / 3, 1e-9)});
   }
+  for (const Eigen::Vector3d &point : refine_at)
+    close.push_back({point.normalized(), edge / 8});
   if (close.empty()) return touched;
   auto longest_side = [&](const std::array<int, 3> &face) {
     double longest = 0;
@@ -282,7 +286,8 @@ void split_edges_between_branch_values(GeodesicSphere &sphere) {
 
 } // namespace
 
-GeodesicSphere geodesic_sphere(int frequency, const std::vector<Eigen::Vector3d> &branch_values) {
+GeodesicSphere geodesic_sphere(int frequency, const std::vector<Eigen::Vector3d> &branch_values,
+                               const std::vector<Eigen::Vector3d> &refine_at) {
   GeodesicSphere out;
   out.frequency = std::max(1, frequency);
   const int k = out.frequency;
@@ -304,7 +309,7 @@ GeodesicSphere geodesic_sphere(int frequency, const std::vector<Eigen::Vector3d>
       seen |= (other - value).norm() < 1e-12;
     if (!seen) distinct.push_back(value.normalized());
   }
-  std::vector<char> touched = refine_around_close_values(out, distinct);
+  std::vector<char> touched = refine_around_close_values(out, distinct, refine_at);
   out.branch_value.assign(out.vertices.size(), -1);
   for (size_t b = 0; b < distinct.size(); ++b) {
     const int vertex = put_on_vertex(out, distinct[b], int(b));

@@ -30,7 +30,10 @@ struct GeodesicSphere {
   std::vector<std::vector<int>> neighbours;
 };
 
-GeodesicSphere geodesic_sphere(int frequency, const std::vector<Eigen::Vector3d> &branch_values);
+// `refine_at`: points around which the sphere is refined as around close values, down to an
+// eighth of its longest side (where a lift did not close).
+GeodesicSphere geodesic_sphere(int frequency, const std::vector<Eigen::Vector3d> &branch_values,
+                               const std::vector<Eigen::Vector3d> &refine_at = {});
 
 // The frequency whose sphere, taken `sheets` times less `ramification` vertices, comes nearest
 // to `vertices` vertices (at least 1).

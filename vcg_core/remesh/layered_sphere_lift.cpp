@@ -358,6 +358,8 @@ LiftedSphere lift_sphere(const MappedSurface &surface, const std::vector<int> &f
     if (j >= 0 && k >= 0) {
       if (sphere.branch_value[x1] < 0 && lifting.reached(x1, x2, j) != k) {
         ++out.unclosed_faces;
+        out.unclosed_at.push_back(
+            (sphere.vertices[x0] + sphere.vertices[x1] + sphere.vertices[x2]).normalized());
         return true;
       }
       out.faces.push_back({l0, first[x1] + j, first[x2] + k});

@@ -41,6 +41,7 @@ struct LiftedSphere {
   std::vector<char> on_boundary;
   std::vector<std::array<int, 3>> faces;
   int unlifted_faces = 0, unclosed_faces = 0, folded_lifts = 0;
+  std::vector<Eigen::Vector3d> unclosed_at; // the sphere faces' centres
 };
 
 LiftedSphere lift_sphere(const MappedSurface &surface, const std::vector<int> &face_layer,

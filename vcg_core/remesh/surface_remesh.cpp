@@ -109,11 +109,19 @@ LiftedSphere lift_part(const PartSurface &surface, RemeshPart &figures, const Pr
     return lift_flat_torus(surface.surface, surface.flat, surface.flat_periods, surface.face_layer,
                            surface.local_degree, figures.target_vertices);
   }
-  const GeodesicSphere sphere = geodesic_sphere(figures.frequency, surface.branch_values);
-  figures.target_vertices =
-      (long long)figures.degree * (long long)sphere.vertices.size() - figures.ramification;
-  return lift_sphere(surface.surface, surface.face_layer, surface.local_degree, figures.degree,
-                     sphere, progress);
+  // Where the lifts of a face's sides do not close (a walk passing a branch point a rounding
+  // apart), the sphere is refined there and lifted again, twice at most.
+  std::vector<Eigen::Vector3d> refine_at;
+  for (int attempt = 0;; ++attempt) {
+    const GeodesicSphere sphere =
+        geodesic_sphere(figures.frequency, surface.branch_values, refine_at);
+    figures.target_vertices =
+        (long long)figures.degree * (long long)sphere.vertices.size() - figures.ramification;
+    LiftedSphere lifted = lift_sphere(surface.surface, surface.face_layer, surface.local_degree,
+                                      figures.degree, sphere, progress);
+    if (lifted.unclosed_at.empty() || attempt == 2) return lifted;
+    refine_at.insert(refine_at.end(), lifted.unclosed_at.begin(), lifted.unclosed_at.end());
+  }
 }
 
 double surface_area(const MappedSurface &surface) {
