@@ -224,7 +224,10 @@ int count_folded_lifts(const MappedSurface &surface, const LiftedSphere &lifted)
   return folded;
 }
 
-void join_near_boundary_vertices(LiftedSphere &out) {
+namespace {
+
+// One pass of join_near_boundary_vertices; returns whether anything was joined.
+bool join_near_boundary_vertices_once(LiftedSphere &out) {
   std::vector<std::set<int>> around(out.positions.size());
   for (const auto &face : out.faces)
     for (int k = 0; k < 3; ++k) {
@@ -255,6 +258,8 @@ void join_near_boundary_vertices(LiftedSphere &out) {
       break;
     }
   }
+  if (std::find_if(into.begin(), into.end(), [](int v) { return v >= 0; }) == into.end())
+    return false;
   std::vector<std::array<int, 3>> kept;
   for (auto face : out.faces) {
     for (int &corner : face)
@@ -262,6 +267,22 @@ void join_near_boundary_vertices(LiftedSphere &out) {
     if (face[0] != face[1] && face[1] != face[2] && face[2] != face[0]) kept.push_back(face);
   }
   out.faces = std::move(kept);
+  return true;
+}
+
+} // namespace
+
+void join_near_boundary_vertices(const MappedSurface &surface, LiftedSphere &lifted) {
+  if (std::find(lifted.on_boundary.begin(), lifted.on_boundary.end(), 1) ==
+      lifted.on_boundary.end())
+    return;
+  bool joined = false;
+  for (int pass = 0; pass < 3; ++pass)
+    if (join_near_boundary_vertices_once(lifted))
+      joined = true;
+    else
+      break;
+  if (joined) lifted.folded_lifts = count_folded_lifts(surface, lifted);
 }
 
 int drop_folded_boundary_faces(const MappedSurface &surface, LiftedSphere &lifted) {
@@ -411,9 +432,8 @@ LiftedSphere lift_sphere(const MappedSurface &surface, const std::vector<int> &f
     }
     out.unlifted_faces += std::max(0, degree - copies);
   }
-  for (int pass = 0; pass < 3; ++pass)
-    join_near_boundary_vertices(out);
   out.folded_lifts = count_folded_lifts(surface, out);
+  join_near_boundary_vertices(surface, out);
   progress.report(1.0, "lifted");
   return out;
 }

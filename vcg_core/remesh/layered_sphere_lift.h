@@ -66,8 +66,9 @@ int count_folded_lifts(const MappedSurface &surface, const LiftedSphere &lifted)
 
 // Two boundary vertices a hair apart make a sliver: where a face's side between two boundary
 // vertices is under a tenth of its longest side, the two become one (the face goes), if they
-// share no neighbour but that face's third corner (the surface stays a manifold). One pass.
-void join_near_boundary_vertices(LiftedSphere &lifted);
+// share no neighbour but that face's third corner (the surface stays a manifold). Up to three
+// passes; folded lifts recounted when anything was joined. Nothing to do without a boundary.
+void join_near_boundary_vertices(const MappedSurface &surface, LiftedSphere &lifted);
 
 // Folded faces along a hole's boundary (a side on no other face, the corner across it on a
 // closed fan of faces, so the surface stays a manifold) are taken out, pass by pass; returns how

@@ -341,11 +341,14 @@ void remesh_through_sphere(const Mesh &input, const Parameterization &map,
         options.resolution >= 0
             ? 1 << options.resolution
             : frequency_for_vertices(part_target, figures.degree, figures.ramification);
-    LiftedSphere lifted = lift_part(surface, figures, step.range(0.0, 0.5));
+    // Genus 1 evened out to a vertex target samples its flat torus to that target below.
+    const bool flat_to_target = !surface.flat.empty() && options.even_out && options.resolution < 0;
+    LiftedSphere lifted;
+    if (!flat_to_target) lifted = lift_part(surface, figures, step.range(0.0, 0.5));
     if (options.even_out) {
       const long long even_target = options.resolution >= 0 ? figures.target_vertices : part_target;
       const double face_area = surface_area(surface.surface) / (2.0 * double(even_target));
-      if (!surface.flat.empty() && options.resolution < 0) {
+      if (flat_to_target) {
         lifted = flat_torus_to_target(surface, face_area, even_target);
       } else if (options.resolution < 0) {
         const int frequency =
@@ -371,8 +374,7 @@ void remesh_through_sphere(const Mesh &input, const Parameterization &map,
       }
       figures.target_vertices = even_target;
     }
-    for (int pass = 0; pass < 3; ++pass)
-      join_near_boundary_vertices(lifted);
+    join_near_boundary_vertices(surface.surface, lifted);
     if (lifted.folded_lifts > 0) drop_folded_boundary_faces(surface.surface, lifted);
     refuse_unclosed(surface, lifted, part);
     out.target_vertices += figures.target_vertices;
