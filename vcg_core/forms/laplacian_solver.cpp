@@ -4,6 +4,7 @@
 #include <Eigen/SparseCholesky>
 
 #include "common/errors.h"
+#include "common/serial_openmp.h"
 
 namespace meromorph {
 
@@ -62,6 +63,7 @@ public:
       : numbering_(free_numbering(int(laplacian.rows()), pinned)),
         free_count_(int(laplacian.rows()) - int(pinned.size())) {
     configure(factorization_);
+    const SerialOpenMP one_thread; // serial_openmp.h: CHOLMOD's fixed four threads per supernode
     factorization_.compute(restricted(laplacian, numbering_, free_count_));
     if (factorization_.info() != Eigen::Success)
       // Validation has accepted the mesh (connected, no degenerate faces): what is left is
