@@ -57,7 +57,9 @@ void finish_on_sphere(const PreparedMesh &prepared, bool mobius, const Genus1Map
     for (size_t v = 0; v < values.size(); ++v)
       out.sphere[v] = to_sphere(values[v]);
   }
-  if (out.untangled_vertices || mobius) out.branching = analyse_branching(mesh, out.sphere, euler);
+  // Measured again only where vertices moved after the first measurement.
+  if (out.untangled_vertices || (mobius && out.snapped_branch_points))
+    out.branching = analyse_branching(mesh, out.sphere, euler);
 }
 
 WrittenSphere written_genus1_map(const PreparedMesh &prepared, const HolomorphicForms &forms,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/parallel_for.h"
 #include "sphere/sphere_geometry.h"
 
 namespace meromorph {
@@ -10,12 +11,12 @@ namespace meromorph {
 std::vector<double> face_solid_angles(const Mesh &mesh,
                                       const std::vector<Eigen::Vector3d> &sphere) {
   std::vector<double> angles(mesh.face.size());
-  for (size_t f = 0; f < mesh.face.size(); ++f) {
+  parallel_for(mesh.face.size(), [&](size_t f) {
     const MeshFace &face = mesh.face[f];
     angles[f] =
         signed_solid_angle(sphere[index_of(mesh, face.cV(0))], sphere[index_of(mesh, face.cV(1))],
                            sphere[index_of(mesh, face.cV(2))]);
-  }
+  });
   return angles;
 }
 
@@ -55,15 +56,20 @@ int vertex_winding(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &
 Branching analyse_branching(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere, int euler,
                             const std::vector<Eigen::Vector3d> &side_midpoints) {
   Branching out;
-  // Winding: each face (v, a, b) adds the angle from a to b around v's image.
-  std::vector<double> winding(mesh.vert.size(), 0.0);
-  for (size_t f = 0; f < mesh.face.size(); ++f) {
+  // Winding: each face (v, a, b) adds the angle from a to b around v's image. The angles are
+  // measured over the cores and summed per vertex in face order.
+  std::vector<std::array<double, 3>> sweeps(mesh.face.size());
+  parallel_for(mesh.face.size(), [&](size_t f) {
     const MeshFace &face = mesh.face[f];
     const std::array<int, 3> corners{index_of(mesh, face.cV(0)), index_of(mesh, face.cV(1)),
                                      index_of(mesh, face.cV(2))};
     for (int k = 0; k < 3; ++k)
-      winding[corners[k]] += corner_sweep(sphere, corners, k, side_midpoints, int(f));
-  }
+      sweeps[f][size_t(k)] = corner_sweep(sphere, corners, k, side_midpoints, int(f));
+  });
+  std::vector<double> winding(mesh.vert.size(), 0.0);
+  for (size_t f = 0; f < mesh.face.size(); ++f)
+    for (int k = 0; k < 3; ++k)
+      winding[size_t(index_of(mesh, mesh.face[f].cV(k)))] += sweeps[f][size_t(k)];
   out.local_degree.resize(mesh.vert.size());
   for (size_t v = 0; v < mesh.vert.size(); ++v) {
     const int e = int(std::lround(winding[v] / (2 * M_PI)));

@@ -5,6 +5,7 @@
 
 #include <Eigen/Dense>
 
+#include "common/parallel_for.h"
 #include "sphere/sphere_geometry.h"
 
 namespace meromorph {
@@ -28,6 +29,16 @@ Eigen::Matrix2d frame_edges(const Eigen::Vector3d &a, const Eigen::Vector3d &b,
   return edges;
 }
 
+// The singular values of a 2 x 2 matrix, largest first, in closed form: M = (E + F, G + H; ...)
+// splits into a similarity (E, H) and an anti-similarity (F, G); the values are the sum and the
+// difference of their scales.
+std::array<double, 2> singular_values(const Eigen::Matrix2d &m) {
+  const double e = (m(0, 0) + m(1, 1)) / 2, f = (m(0, 0) - m(1, 1)) / 2;
+  const double g = (m(1, 0) + m(0, 1)) / 2, h = (m(1, 0) - m(0, 1)) / 2;
+  const double q = std::hypot(e, h), r = std::hypot(f, g);
+  return {q + r, std::abs(q - r)};
+}
+
 double angle(const Eigen::Vector3d &at, const Eigen::Vector3d &p, const Eigen::Vector3d &q) {
   const Eigen::Vector3d u = p - at, v = q - at;
   return std::atan2(u.cross(v).norm(), u.dot(v));
@@ -38,6 +49,7 @@ QualityStatistics summarize(std::vector<FaceMeasure> measures) {
   s.faces = int(measures.size());
   if (measures.empty()) return s;
   std::vector<double> ratios;
+  ratios.reserve(measures.size());
   for (const FaceMeasure &m : measures) {
     ratios.push_back(m.quasi_conformal);
     s.quasi_conformal_mean += m.quasi_conformal;
@@ -47,9 +59,10 @@ QualityStatistics summarize(std::vector<FaceMeasure> measures) {
   }
   s.quasi_conformal_mean /= double(measures.size());
   s.angle_error_mean_degrees /= double(measures.size());
-  std::sort(ratios.begin(), ratios.end());
-  s.quasi_conformal_p95 = ratios[size_t(0.95 * double(ratios.size() - 1))];
-  s.quasi_conformal_max = ratios.back();
+  s.quasi_conformal_max = *std::max_element(ratios.begin(), ratios.end());
+  const auto p95 = ratios.begin() + long(0.95 * double(ratios.size() - 1));
+  std::nth_element(ratios.begin(), p95, ratios.end());
+  s.quasi_conformal_p95 = *p95;
   return s;
 }
 
@@ -74,32 +87,32 @@ MapQuality measure_map_quality(const Mesh &mesh, const std::vector<Eigen::Vector
   std::vector<char> near_branch(mesh.vert.size(), 0);
   for (int v : branch_vertices)
     near_branch[v] = 1;
-  std::vector<FaceMeasure> all, away;
+  std::vector<FaceMeasure> all(mesh.face.size()), away;
+  std::vector<char> touches_branch(mesh.face.size(), 0);
   std::vector<int> folded, collapsed;
-  all.reserve(mesh.face.size());
-  for (size_t f = 0; f < mesh.face.size(); ++f) {
+  parallel_for(mesh.face.size(), [&](size_t f) {
     const MeshFace &face = mesh.face[f];
     Eigen::Vector3d p[3], s[3];
-    bool touches_branch = false;
     for (int k = 0; k < 3; ++k) {
       p[k] = face.cP(k).ToEigenVector<Eigen::Vector3d>();
       const int v = index_of(mesh, face.cV(k));
       s[k] = sphere[v];
-      touches_branch |= near_branch[v] != 0;
+      touches_branch[f] |= near_branch[v];
     }
     FaceMeasure m{1.0, 0.0, folded_image(s[0], s[1], s[2]), collapsed_image(s[0], s[1], s[2])};
     const Eigen::Matrix2d source = frame_edges(p[0], p[1], p[2]);
     const Eigen::Matrix2d image = frame_edges(s[0], s[1], s[2]);
-    const Eigen::JacobiSVD<Eigen::Matrix2d> svd(image * source.inverse());
-    const double smallest = svd.singularValues()[1];
-    m.quasi_conformal =
-        smallest > 0 ? svd.singularValues()[0] / smallest : std::numeric_limits<double>::infinity();
+    const std::array<double, 2> stretch = singular_values(image * source.inverse());
+    m.quasi_conformal = stretch[1] > 0 ? stretch[0] / stretch[1] : 1e300;
     if (!std::isfinite(m.quasi_conformal)) m.quasi_conformal = 1e300;
     m.angle_error_degrees = face_angle_error_degrees(mesh, sphere, int(f));
-    if (m.folded) folded.push_back(int(f));
-    if (m.collapsed) collapsed.push_back(int(f));
-    all.push_back(m);
-    if (!touches_branch) away.push_back(m);
+    all[f] = m;
+  });
+  away.reserve(all.size());
+  for (size_t f = 0; f < all.size(); ++f) {
+    if (all[f].folded) folded.push_back(int(f));
+    if (all[f].collapsed) collapsed.push_back(int(f));
+    if (!touches_branch[f]) away.push_back(all[f]);
   }
   return {summarize(all), summarize(away), std::move(folded), std::move(collapsed)};
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/parallel_for.h"
 #include "sphere/sphere_geometry.h"
 
 namespace meromorph {
@@ -30,18 +31,18 @@ std::array<double, 2> texture_coordinate(const Eigen::Vector3d &p, UvKind kind) 
 TextureCoordinates texture_coordinates(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere,
                                        UvKind kind) {
   TextureCoordinates out;
-  out.vertex.reserve(sphere.size());
-  for (const Eigen::Vector3d &p : sphere)
-    out.vertex.push_back(texture_coordinate(p, kind));
+  out.vertex.resize(sphere.size());
+  parallel_for(sphere.size(),
+               [&](size_t v) { out.vertex[v] = texture_coordinate(sphere[v], kind); });
   out.wedge.resize(mesh.face.size());
   out.around_pole.assign(mesh.face.size(), 0);
-  for (size_t f = 0; f < mesh.face.size(); ++f) {
+  parallel_for(mesh.face.size(), [&](size_t f) {
     int corner_vertex[3];
     for (int k = 0; k < 3; ++k) {
       corner_vertex[k] = index_of(mesh, mesh.face[f].cV(k));
       out.wedge[f][k] = out.vertex[corner_vertex[k]];
     }
-    if (kind != UvKind::spherical) continue;
+    if (kind != UvKind::spherical) return;
     const Eigen::Vector3d &a = sphere[corner_vertex[0]], &b = sphere[corner_vertex[1]],
                           &c = sphere[corner_vertex[2]];
     for (const Eigen::Vector3d &pole : {Eigen::Vector3d(0, 0, 1), Eigen::Vector3d(0, 0, -1)})
@@ -69,7 +70,7 @@ TextureCoordinates texture_coordinates(const Mesh &mesh, const std::vector<Eigen
       }
     for (int k = 0; k < 3; ++k)
       if (at_pole(sphere[corner_vertex[k]]) && count) w[k][0] = sum / count;
-  }
+  });
   return out;
 }
 
