@@ -37,13 +37,14 @@ std::vector<std::string> invalid_reasons(const ParameterizeOptions &options,
   return reasons;
 }
 
-std::vector<Advice> invalid_map_advice(const Mesh &input, const Mesh &mesh,
+std::vector<Advice> invalid_map_advice(const std::vector<Point3> &input_positions, const Mesh &mesh,
                                        const ParameterizeOptions &options,
                                        const Parameterization &map) {
   std::vector<Advice> advice;
   const std::vector<int> &collapsed = map.quality.collapsed_face_indices;
   if (!collapsed.empty()) {
-    const Point3 &at = input.face[size_t(collapsed.front())].cP(0);
+    const Point3 &at =
+        input_positions[size_t(index_of(mesh, mesh.face[size_t(collapsed.front())].cV(0)))];
     std::ostringstream where;
     where << " (faces " << list_indices(collapsed) << "; the first at " << at[0] << ", " << at[1]
           << ", " << at[2] << ")";

@@ -34,16 +34,17 @@ void adopt(WrittenSphere &&written, Parameterization &out, Branching &branching)
 
 // Branch points, sheets and layers, texture coordinates, distortion and validity of the map as
 // written.
-void describe_written_map(const Mesh &input, const Mesh &mesh, const MeshEdges &edges,
-                          const ParameterizeOptions &options, const Branching &branching,
-                          Parameterization &out, const Progress &progress, StageClock &clock) {
+void describe_written_map(const std::vector<Point3> &input_positions, const Mesh &mesh,
+                          const MeshEdges &edges, const ParameterizeOptions &options,
+                          const Branching &branching, Parameterization &out,
+                          const Progress &progress, StageClock &clock) {
   out.degree = branching.degree;
   out.area_over_4pi = branching.area_over_4pi;
   out.ramification = branching.ramification;
   out.riemann_hurwitz_ok = branching.riemann_hurwitz_ok;
   out.branch_flag.assign(mesh.vert.size(), 0);
   for (int v : branching.branch_vertices) {
-    out.branch_points.push_back({v, input.vert[v].cP().ToEigenVector<Eigen::Vector3d>(),
+    out.branch_points.push_back({v, input_positions[size_t(v)].ToEigenVector<Eigen::Vector3d>(),
                                  out.sphere[v], branching.local_degree[v]});
     out.branch_flag[v] = branching.local_degree[v];
   }
@@ -58,20 +59,20 @@ void describe_written_map(const Mesh &input, const Mesh &mesh, const MeshEdges &
   out.quality = measure_map_quality(mesh, out.sphere, branching.branch_vertices);
   out.invalid = invalid_reasons(options, out);
   out.valid = out.invalid.empty();
-  if (!out.valid) out.advice = invalid_map_advice(input, mesh, options, out);
+  if (!out.valid) out.advice = invalid_map_advice(input_positions, mesh, options, out);
   clock.done("texture_and_quality");
 }
 
 } // namespace
 
-Parameterization parameterize(const Mesh &input, const ParameterizeOptions &options,
+Parameterization parameterize(Mesh &mesh, const ParameterizeOptions &options,
                               const Progress &progress, const Validation *validated) {
   // The mesh is validated once: by the caller, or by compute_holomorphic_forms below.
   if (!(options.layer_gap >= 0 && options.layer_gap <= 1e6))
     throw ArgumentError("the layer gap must be a number from 0 to 1e6");
-  // Everything is computed at unit scale (unit_scale.h); positions reported are the input's.
-  Mesh mesh;
-  copy_at_unit_scale(input, unit_scale_of(input), mesh);
+  // Everything is computed at unit scale (unit_scale.h): the mesh itself is moved there and put
+  // back when this returns or throws; positions reported are the input's.
+  const UnitScaleInPlace unit(mesh);
   const Validation validation = validated ? *validated : validate_mesh(mesh);
   if (!validation.ok()) throw refusal(validation.main_finding());
 
@@ -141,7 +142,8 @@ Parameterization parameterize(const Mesh &input, const ParameterizeOptions &opti
     }
     clock.done("area_correction");
   }
-  describe_written_map(input, mesh, prepared.edges, options, branching, out, progress, clock);
+  describe_written_map(unit.originals(), mesh, prepared.edges, options, branching, out, progress,
+                       clock);
   progress.report(1.0, "done");
   return out;
 }

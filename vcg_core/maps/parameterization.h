@@ -144,8 +144,10 @@ struct Parameterization {
 
 struct Validation;
 
-// `validated`: the mesh's validation when the caller has made it (and it found nothing).
-Parameterization parameterize(const Mesh &mesh, const ParameterizeOptions &options = {},
+// `validated`: the mesh's validation when the caller has made it (and it found nothing). The
+// mesh's vertices are moved to unit scale for the computation and put back exactly as they were
+// (mesh/unit_scale.h): no copy of the mesh is made.
+Parameterization parameterize(Mesh &mesh, const ParameterizeOptions &options = {},
                               const Progress &progress = {}, const Validation *validated = nullptr);
 
 } // namespace meromorph

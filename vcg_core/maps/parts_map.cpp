@@ -154,9 +154,9 @@ int texture_grid_cells(size_t part_count) {
   return int(std::ceil(std::sqrt(double(part_count) - 0.5)));
 }
 
-Parameterization parameterize_parts(const Mesh &mesh, const Validation &validation,
+Parameterization parameterize_parts(Mesh &mesh, const Validation &validation,
                                     const ParameterizeOptions &options, const Progress &progress) {
-  const SurfaceParts split = split_into_closed_parts(mesh, options.close_holes);
+  SurfaceParts split = split_into_closed_parts(mesh, options.close_holes);
   const size_t part_count = split.parts.size();
   Parameterization out;
   out.notes = validation.notes;
@@ -182,7 +182,7 @@ Parameterization parameterize_parts(const Mesh &mesh, const Validation &validati
   int highest_layer = 0;
 
   for (size_t p = 0; p < part_count; ++p) {
-    const SurfacePart &part = split.parts[p];
+    SurfacePart &part = split.parts[p];
     const std::string name = "part " + std::to_string(p + 1) + " of " + std::to_string(part_count);
     Parameterization map = [&] {
       try {
@@ -211,12 +211,11 @@ Parameterization parameterize_parts(const Mesh &mesh, const Validation &validati
     out.timings_ms.push_back({stage, ms});
 
   // Distortion on the mesh's faces, as written (at unit scale: angles do not depend on it).
-  Mesh unit;
-  copy_at_unit_scale(mesh, unit_scale_of(mesh), unit);
+  const UnitScaleInPlace unit(mesh);
   std::vector<int> branch_vertices;
   for (const BranchPoint &b : out.branch_points)
     branch_vertices.push_back(b.vertex);
-  out.quality = measure_map_quality(unit, out.sphere, branch_vertices);
+  out.quality = measure_map_quality(mesh, out.sphere, branch_vertices);
   return out;
 }
 

@@ -22,7 +22,8 @@ namespace meromorph {
 // The side of the square grid whose cells hold `part_count` parts' packed texture coordinates.
 int texture_grid_cells(size_t part_count);
 
-Parameterization parameterize_parts(const Mesh &mesh, const Validation &validation,
+// The mesh is moved to unit scale for the distortion's measurement and put back exactly.
+Parameterization parameterize_parts(Mesh &mesh, const Validation &validation,
                                     const ParameterizeOptions &options, const Progress &progress);
 
 } // namespace meromorph

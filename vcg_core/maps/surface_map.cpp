@@ -94,7 +94,7 @@ FindingHandling finding_handling(const Finding &finding) {
   }
 }
 
-Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptions &options,
+Parameterization parameterize_surface(Mesh &input, const ParameterizeOptions &options,
                                       const Progress &progress) {
   if (options.pack_uv && options.uv != UvKind::spherical)
     throw ArgumentError("packing the parts' texture coordinates (each part's in its own cell of "
@@ -112,7 +112,7 @@ Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptio
     split_spots = split_nonmanifold(input, split_mesh);
     validation = validate_mesh(split_mesh);
   }
-  const Mesh &whole = split ? split_mesh : input;
+  Mesh &whole = split ? split_mesh : input;
   if (const Finding *left = finding_left(validation, options.close_holes))
     refuse(*left, nonmanifold, split, input, split_spots);
   // Zero-area faces taken out of the computation (they are kept in the outputs).
@@ -131,7 +131,7 @@ Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptio
       throw refusal(left, " (left after meromorph took out those it could)");
     }
   }
-  const Mesh &mesh = flat ? flat_free : whole;
+  Mesh &mesh = flat ? flat_free : whole;
   // The split copies sit on their originals by construction: of the notes, only the input's own.
   if (split)
     validation.notes.erase(std::remove_if(validation.notes.begin(), validation.notes.end(),

@@ -24,7 +24,8 @@
 
 namespace meromorph {
 
-Parameterization parameterize_surface(const Mesh &input, const ParameterizeOptions &options = {},
+// The input is computed on in place (parameterize: moved to unit scale and put back exactly).
+Parameterization parameterize_surface(Mesh &input, const ParameterizeOptions &options = {},
                                       const Progress &progress = {});
 
 // What parameterize_surface does with a finding of validation.h: maps the mesh as it is (several

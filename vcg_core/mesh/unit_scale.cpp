@@ -49,4 +49,18 @@ void copy_at_unit_scale(const Mesh &mesh, const UnitScale &scale, Mesh &unit) {
   mesh_from_arrays(arrays, unit);
 }
 
+UnitScaleInPlace::UnitScaleInPlace(Mesh &mesh) : mesh_(mesh) {
+  const UnitScale scale = unit_scale_of(mesh);
+  original_.reserve(mesh.vert.size());
+  for (MeshVertex &vertex : mesh.vert) {
+    original_.push_back(vertex.cP());
+    vertex.P() = scale.apply(vertex.cP());
+  }
+}
+
+UnitScaleInPlace::~UnitScaleInPlace() {
+  for (size_t v = 0; v < original_.size(); ++v)
+    mesh_.vert[v].P() = original_[v];
+}
+
 } // namespace meromorph

@@ -5,8 +5,13 @@
 //
 // In:  a mesh with finite coordinates (validation refuses any other).
 // Out: `UnitScale` (the centre and the power-of-two factor: unit = (input - centre) * factor,
-//      exact up to one rounding), and the copy with the same vertices and faces in the same order.
+//      exact up to one rounding), and the copy with the same vertices and faces in the same order;
+//      or, with `UnitScaleInPlace`, the mesh itself moved to unit scale for as long as the object
+//      lives and put back bit for bit after (its positions kept meanwhile: 24 bytes a vertex
+//      instead of a second mesh).
 #pragma once
+
+#include <vector>
 
 #include "mesh/mesh.h"
 
@@ -27,5 +32,20 @@ bool is_at_unit_scale(const Mesh &mesh);
 
 // `unit` becomes the vertices of `mesh` moved by `scale`, with the same faces in the same order.
 void copy_at_unit_scale(const Mesh &mesh, const UnitScale &scale, Mesh &unit);
+
+class UnitScaleInPlace {
+public:
+  explicit UnitScaleInPlace(Mesh &mesh);
+  ~UnitScaleInPlace();
+  UnitScaleInPlace(const UnitScaleInPlace &) = delete;
+  UnitScaleInPlace &operator=(const UnitScaleInPlace &) = delete;
+  // The position vertex v had before.
+  const Point3 &original(size_t v) const { return original_[v]; }
+  const std::vector<Point3> &originals() const { return original_; }
+
+private:
+  Mesh &mesh_;
+  std::vector<Point3> original_;
+};
 
 } // namespace meromorph
