@@ -140,7 +140,23 @@ Figures param_job(const std::string &path) {
   const auto start = std::chrono::steady_clock::now();
   Mesh mesh;
   out["read"] = milliseconds([&] { read_mesh(path, mesh); });
-  const Parameterization map = parameterize_surface(mesh);
+  // The longest time without a progress report (from the start, between reports, to the end):
+  // what a MeshLab or Blender user waits without the bar moving or a chance to cancel.
+  auto last_report = std::chrono::steady_clock::now();
+  double longest_silence = 0;
+  const auto note_silence = [&] {
+    const auto now = std::chrono::steady_clock::now();
+    longest_silence = std::max(
+        longest_silence, std::chrono::duration<double, std::milli>(now - last_report).count());
+    last_report = now;
+  };
+  const Parameterization map =
+      parameterize_surface(mesh, {}, Progress([&](double, const std::string &) {
+                             note_silence();
+                             return true;
+                           }));
+  note_silence();
+  out["silence"] = longest_silence;
   out["total"] =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   double staged = out["read"];
@@ -205,8 +221,9 @@ int main(int argc, char **argv) {
   std::printf("| mesh | vertices | genus |");
   for (const std::string &stage : stages)
     std::printf(" %s |", stage.c_str());
-  std::printf(" param | floor | ratio | factorization | degree | peak memory |\n|---|---|---|");
-  for (size_t i = 0; i < stages.size() + 6; ++i)
+  std::printf(" param | floor | ratio | factorization | degree | peak memory | longest silence "
+              "|\n|---|---|---|");
+  for (size_t i = 0; i < stages.size() + 7; ++i)
     std::printf("---|");
   std::printf("\n");
   std::map<int, std::vector<Figures>> by_genus;
@@ -237,9 +254,10 @@ int main(int argc, char **argv) {
                   param["vertices"], source.genus);
       for (const std::string &stage : stages)
         std::printf(" %.0f |", param[stage]);
-      std::printf(" %.0f ms | %.0f ms | %.1f | %.0f ms | %.0f%s | %.0f MB |\n", param["total"],
-                  floor.at("floor"), param["total"] / floor.at("floor"), floor.at("factorization"),
-                  param["degree"], param["valid"] ? "" : " (invalid)", param["peak_mb"]);
+      std::printf(" %.0f ms | %.0f ms | %.1f | %.0f ms | %.0f%s | %.0f MB | %.0f ms |\n",
+                  param["total"], floor.at("floor"), param["total"] / floor.at("floor"),
+                  floor.at("factorization"), param["degree"], param["valid"] ? "" : " (invalid)",
+                  param["peak_mb"], param["silence"]);
       param["floor"] = floor.at("floor");
       param["floor_factorization"] = floor.at("factorization");
       by_genus[source.genus].push_back(param);

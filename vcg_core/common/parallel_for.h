@@ -1,28 +1,56 @@
-// A loop over the machine's cores.
+// Loops over the machine's cores.
 //
-// In:  a count and a body taking an index. Out: body(i) has run for every i in [0, count), split
-//      into one contiguous block per core (OpenMP, static schedule: the same split on every run),
-//      or in order on one thread where the count is small or OpenMP is missing. The body must not
-//      throw and must write only what belongs to its own index; sums over the results are left
-//      to the caller, in index order, so that they come out the same on any number of cores.
+// In:  a count and a body. Out: `parallel_for`: body(i) has run for every i in [0, count), split
+//      into one contiguous block per core (OpenMP, static schedule), or in order on one thread
+//      where the count is small or OpenMP is missing. The body must not throw and must write only
+//      what belongs to its own index; sums over the results are left to the caller, in index
+//      order, so that they come out the same on any number of cores. `chunked_sum`: body(begin,
+//      end) returns the sum over one chunk of [0, count); the chunks (fixed, whatever the number
+//      of cores) run over the cores and their sums are added in chunk order: the same result on
+//      any machine, from one pass over the items however many sums each item feeds.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
+#include <vector>
 
 namespace meromorph {
 
 // Below this many items the threads' start costs more than the work.
 constexpr std::size_t parallel_threshold = 4096;
 
-template <class Body> void parallel_for(std::size_t count, const Body &body) {
+// `threshold`: the least count worth the threads (items of about a microsecond's work each by
+// default; chunks of many items want 2).
+template <class Body>
+void parallel_for(std::size_t count, const Body &body, std::size_t threshold = parallel_threshold) {
 #if defined(_OPENMP)
-#pragma omp parallel for schedule(static) if (count >= parallel_threshold)
+#pragma omp parallel for schedule(static) if (count >= threshold)
   for (long i = 0; i < long(count); ++i)
     body(std::size_t(i));
 #else
+  (void)threshold;
   for (std::size_t i = 0; i < count; ++i)
     body(i);
 #endif
+}
+
+// Items per chunk of chunked_sum.
+constexpr std::size_t sum_chunk = 8192;
+
+template <class Sum, class Body>
+Sum chunked_sum(std::size_t count, const Sum &zero, const Body &body) {
+  const std::size_t chunks = (count + sum_chunk - 1) / sum_chunk;
+  std::vector<Sum> partial(chunks, zero);
+  parallel_for(
+      chunks,
+      [&](std::size_t c) {
+        partial[c] = body(c * sum_chunk, std::min(count, (c + 1) * sum_chunk));
+      },
+      2);
+  Sum total = zero;
+  for (const Sum &part : partial)
+    total += part;
+  return total;
 }
 
 } // namespace meromorph

@@ -2,25 +2,9 @@
 
 #include <Eigen/Dense>
 
+#include "common/parallel_for.h"
+
 namespace meromorph {
-namespace {
-
-double l2_inner(const Eigen::MatrixX3d &a, const Eigen::MatrixX3d &b,
-                const FaceGeometry &geometry) {
-  double sum = 0;
-  for (long f = 0; f < a.rows(); ++f)
-    sum += geometry.areas[f] * a.row(f).dot(b.row(f));
-  return sum;
-}
-
-Eigen::MatrixX3d star(const Eigen::MatrixX3d &a, const FaceGeometry &geometry) {
-  Eigen::MatrixX3d rotated(a.rows(), 3);
-  for (long f = 0; f < a.rows(); ++f)
-    rotated.row(f) = geometry.normals[f].cross(Eigen::Vector3d(a.row(f)));
-  return rotated;
-}
-
-} // namespace
 
 Eigen::MatrixX3d combine(const std::vector<Eigen::MatrixX3d> &vectors,
                          const Eigen::VectorXd &coefficients) {
@@ -30,27 +14,80 @@ Eigen::MatrixX3d combine(const std::vector<Eigen::MatrixX3d> &vectors,
   return sum;
 }
 
+namespace {
+
+// C from the forms' face vectors, `columns(f, plain)` putting face f's vector of every form side
+// by side (one pass for the inner products, one for the residual).
+template <class Columns>
+ConjugateFit conjugate_fit(long n, size_t face_count, const FaceGeometry &geometry,
+                           const Columns &columns) {
+  // The face's vectors, and turned a quarter about the normal (*).
+  auto both = [&](size_t f, Eigen::Matrix3Xd &plain, Eigen::Matrix3Xd &starred) {
+    columns(f, plain);
+    for (long j = 0; j < n; ++j)
+      starred.col(j) = geometry.normals[f].cross(Eigen::Vector3d(plain.col(j)));
+  };
+  // G = <h_j, h_k> and S = <*h_j, h_k> (L2 over the faces), in one pass over the faces.
+  struct Inner {
+    Eigen::MatrixXd gram, starred;
+    Inner &operator+=(const Inner &other) {
+      gram += other.gram;
+      starred += other.starred;
+      return *this;
+    }
+  };
+  const Inner zero{Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd::Zero(n, n)};
+  const Inner inner = chunked_sum(face_count, zero, [&](size_t begin, size_t end) {
+    Inner sum = zero;
+    Eigen::Matrix3Xd plain(3, n), starred(3, n);
+    for (size_t f = begin; f < end; ++f) {
+      both(f, plain, starred);
+      sum.gram.noalias() += geometry.areas[f] * plain.transpose() * plain;
+      sum.starred.noalias() += geometry.areas[f] * starred.transpose() * plain;
+    }
+    return sum;
+  });
+  ConjugateFit fit;
+  fit.coefficients = inner.gram.ldlt().solve(inner.starred.transpose()).transpose(); // C = S G^-1
+  // |*h_j - sum_l C_jl h_l|^2 for every j, in one pass.
+  const Eigen::VectorXd no_error = Eigen::VectorXd::Zero(n);
+  const Eigen::VectorXd error_squared =
+      chunked_sum(face_count, no_error, [&](size_t begin, size_t end) {
+        Eigen::VectorXd sum = no_error;
+        Eigen::Matrix3Xd plain(3, n), starred(3, n);
+        for (size_t f = begin; f < end; ++f) {
+          both(f, plain, starred);
+          const Eigen::Matrix3Xd error = starred - plain * fit.coefficients.transpose();
+          sum += geometry.areas[f] * error.colwise().squaredNorm().transpose();
+        }
+        return sum;
+      });
+  for (long j = 0; j < n; ++j)
+    fit.relative_residual =
+        std::max(fit.relative_residual, std::sqrt(error_squared[j] / inner.gram(j, j)));
+  return fit;
+}
+
+} // namespace
+
 ConjugateFit conjugate_coefficients(const std::vector<Eigen::MatrixX3d> &harmonic_vectors,
                                     const FaceGeometry &geometry) {
   const long n = long(harmonic_vectors.size());
-  Eigen::MatrixXd gram(n, n), starred(n, n);
-  std::vector<Eigen::MatrixX3d> stars;
-  for (long j = 0; j < n; ++j)
-    stars.push_back(star(harmonic_vectors[j], geometry));
-  for (long j = 0; j < n; ++j)
-    for (long k = 0; k < n; ++k) {
-      gram(j, k) = l2_inner(harmonic_vectors[j], harmonic_vectors[k], geometry);
-      starred(j, k) = l2_inner(stars[j], harmonic_vectors[k], geometry);
-    }
-  ConjugateFit fit;
-  fit.coefficients = gram.ldlt().solve(starred.transpose()).transpose(); // C = S G^-1
-  for (long j = 0; j < n; ++j) {
-    const Eigen::MatrixX3d error =
-        stars[j] - combine(harmonic_vectors, fit.coefficients.row(j).transpose());
-    fit.relative_residual =
-        std::max(fit.relative_residual, std::sqrt(l2_inner(error, error, geometry) / gram(j, j)));
-  }
-  return fit;
+  return conjugate_fit(n, size_t(harmonic_vectors.front().rows()), geometry,
+                       [&](size_t f, Eigen::Matrix3Xd &plain) {
+                         for (long j = 0; j < n; ++j)
+                           plain.col(j) = harmonic_vectors[size_t(j)].row(long(f)).transpose();
+                       });
+}
+
+ConjugateFit conjugate_coefficients(const FaceCorners &faces, const MeshEdges &edges,
+                                    const FaceGeometry &geometry,
+                                    const std::vector<Eigen::VectorXd> &harmonic_forms) {
+  const long n = long(harmonic_forms.size());
+  return conjugate_fit(n, faces.size(), geometry, [&](size_t f, Eigen::Matrix3Xd &plain) {
+    for (long j = 0; j < n; ++j)
+      plain.col(j) = face_vector(faces, edges, geometry, harmonic_forms[size_t(j)], f);
+  });
 }
 
 LocalCoefficients local_coefficients(const FaceGeometry &geometry,

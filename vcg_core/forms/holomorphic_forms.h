@@ -24,6 +24,11 @@ struct ConjugateFit {
 
 ConjugateFit conjugate_coefficients(const std::vector<Eigen::MatrixX3d> &harmonic_vectors,
                                     const FaceGeometry &geometry);
+// The same from the forms' edge values, each face's vectors made as a pass needs them (no array
+// of face vectors per form).
+ConjugateFit conjugate_coefficients(const FaceCorners &faces, const MeshEdges &edges,
+                                    const FaceGeometry &geometry,
+                                    const std::vector<Eigen::VectorXd> &harmonic_forms);
 
 // Face vectors of sum_k coefficients[k] * vectors[k].
 Eigen::MatrixX3d combine(const std::vector<Eigen::MatrixX3d> &vectors,

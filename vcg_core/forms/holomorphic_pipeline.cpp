@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 
 #include "common/errors.h"
+#include "common/parallel_for.h"
 #include "common/stage_clock.h"
 #include "forms/harmonic_forms.h"
 #include "forms/holomorphic_forms.h"
@@ -30,24 +31,27 @@ double closedness(const MeshEdges &edges, const Eigen::VectorXd &form) {
   return worst;
 }
 
-// The harmonic forms' face vectors, and how closed and co-closed they came out.
-std::vector<Eigen::MatrixX3d> face_vectors_and_residuals(int vertex_count, const FaceCorners &faces,
-                                                         const MeshEdges &edges,
-                                                         const std::vector<double> &weights,
-                                                         const FaceGeometry &geometry,
-                                                         HolomorphicForms &out) {
-  std::vector<Eigen::MatrixX3d> vectors;
-  for (const Eigen::VectorXd &h : out.harmonic) {
-    vectors.push_back(face_vectors(faces, edges, geometry, h));
-    out.closedness_residual = std::max(out.closedness_residual, closedness(edges, h));
-    const Eigen::VectorXd divergence = weighted_divergence(vertex_count, edges, weights, h);
-    double scale = 0;
-    for (int e = 0; e < edges.edge_count(); ++e)
-      scale = std::max(scale, std::abs(weights[e] * h[e]));
-    out.coclosedness_residual = std::max(
-        out.coclosedness_residual, divergence.tail(vertex_count - 1).cwiseAbs().maxCoeff() / scale);
+// How closed and co-closed the harmonic forms came out.
+void measure_residuals(int vertex_count, const MeshEdges &edges, const std::vector<double> &weights,
+                       HolomorphicForms &out) {
+  const size_t n = out.harmonic.size();
+  std::vector<double> closed(n), coclosed(n);
+  parallel_for( // the forms over the cores
+      n,
+      [&](size_t j) {
+        const Eigen::VectorXd &h = out.harmonic[j];
+        closed[j] = closedness(edges, h);
+        const Eigen::VectorXd divergence = weighted_divergence(vertex_count, edges, weights, h);
+        double scale = 0;
+        for (int e = 0; e < edges.edge_count(); ++e)
+          scale = std::max(scale, std::abs(weights[e] * h[e]));
+        coclosed[j] = divergence.tail(vertex_count - 1).cwiseAbs().maxCoeff() / scale;
+      },
+      2);
+  for (size_t j = 0; j < n; ++j) {
+    out.closedness_residual = std::max(out.closedness_residual, closed[j]);
+    out.coclosedness_residual = std::max(out.coclosedness_residual, coclosed[j]);
   }
-  return vectors;
 }
 
 // The periods of tau_j = h_j + i *h_j along the primal loops, the canonical basis from the
@@ -107,27 +111,38 @@ void normalized_forms(const Eigen::MatrixXd &basis, HolomorphicForms &out) {
   const Eigen::MatrixXcd d =
       c + std::complex<double>(0, 1) * c * out.conjugate.cast<std::complex<double>>();
   const long edge_count = out.harmonic.front().size();
-  for (int m = 0; m < g; ++m) {
-    Eigen::VectorXd real = Eigen::VectorXd::Zero(edge_count), imag = real;
-    for (int l = 0; l < n; ++l) {
-      real += d(m, l).real() * out.harmonic[l];
-      imag += d(m, l).imag() * out.harmonic[l];
-    }
-    Eigen::VectorXcd psi(edge_count);
-    psi.real() = real;
-    psi.imag() = imag;
-    out.normalized.push_back(out.intrinsic->integrate_along_mesh_edges(psi));
-  }
+  out.normalized.resize(size_t(g));
+  parallel_for( // the forms over the cores
+      size_t(g),
+      [&](size_t m) {
+        Eigen::VectorXd real = Eigen::VectorXd::Zero(edge_count), imag = real;
+        for (int l = 0; l < n; ++l) {
+          real += d(long(m), l).real() * out.harmonic[size_t(l)];
+          imag += d(long(m), l).imag() * out.harmonic[size_t(l)];
+        }
+        Eigen::VectorXcd psi(edge_count);
+        psi.real() = real;
+        psi.imag() = imag;
+        out.normalized[m] = out.intrinsic->integrate_along_mesh_edges(psi);
+      },
+      2);
 }
 
 // The area-weighted mean and the largest |g| / |f| of phi_1 over the faces.
-void measure_non_holomorphicity(const FaceGeometry &geometry,
-                                const std::vector<Eigen::MatrixX3d> &vectors,
-                                const Eigen::MatrixXd &basis, HolomorphicForms &out) {
-  Eigen::VectorXd first = basis.col(0);
-  const Eigen::MatrixX3d real_part = combine(vectors, first);
-  const Eigen::MatrixX3d imaginary_part = combine(vectors, out.conjugate.transpose() * first);
-  const LocalCoefficients local = local_coefficients(geometry, real_part, imaginary_part);
+void measure_non_holomorphicity(const FaceCorners &faces, const MeshEdges &edges,
+                                const FaceGeometry &geometry, const Eigen::MatrixXd &basis,
+                                HolomorphicForms &out) {
+  // phi_1 = sum_j P_j1 (h_j + i sum_l C_jl h_l): its real and imaginary parts as edge values.
+  const Eigen::VectorXd first = basis.col(0), imaginary = out.conjugate.transpose() * first;
+  Eigen::VectorXd real_form = Eigen::VectorXd::Zero(out.harmonic.front().size());
+  Eigen::VectorXd imaginary_form = real_form;
+  for (size_t j = 0; j < out.harmonic.size(); ++j) {
+    real_form += first[long(j)] * out.harmonic[j];
+    imaginary_form += imaginary[long(j)] * out.harmonic[j];
+  }
+  const LocalCoefficients local =
+      local_coefficients(geometry, face_vectors(faces, edges, geometry, real_form),
+                         face_vectors(faces, edges, geometry, imaginary_form));
   double weighted = 0, total_area = 0;
   for (size_t f = 0; f < local.f.size(); ++f) {
     const double ratio = std::abs(local.g[f]) / std::abs(local.f[f]);
@@ -184,28 +199,34 @@ HolomorphicForms compute_holomorphic_forms(const PreparedMesh &prepared, SolverK
   clock.done("homology");
 
   progress.report(0.2, "factoring the Laplacian");
-  const std::unique_ptr<LaplacianSolver> factored =
+  std::unique_ptr<LaplacianSolver> factored =
       factor_laplacian(cotan_laplacian(vertex_count, edges, weights), solver);
   clock.done("factorization");
 
   progress.report(0.6, "harmonic forms");
   out.harmonic = harmonic_forms(out.homology.dual_forms, vertex_count, edges, weights, *factored);
+  factored.reset(); // the factor is the largest array here; nothing below solves
   clock.done("harmonic");
 
   progress.report(0.8, "holomorphic forms and periods");
   const FaceGeometry geometry = face_geometry(faces);
-  const std::vector<Eigen::MatrixX3d> vectors =
-      face_vectors_and_residuals(vertex_count, faces, edges, weights, geometry, out);
-  const ConjugateFit fit = conjugate_coefficients(vectors, geometry);
+  measure_residuals(vertex_count, edges, weights, out);
+  const ConjugateFit fit = conjugate_coefficients(faces, edges, geometry, out.harmonic);
   out.conjugate = fit.coefficients;
   out.conjugate_residual = fit.relative_residual;
 
   const Eigen::MatrixXd basis = canonical_periods(edges, out);
   normalized_forms(basis, out);
-  measure_non_holomorphicity(geometry, vectors, basis, out);
+  measure_non_holomorphicity(faces, edges, geometry, basis, out);
   clock.done("holomorphic");
   progress.report(1.0, "done");
   return out;
+}
+
+void release_intermediates(HolomorphicForms &forms) {
+  forms.intrinsic.reset();
+  forms.homology = {};
+  forms.harmonic = {};
 }
 
 } // namespace meromorph

@@ -3,29 +3,39 @@
 #include <cmath>
 
 #include "common/errors.h"
+#include "common/parallel_for.h"
 
 namespace meromorph {
 
 Eigen::MatrixXi wedge_matrix(const std::vector<Eigen::VectorXd> &closed_forms,
                              const MeshEdges &edges, double *largest_rounding) {
   const long n = long(closed_forms.size());
+  // The integrals of h_j ^ h_k over the faces, every pair in one pass over the faces.
+  const size_t face_count = edges.face_edges.size();
+  const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(n, n);
+  const Eigen::MatrixXd integral = chunked_sum(face_count, zero, [&](size_t begin, size_t end) {
+    Eigen::MatrixXd sum = zero;
+    Eigen::Matrix3Xd sides(3, n); // the forms' values on the face's sides, counter-clockwise
+    for (size_t f = begin; f < end; ++f) {
+      for (int side = 0; side < 3; ++side) {
+        const int e = edges.face_edges[f][side], sign = edges.face_signs[f][side];
+        for (long j = 0; j < n; ++j)
+          sides(side, j) = sign * closed_forms[size_t(j)][e];
+      }
+      // sum over the sides of (a_s b_{s+1} - a_{s+1} b_s) / 6: A^T R B - B^T R A with R the shift.
+      Eigen::Matrix3Xd next(3, n);
+      next << sides.row(1), sides.row(2), sides.row(0);
+      const Eigen::MatrixXd product = sides.transpose() * next;
+      sum += (product - product.transpose()) / 6.0;
+    }
+    return sum;
+  });
   Eigen::MatrixXi wedge = Eigen::MatrixXi::Zero(n, n);
   double worst = 0;
   for (long j = 0; j < n; ++j)
     for (long k = j + 1; k < n; ++k) {
-      double sum = 0;
-      for (size_t f = 0; f < edges.face_edges.size(); ++f) {
-        double a[3], b[3];
-        for (int side = 0; side < 3; ++side) {
-          const int e = edges.face_edges[f][side], sign = edges.face_signs[f][side];
-          a[side] = sign * closed_forms[size_t(j)][e];
-          b[side] = sign * closed_forms[size_t(k)][e];
-        }
-        for (int side = 0; side < 3; ++side)
-          sum += (a[side] * b[(side + 1) % 3] - a[(side + 1) % 3] * b[side]) / 6.0;
-      }
-      const double rounded = std::round(sum);
-      worst = std::max(worst, std::abs(sum - rounded));
+      const double rounded = std::round(integral(j, k));
+      worst = std::max(worst, std::abs(integral(j, k) - rounded));
       wedge(j, k) = int(rounded);
       wedge(k, j) = -int(rounded);
     }

@@ -81,8 +81,9 @@ Parameterization parameterize(Mesh &mesh, const ParameterizeOptions &options,
   progress.report(0.0, "edges and cotangent weights");
   const PreparedMesh prepared = prepare_mesh(mesh); // every stage below reads it
   clock.done("prepare");
-  const HolomorphicForms forms =
+  HolomorphicForms forms =
       compute_holomorphic_forms(prepared, options.solver, progress.range(0.0, 0.6));
+  release_intermediates(forms);
   out.timings_ms.insert(out.timings_ms.end(), forms.timings_ms.begin(), forms.timings_ms.end());
   clock.restart();
   out.notes = validation.notes;

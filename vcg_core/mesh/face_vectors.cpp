@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/parallel_for.h"
+
 namespace meromorph {
 namespace {
 
@@ -16,35 +18,40 @@ Eigen::Vector3d corner(const FaceCorners &faces, size_t f, int k) {
 
 template <class Faces> FaceGeometry geometry_of(const Faces &faces, size_t face_count) {
   FaceGeometry geometry;
-  geometry.normals.reserve(face_count);
-  geometry.first_axes.reserve(face_count);
-  geometry.areas.reserve(face_count);
-  for (size_t f = 0; f < face_count; ++f) {
+  geometry.normals.resize(face_count);
+  geometry.first_axes.resize(face_count);
+  geometry.areas.resize(face_count);
+  parallel_for(face_count, [&](size_t f) {
     const Eigen::Vector3d p0 = corner(faces, f, 0), p1 = corner(faces, f, 1),
                           p2 = corner(faces, f, 2);
     const Eigen::Vector3d cross = (p1 - p0).cross(p2 - p0);
-    geometry.areas.push_back(0.5 * cross.norm());
-    geometry.normals.push_back(cross.normalized());
-    geometry.first_axes.push_back((p1 - p0).normalized());
-  }
+    geometry.areas[f] = 0.5 * cross.norm();
+    geometry.normals[f] = cross.normalized();
+    geometry.first_axes[f] = (p1 - p0).normalized();
+  });
   return geometry;
+}
+
+template <class Faces>
+Eigen::Vector3d vector_of(const Faces &faces, const MeshEdges &edges, const FaceGeometry &geometry,
+                          const Eigen::VectorXd &form, size_t f) {
+  const Eigen::Vector3d p0 = corner(faces, f, 0), p1 = corner(faces, f, 1),
+                        p2 = corner(faces, f, 2);
+  // Local potential: u0 = 0, u1 = form along side 0, u2 = u1 + form along side 1.
+  const double u1 = edges.face_signs[f][0] * form[edges.face_edges[f][0]];
+  const double u2 = u1 + edges.face_signs[f][1] * form[edges.face_edges[f][1]];
+  const Eigen::Vector3d &n = geometry.normals[f];
+  // grad phi_i = n x (edge opposite corner i, counter-clockwise) / (2 area).
+  return (u1 * n.cross(p0 - p2) + u2 * n.cross(p1 - p0)) / (2.0 * geometry.areas[f]);
 }
 
 template <class Faces>
 Eigen::MatrixX3d vectors_of(const Faces &faces, size_t face_count, const MeshEdges &edges,
                             const FaceGeometry &geometry, const Eigen::VectorXd &form) {
   Eigen::MatrixX3d vectors(face_count, 3);
-  for (size_t f = 0; f < face_count; ++f) {
-    const Eigen::Vector3d p0 = corner(faces, f, 0), p1 = corner(faces, f, 1),
-                          p2 = corner(faces, f, 2);
-    // Local potential: u0 = 0, u1 = form along side 0, u2 = u1 + form along side 1.
-    const double u1 = edges.face_signs[f][0] * form[edges.face_edges[f][0]];
-    const double u2 = u1 + edges.face_signs[f][1] * form[edges.face_edges[f][1]];
-    const Eigen::Vector3d &n = geometry.normals[f];
-    // grad phi_i = n x (edge opposite corner i, counter-clockwise) / (2 area).
-    vectors.row(long(f)) =
-        (u1 * n.cross(p0 - p2) + u2 * n.cross(p1 - p0)) / (2.0 * geometry.areas[f]);
-  }
+  parallel_for(face_count, [&](size_t f) {
+    vectors.row(long(f)) = vector_of(faces, edges, geometry, form, f).transpose();
+  });
   return vectors;
 }
 
@@ -87,6 +94,11 @@ Eigen::MatrixX3d face_vectors(const Mesh &mesh, const MeshEdges &edges,
 Eigen::MatrixX3d face_vectors(const FaceCorners &faces, const MeshEdges &edges,
                               const FaceGeometry &geometry, const Eigen::VectorXd &form) {
   return vectors_of(faces, faces.size(), edges, geometry, form);
+}
+
+Eigen::Vector3d face_vector(const FaceCorners &faces, const MeshEdges &edges,
+                            const FaceGeometry &geometry, const Eigen::VectorXd &form, size_t f) {
+  return vector_of(faces, edges, geometry, form, f);
 }
 
 } // namespace meromorph

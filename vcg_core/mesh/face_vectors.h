@@ -46,5 +46,8 @@ Eigen::MatrixX3d face_vectors(const Mesh &mesh, const MeshEdges &edges,
                               const FaceGeometry &geometry, const Eigen::VectorXd &form);
 Eigen::MatrixX3d face_vectors(const FaceCorners &faces, const MeshEdges &edges,
                               const FaceGeometry &geometry, const Eigen::VectorXd &form);
+// One face's vector, for passes that need no array of them.
+Eigen::Vector3d face_vector(const FaceCorners &faces, const MeshEdges &edges,
+                            const FaceGeometry &geometry, const Eigen::VectorXd &form, size_t f);
 
 } // namespace meromorph

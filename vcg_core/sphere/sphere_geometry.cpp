@@ -50,9 +50,13 @@ Complex chart_at(const Eigen::Vector3d &p, const Eigen::Vector3d &q) {
 
 double swept_angle(const Eigen::Vector3d &center, const Eigen::Vector3d &a,
                    const Eigen::Vector3d &b) {
-  const Complex za = chart_at(center, a), zb = chart_at(center, b);
-  if (std::abs(za) == 0 || std::abs(zb) == 0) return 0.0;
-  const double angle = std::arg(zb / za);
+  // The chart at `center` is conformal and takes the great circles through it to the lines
+  // through 0: the angle from a to b there is the angle between their directions in the tangent
+  // plane at `center` (a - center with its normal part taken off: accurate for a beside center).
+  const Eigen::Vector3d da = a - center, db = b - center;
+  const Eigen::Vector3d ta = da - da.dot(center) * center, tb = db - db.dot(center) * center;
+  if (ta.squaredNorm() == 0 || tb.squaredNorm() == 0) return 0.0;
+  const double angle = std::atan2(center.dot(ta.cross(tb)), ta.dot(tb));
   return angle < -M_PI + 0.05 ? angle + 2 * M_PI : angle;
 }
 
