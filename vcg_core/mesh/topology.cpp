@@ -33,11 +33,130 @@ std::vector<char> boundary_vertices(const Mesh &mesh) {
   return boundary;
 }
 
+void update_face_adjacency(Mesh &mesh) {
+  // The live half-edges h = 3 f + k grouped by their lower vertex (a counting sort), then by
+  // their upper one within each vertex's few.
+  const size_t half_edges = 3 * mesh.face.size();
+  std::vector<int> low(half_edges, -1), high(half_edges, -1);
+  std::vector<int> start(mesh.vert.size() + 1, 0);
+  for (size_t h = 0; h < half_edges; ++h) {
+    const MeshFace &face = mesh.face[h / 3];
+    if (face.IsD()) continue;
+    const int k = int(h % 3);
+    const int a = index_of(mesh, face.cV(k)), b = index_of(mesh, face.cV((k + 1) % 3));
+    low[h] = std::min(a, b);
+    high[h] = std::max(a, b);
+    ++start[size_t(low[h]) + 1];
+  }
+  for (size_t v = 0; v < mesh.vert.size(); ++v)
+    start[v + 1] += start[v];
+  std::vector<int> by_low(size_t(start.back())), fill(start.begin(), start.end() - 1);
+  for (size_t h = 0; h < half_edges; ++h)
+    if (low[h] >= 0) by_low[size_t(fill[size_t(low[h])]++)] = int(h);
+  // Every half-edge's partner: itself on a border, the other face's on an edge of two faces.
+  std::vector<int> partner(half_edges, -1);
+  for (size_t v = 0; v < mesh.vert.size(); ++v)
+    for (int i = start[v]; i < start[v + 1]; ++i) {
+      const int h = by_low[size_t(i)];
+      if (partner[size_t(h)] >= 0) continue;
+      int found = -1, count = 1;
+      for (int j = i + 1; j < start[v + 1]; ++j) {
+        const int other = by_low[size_t(j)];
+        if (high[size_t(other)] != high[size_t(h)]) continue;
+        ++count;
+        found = other;
+      }
+      if (count > 2) { // a non-manifold edge: vcglib's fans of faces
+        vcg::tri::UpdateTopology<Mesh>::FaceFace(mesh);
+        return;
+      }
+      partner[size_t(h)] = count == 2 ? found : h;
+      if (count == 2) partner[size_t(found)] = h;
+    }
+  for (size_t h = 0; h < half_edges; ++h) {
+    MeshFace &face = mesh.face[h / 3];
+    if (face.IsD()) continue;
+    const int k = int(h % 3), other = partner[h];
+    face.FFp(k) = &mesh.face[size_t(other / 3)];
+    face.FFi(k) = char(other % 3);
+  }
+}
+
+bool is_closed_oriented_connected_manifold(const Mesh &mesh) {
+  const size_t face_count = mesh.face.size(), half_edges = 3 * face_count;
+  if (face_count < 3) return false;
+  for (const MeshFace &face : mesh.face)
+    if (face.IsD() || repeats_a_vertex(face)) return false;
+  // Half-edges by their starting vertex (a counting sort); the twin of a -> b is the one b -> a.
+  std::vector<int> corner(half_edges); // the vertex at corner h % 3 of face h / 3
+  for (size_t h = 0; h < half_edges; ++h)
+    corner[h] = index_of(mesh, mesh.face[h / 3].cV(int(h % 3)));
+  auto from = [&](size_t h) { return corner[h]; };
+  auto to = [&](size_t h) { return corner[h - h % 3 + (h % 3 + 1) % 3]; };
+  std::vector<int> start(mesh.vert.size() + 1, 0);
+  for (size_t h = 0; h < half_edges; ++h)
+    ++start[size_t(from(h)) + 1];
+  for (size_t v = 0; v < mesh.vert.size(); ++v)
+    start[v + 1] += start[v];
+  std::vector<int> by_start(half_edges), fill(start.begin(), start.end() - 1);
+  for (size_t h = 0; h < half_edges; ++h)
+    by_start[size_t(fill[size_t(from(h))]++)] = int(h);
+  // Each half-edge a -> b: no other a -> b, exactly one b -> a.
+  std::vector<int> twin(half_edges, -1);
+  for (size_t h = 0; h < half_edges; ++h) {
+    const int a = from(h), b = to(h);
+    for (int i = start[size_t(a)]; i < start[size_t(a) + 1]; ++i)
+      if (size_t(by_start[size_t(i)]) != h && to(size_t(by_start[size_t(i)])) == b) return false;
+    int found = -1;
+    for (int i = start[size_t(b)]; i < start[size_t(b) + 1]; ++i)
+      if (to(size_t(by_start[size_t(i)])) == a) {
+        if (found >= 0) return false;
+        found = by_start[size_t(i)];
+      }
+    if (found < 0) return false;
+    twin[h] = found;
+  }
+  // One fan around every vertex: turning from half-edge a -> b (out of a) to the twin of the
+  // half-edge that enters a in the same face reaches every half-edge out of a.
+  std::vector<char> turned(half_edges, 0);
+  for (size_t v = 0; v < mesh.vert.size(); ++v) {
+    const int count = start[v + 1] - start[v];
+    if (count == 0) continue; // unreferenced: reported by check_vertices, no matter to topology
+    int h = by_start[size_t(start[v])], seen = 0;
+    do {
+      if (turned[size_t(h)]) return false;
+      turned[size_t(h)] = 1;
+      ++seen;
+      const int entering = 3 * (h / 3) + (h % 3 + 2) % 3;
+      h = twin[size_t(entering)];
+    } while (h != by_start[size_t(start[v])] && seen <= count);
+    if (seen != count) return false;
+  }
+  // One component: faces reached across their sides from face 0.
+  std::vector<char> reached(face_count, 0);
+  std::vector<int> stack = {0};
+  reached[0] = 1;
+  size_t reached_count = 1;
+  while (!stack.empty()) {
+    const int f = stack.back();
+    stack.pop_back();
+    for (int k = 0; k < 3; ++k) {
+      const int g = twin[size_t(3 * f + k)] / 3;
+      if (!reached[size_t(g)]) {
+        reached[size_t(g)] = 1;
+        ++reached_count;
+        stack.push_back(g);
+      }
+    }
+  }
+  return reached_count == face_count;
+}
+
 void copy_with_face_adjacency(const Mesh &mesh, Mesh &copy) {
   vcg::tri::Append<Mesh, Mesh>::MeshCopy(copy, const_cast<Mesh &>(mesh));
   for (MeshFace &face : copy.face)
     if (!face.IsD() && repeats_a_vertex(face)) vcg::tri::Allocator<Mesh>::DeleteFace(copy, face);
-  vcg::tri::UpdateTopology<Mesh>::FaceFace(copy);
+  update_face_adjacency(copy);
 }
 
 std::vector<BoundaryLoop> find_boundary_loops(Mesh &mesh) {

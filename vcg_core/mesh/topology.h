@@ -30,6 +30,15 @@ std::vector<char> boundary_vertices(const Mesh &mesh);
 // face indices stay those of `mesh` (deleted faces keep their slots).
 void copy_with_face_adjacency(const Mesh &mesh, Mesh &copy);
 
+// Whether the mesh is one closed, consistently oriented, manifold surface (every side shared with
+// exactly one face that runs it the other way, one fan of faces around every vertex, one
+// component; no face repeating a vertex): linear time, no copy. Validation's quick path.
+bool is_closed_oriented_connected_manifold(const Mesh &mesh);
+
+// Face-face adjacency as vcglib's UpdateTopology::FaceFace sets it (deleted faces left out), in
+// linear time where every edge has one or two faces; vcglib's own where an edge has more.
+void update_face_adjacency(Mesh &mesh);
+
 struct Topology {
   int vertices = 0;
   int edges = 0;
