@@ -1,6 +1,10 @@
 // Progress reporting and cancellation.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
+#include <thread>
+
 #include "common/errors.h"
 #include "common/progress.h"
 
@@ -23,6 +27,73 @@ TEST(Progress, RangesMapIntoTheParentAndCancelThrows) {
   keep_going = false;
   EXPECT_THROW(progress.report(0.9, "stop"), Cancelled);
   EXPECT_NO_THROW(Progress().report(0.3, "nobody listens"));
+}
+
+// A job on a worker thread: its reports reach the callback on the caller's thread, and while it
+// is silent the latest report is handed on again (the bar stays alive in MeshLab and Blender).
+TEST(Progress, AJobOnAWorkerReportsOnTheCallersThreadAndKeepsTheBarAlive) {
+  const std::thread::id caller = std::this_thread::get_id();
+  std::vector<std::string> stages;
+  bool on_caller = true;
+  Progress progress([&](double, const std::string &stage) {
+    on_caller &= std::this_thread::get_id() == caller;
+    stages.push_back(stage);
+    return true;
+  });
+  std::thread::id worker;
+  run_reporting(progress, [&](const Progress &relay) {
+    worker = std::this_thread::get_id();
+    relay.report(0.1, "first");
+    std::this_thread::sleep_for(std::chrono::milliseconds(1200)); // silent, like a factorization
+    relay.range(0.5, 1.0).report(1.0, "last");
+  });
+  EXPECT_NE(worker, caller);
+  EXPECT_TRUE(on_caller);
+  ASSERT_GE(stages.size(), 4u); // "first" handed on again while the job was silent
+  EXPECT_EQ(stages.front(), "first");
+  EXPECT_EQ(stages.back(), "last");
+}
+
+TEST(Progress, ACancelStopsTheJobAtItsNextReportAndAJobsErrorReachesTheCaller) {
+  std::atomic<bool> job_unwound{false};
+  int calls = 0;
+  Progress cancel_at_third([&](double, const std::string &) { return ++calls < 3; });
+  EXPECT_THROW(run_reporting(cancel_at_third,
+                             [&](const Progress &relay) {
+                               try {
+                                 for (int step = 0; step < 1000; ++step) {
+                                   relay.report(step / 1000.0, "step");
+                                   std::this_thread::sleep_for(std::chrono::milliseconds(20));
+                                 }
+                               } catch (const Cancelled &) {
+                                 job_unwound = true;
+                                 throw;
+                               }
+                             }),
+               Cancelled);
+  EXPECT_TRUE(job_unwound);
+  EXPECT_THROW(run_reporting(Progress([](double, const std::string &) { return true; }),
+                             [](const Progress &) { throw InputError("bad mesh"); }),
+               InputError);
+  // Without a callback the job runs on the caller's thread.
+  std::thread::id ran_on;
+  run_reporting(Progress(), [&](const Progress &) { ran_on = std::this_thread::get_id(); });
+  EXPECT_EQ(ran_on, std::this_thread::get_id());
+}
+
+TEST(Progress, WorkThatCannotReportIsWaitedForWithReports) {
+  int calls = 0;
+  Progress progress([&](double fraction, const std::string &stage) {
+    EXPECT_EQ(fraction, 0.25);
+    EXPECT_EQ(stage, "factoring");
+    ++calls;
+    return true;
+  });
+  report_while(progress.range(0.25, 0.5), 0.0, "factoring",
+               [] { std::this_thread::sleep_for(std::chrono::milliseconds(900)); });
+  EXPECT_GE(calls, 2);
+  EXPECT_THROW(report_while(progress, 0.25, "factoring", [] { throw InputError("no"); }),
+               InputError);
 }
 
 } // namespace

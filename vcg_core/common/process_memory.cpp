@@ -22,6 +22,9 @@ void tune_process_memory(char **argv) {
   mallopt(M_MMAP_THRESHOLD, 1 << 30); // arrays below 1 GiB come from the heap, reused when freed
   mallopt(M_TRIM_THRESHOLD, 1 << 30); // the heap's free top is kept up to 1 GiB
   mallopt(M_TOP_PAD, 256 << 20);      // and grown 256 MiB at a time
+  // One heap for every thread: the job runs on a worker thread (common/progress.h), whose own
+  // arena would take its large arrays from fresh mappings instead of the memory freed here.
+  mallopt(M_ARENA_MAX, 1);
 #else
   (void)argv;
 #endif

@@ -1,6 +1,11 @@
 #include "common/progress.h"
 
 #include <algorithm>
+#include <chrono>
+#include <condition_variable>
+#include <exception>
+#include <future>
+#include <mutex>
 
 #include "common/errors.h"
 
@@ -15,6 +20,81 @@ void Progress::report(double fraction, const std::string &stage) const {
 Progress Progress::range(double begin, double end) const {
   const double width = end_ - begin_;
   return Progress(callback_, begin_ + width * begin, begin_ + width * end);
+}
+
+void report_while(const Progress &progress, double fraction, const std::string &stage,
+                  const std::function<void()> &work) {
+  if (!progress.reports()) {
+    work();
+    return;
+  }
+  std::future<void> done = std::async(std::launch::async, work);
+  try {
+    while (done.wait_for(std::chrono::milliseconds(250)) != std::future_status::ready)
+      progress.report(fraction, stage);
+  } catch (...) {
+    done.wait(); // the work reads the caller's data: it must end before anything unwinds
+    throw;
+  }
+  done.get(); // the work's own exception, if any
+}
+
+void run_reporting(const Progress &progress,
+                   const std::function<void(const Progress &relay)> &job) {
+  if (!progress.reports()) {
+    job(progress);
+    return;
+  }
+  struct Relay {
+    std::mutex mutex;
+    std::condition_variable changed;
+    double fraction = 0;
+    std::string stage;
+    bool fresh = false, cancelled = false, finished = false;
+  } relay;
+  const Progress relayed([&relay](double fraction, const std::string &stage) {
+    const std::lock_guard<std::mutex> lock(relay.mutex);
+    relay.fraction = fraction;
+    relay.stage = stage;
+    relay.fresh = true;
+    relay.changed.notify_one();
+    return !relay.cancelled;
+  });
+  std::future<void> done = std::async(std::launch::async, [&] {
+    try {
+      job(relayed);
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(relay.mutex);
+      relay.finished = true;
+      relay.changed.notify_one();
+      throw;
+    }
+    const std::lock_guard<std::mutex> lock(relay.mutex);
+    relay.finished = true;
+    relay.changed.notify_one();
+  });
+  try {
+    std::unique_lock<std::mutex> lock(relay.mutex);
+    while (true) {
+      relay.changed.wait_for(lock, std::chrono::milliseconds(250),
+                             [&] { return relay.fresh || relay.finished; });
+      if (relay.finished && !relay.fresh) break; // a last report is handed on first
+      const double fraction = relay.fraction;
+      const std::string stage = relay.stage;
+      relay.fresh = false;
+      lock.unlock();
+      progress.report(fraction, stage); // throws Cancelled when the callback says stop
+      lock.lock();
+    }
+  } catch (...) {
+    {
+      const std::lock_guard<std::mutex> lock(relay.mutex);
+      relay.cancelled = true;
+    }
+    done.wait(); // the job reads the caller's data: it must end before anything unwinds
+    throw;
+  }
+  done.get(); // the job's own exception, if any
 }
 
 } // namespace meromorph

@@ -199,8 +199,8 @@ HolomorphicForms compute_holomorphic_forms(const PreparedMesh &prepared, SolverK
   clock.done("homology");
 
   progress.report(0.2, "factoring the Laplacian");
-  std::unique_ptr<LaplacianSolver> factored =
-      factor_laplacian(cotan_laplacian(vertex_count, edges, weights), solver);
+  std::unique_ptr<LaplacianSolver> factored = factor_laplacian(
+      cotan_laplacian(vertex_count, edges, weights), solver, {0}, progress.range(0.2, 0.6));
   clock.done("factorization");
 
   progress.report(0.6, "harmonic forms");

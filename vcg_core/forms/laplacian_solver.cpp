@@ -93,11 +93,18 @@ private:
 } // namespace
 
 std::unique_ptr<LaplacianSolver> factor_laplacian(const Eigen::SparseMatrix<double> &laplacian,
-                                                  SolverKind kind, const std::vector<int> &pinned) {
+                                                  SolverKind kind, const std::vector<int> &pinned,
+                                                  const Progress &waiting) {
   using Matrix = Eigen::SparseMatrix<double>;
-  if (kind == SolverKind::cholmod)
-    return std::make_unique<PinnedSolver<Eigen::CholmodSupernodalLLT<Matrix>>>(laplacian, pinned);
-  return std::make_unique<PinnedSolver<Eigen::SimplicialLDLT<Matrix>>>(laplacian, pinned);
+  std::unique_ptr<LaplacianSolver> factored;
+  report_while(waiting, 0.0, "factoring the Laplacian", [&] {
+    if (kind == SolverKind::cholmod)
+      factored =
+          std::make_unique<PinnedSolver<Eigen::CholmodSupernodalLLT<Matrix>>>(laplacian, pinned);
+    else
+      factored = std::make_unique<PinnedSolver<Eigen::SimplicialLDLT<Matrix>>>(laplacian, pinned);
+  });
+  return factored;
 }
 
 } // namespace meromorph

@@ -94,8 +94,11 @@ FindingHandling finding_handling(const Finding &finding) {
   }
 }
 
-Parameterization parameterize_surface(Mesh &input, const ParameterizeOptions &options,
-                                      const Progress &progress) {
+namespace {
+
+Parameterization parameterize_surface_here(Mesh &input, const ParameterizeOptions &options,
+                                           const Progress &progress) {
+  progress.report(0.0, "checking the mesh");
   if (options.pack_uv && options.uv != UvKind::spherical)
     throw ArgumentError("packing the parts' texture coordinates (each part's in its own cell of "
                         "the unit square) needs spherical ones; stereographic ones are unbounded",
@@ -152,6 +155,18 @@ Parameterization parameterize_surface(Mesh &input, const ParameterizeOptions &op
         " flipped) and kept in the outputs, with their corners' texture coordinates");
   }
   if (split) report_split(whole, split_spots, out);
+  return out;
+}
+
+} // namespace
+
+Parameterization parameterize_surface(Mesh &input, const ParameterizeOptions &options,
+                                      const Progress &progress) {
+  // The job runs on a worker thread; the callback is called on this one, steadily.
+  Parameterization out;
+  run_reporting(progress, [&](const Progress &relay) {
+    out = parameterize_surface_here(input, options, relay);
+  });
   return out;
 }
 
