@@ -39,11 +39,12 @@ ConjugateFit conjugate_fit(long n, size_t face_count, const FaceGeometry &geomet
   const Inner zero{Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd::Zero(n, n)};
   const Inner inner = chunked_sum(face_count, zero, [&](size_t begin, size_t end) {
     Inner sum = zero;
-    Eigen::Matrix3Xd plain(3, n), starred(3, n);
+    Eigen::Matrix3Xd plain(3, n), starred(3, n), weighted(3, n); // no allocation per face
     for (size_t f = begin; f < end; ++f) {
       both(f, plain, starred);
-      sum.gram.noalias() += geometry.areas[f] * plain.transpose() * plain;
-      sum.starred.noalias() += geometry.areas[f] * starred.transpose() * plain;
+      weighted = geometry.areas[f] * plain;
+      sum.gram.noalias() += weighted.transpose().lazyProduct(plain);
+      sum.starred.noalias() += starred.transpose().lazyProduct(weighted);
     }
     return sum;
   });
@@ -54,11 +55,13 @@ ConjugateFit conjugate_fit(long n, size_t face_count, const FaceGeometry &geomet
   const Eigen::VectorXd error_squared =
       chunked_sum(face_count, no_error, [&](size_t begin, size_t end) {
         Eigen::VectorXd sum = no_error;
-        Eigen::Matrix3Xd plain(3, n), starred(3, n);
+        Eigen::Matrix3Xd plain(3, n), starred(3, n), error(3, n); // no allocation per face
         for (size_t f = begin; f < end; ++f) {
           both(f, plain, starred);
-          const Eigen::Matrix3Xd error = starred - plain * fit.coefficients.transpose();
-          sum += geometry.areas[f] * error.colwise().squaredNorm().transpose();
+          error = starred;
+          error.noalias() -= plain.lazyProduct(fit.coefficients.transpose());
+          for (long j = 0; j < n; ++j)
+            sum[j] += geometry.areas[f] * error.col(j).squaredNorm();
         }
         return sum;
       });
@@ -85,8 +88,14 @@ ConjugateFit conjugate_coefficients(const FaceCorners &faces, const MeshEdges &e
                                     const std::vector<Eigen::VectorXd> &harmonic_forms) {
   const long n = long(harmonic_forms.size());
   return conjugate_fit(n, faces.size(), geometry, [&](size_t f, Eigen::Matrix3Xd &plain) {
-    for (long j = 0; j < n; ++j)
-      plain.col(j) = face_vector(faces, edges, geometry, harmonic_forms[size_t(j)], f);
+    const FaceVectorBasis basis = face_vector_basis(faces, geometry, f);
+    const int e0 = edges.face_edges[f][0], e1 = edges.face_edges[f][1];
+    const double s0 = edges.face_signs[f][0], s1 = edges.face_signs[f][1];
+    for (long j = 0; j < n; ++j) {
+      const Eigen::VectorXd &form = harmonic_forms[size_t(j)];
+      const double u1 = s0 * form[e0], u2 = u1 + s1 * form[e1];
+      plain.col(j) = u1 * basis.first + u2 * basis.second;
+    }
   });
 }
 

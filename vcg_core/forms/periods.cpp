@@ -14,20 +14,22 @@ Eigen::MatrixXi wedge_matrix(const std::vector<Eigen::VectorXd> &closed_forms,
   const size_t face_count = edges.face_edges.size();
   const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(n, n);
   const Eigen::MatrixXd integral = chunked_sum(face_count, zero, [&](size_t begin, size_t end) {
-    Eigen::MatrixXd sum = zero;
-    Eigen::Matrix3Xd sides(3, n); // the forms' values on the face's sides, counter-clockwise
+    // sum over the sides of (a_s b_{s+1} - a_{s+1} b_s) / 6 = (P - P^T) / 6, P = A^T (A shifted
+    // by one side), summed over the chunk's faces first (no allocation per face).
+    Eigen::MatrixXd products = zero;
+    Eigen::Matrix3Xd sides(3, n), next(3, n); // the forms' values on the sides, counter-clockwise
     for (size_t f = begin; f < end; ++f) {
       for (int side = 0; side < 3; ++side) {
         const int e = edges.face_edges[f][side], sign = edges.face_signs[f][side];
         for (long j = 0; j < n; ++j)
           sides(side, j) = sign * closed_forms[size_t(j)][e];
       }
-      // sum over the sides of (a_s b_{s+1} - a_{s+1} b_s) / 6: A^T R B - B^T R A with R the shift.
-      Eigen::Matrix3Xd next(3, n);
-      next << sides.row(1), sides.row(2), sides.row(0);
-      const Eigen::MatrixXd product = sides.transpose() * next;
-      sum += (product - product.transpose()) / 6.0;
+      next.row(0) = sides.row(1);
+      next.row(1) = sides.row(2);
+      next.row(2) = sides.row(0);
+      products.noalias() += sides.transpose().lazyProduct(next);
     }
+    const Eigen::MatrixXd sum = (products - products.transpose()) / 6.0;
     return sum;
   });
   Eigen::MatrixXi wedge = Eigen::MatrixXi::Zero(n, n);

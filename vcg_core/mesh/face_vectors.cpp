@@ -33,16 +33,23 @@ template <class Faces> FaceGeometry geometry_of(const Faces &faces, size_t face_
 }
 
 template <class Faces>
-Eigen::Vector3d vector_of(const Faces &faces, const MeshEdges &edges, const FaceGeometry &geometry,
-                          const Eigen::VectorXd &form, size_t f) {
+FaceVectorBasis basis_of(const Faces &faces, const FaceGeometry &geometry, size_t f) {
   const Eigen::Vector3d p0 = corner(faces, f, 0), p1 = corner(faces, f, 1),
                         p2 = corner(faces, f, 2);
-  // Local potential: u0 = 0, u1 = form along side 0, u2 = u1 + form along side 1.
+  const Eigen::Vector3d &n = geometry.normals[f];
+  // grad phi_i = n x (edge opposite corner i, counter-clockwise) / (2 area); the local potential
+  // is u0 = 0, u1 = form along side 0, u2 = u1 + form along side 1.
+  return {n.cross(p0 - p2) / (2.0 * geometry.areas[f]),
+          n.cross(p1 - p0) / (2.0 * geometry.areas[f])};
+}
+
+template <class Faces>
+Eigen::Vector3d vector_of(const Faces &faces, const MeshEdges &edges, const FaceGeometry &geometry,
+                          const Eigen::VectorXd &form, size_t f) {
+  const FaceVectorBasis basis = basis_of(faces, geometry, f);
   const double u1 = edges.face_signs[f][0] * form[edges.face_edges[f][0]];
   const double u2 = u1 + edges.face_signs[f][1] * form[edges.face_edges[f][1]];
-  const Eigen::Vector3d &n = geometry.normals[f];
-  // grad phi_i = n x (edge opposite corner i, counter-clockwise) / (2 area).
-  return (u1 * n.cross(p0 - p2) + u2 * n.cross(p1 - p0)) / (2.0 * geometry.areas[f]);
+  return u1 * basis.first + u2 * basis.second;
 }
 
 template <class Faces>
@@ -96,9 +103,9 @@ Eigen::MatrixX3d face_vectors(const FaceCorners &faces, const MeshEdges &edges,
   return vectors_of(faces, faces.size(), edges, geometry, form);
 }
 
-Eigen::Vector3d face_vector(const FaceCorners &faces, const MeshEdges &edges,
-                            const FaceGeometry &geometry, const Eigen::VectorXd &form, size_t f) {
-  return vector_of(faces, edges, geometry, form, f);
+FaceVectorBasis face_vector_basis(const FaceCorners &faces, const FaceGeometry &geometry,
+                                  size_t f) {
+  return basis_of(faces, geometry, f);
 }
 
 } // namespace meromorph

@@ -46,8 +46,11 @@ Eigen::MatrixX3d face_vectors(const Mesh &mesh, const MeshEdges &edges,
                               const FaceGeometry &geometry, const Eigen::VectorXd &form);
 Eigen::MatrixX3d face_vectors(const FaceCorners &faces, const MeshEdges &edges,
                               const FaceGeometry &geometry, const Eigen::VectorXd &form);
-// One face's vector, for passes that need no array of them.
-Eigen::Vector3d face_vector(const FaceCorners &faces, const MeshEdges &edges,
-                            const FaceGeometry &geometry, const Eigen::VectorXd &form, size_t f);
+// One face's vectors for many forms without an array per form: the face's vector of any form is
+// u1 * first + u2 * second, u1 the form along side 0 and u2 that plus the form along side 1.
+struct FaceVectorBasis {
+  Eigen::Vector3d first, second;
+};
+FaceVectorBasis face_vector_basis(const FaceCorners &faces, const FaceGeometry &geometry, size_t f);
 
 } // namespace meromorph
