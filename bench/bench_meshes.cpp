@@ -6,8 +6,8 @@
 // - the floor: reading the file, the cotangent Laplacian, one CHOLMOD factorization (supernodal,
 //   CHOLMOD's default ordering) and 2g solves (two for genus 0, the map's two coordinates);
 // - the main job as `meromorph param` runs it: reading the file and `parameterize_surface`, with
-//   the time of every stage, the rest (validation, copies) and the total, the ratio of the total
-//   to the floor, and the peak memory.
+//   the time of every stage, the rest (validation) and the total, the ratio of the total to the
+//   floor, the peak memory, and the longest time without a call of the progress callback.
 // Both jobs run with the process memory settings of the CLI (common/process_memory.h).
 // Then per genus and stage the scaling exponent: the slope of log time against log vertices over
 // the sizes (least squares). Prints Markdown tables.

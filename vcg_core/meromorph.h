@@ -64,7 +64,10 @@ typedef enum meromorph_remedy {
   MEROMORPH_REMEDY_CHOOSE_UV_KIND = 11         /* pack_uv needs uv_kind 0 (spherical) */
 } meromorph_remedy;
 
-/* Progress: fraction in [0, 1] and the stage in words. Return 0 to cancel, non-zero to go on. */
+/* Progress: fraction in [0, 1] and the stage in words. Return 0 to cancel, non-zero to go on.
+   It is called on the thread that called meromorph (the work runs on a worker thread meanwhile),
+   at least every quarter second while the work runs; after a cancel the call returns when the
+   work reaches its next report (at most the end of one Laplacian factorization). */
 typedef int (*meromorph_progress_fn)(double fraction, const char *stage, void *user);
 
 typedef struct meromorph_options {

@@ -12,25 +12,12 @@ namespace meromorph {
 
 namespace {
 
-// Per half-edge h = 3 f + k (side k of face f), the first half-edge on the same two vertices: by
-// a counting sort of the half-edges on their lower vertex, then within each vertex's few.
+// Per half-edge h = 3 f + k (side k of face f), the first half-edge on the same two vertices:
+// the half-edges grouped on their lower vertex, then matched within each vertex's few.
 std::vector<int> first_half_edge_on_same_vertices(const Mesh &mesh) {
   const size_t half_edges = 3 * mesh.face.size();
-  std::vector<int> low(half_edges), high(half_edges);
-  std::vector<int> start(mesh.vert.size() + 1, 0);
-  for (size_t h = 0; h < half_edges; ++h) {
-    const MeshFace &face = mesh.face[h / 3];
-    const int k = int(h % 3);
-    const int a = index_of(mesh, face.cV(k)), b = index_of(mesh, face.cV((k + 1) % 3));
-    low[h] = std::min(a, b);
-    high[h] = std::max(a, b);
-    ++start[size_t(low[h]) + 1];
-  }
-  for (size_t v = 0; v < mesh.vert.size(); ++v)
-    start[v + 1] += start[v];
-  std::vector<int> by_low(half_edges), fill(start.begin(), start.end() - 1);
-  for (size_t h = 0; h < half_edges; ++h) // in increasing h within each vertex
-    by_low[size_t(fill[size_t(low[h])]++)] = int(h);
+  const HalfEdgesByLowVertex grouped = half_edges_by_low_vertex(mesh);
+  const std::vector<int> &start = grouped.start, &by_low = grouped.by_low, &high = grouped.high;
   std::vector<int> first(half_edges);
   for (size_t v = 0; v < mesh.vert.size(); ++v)
     for (int i = start[v]; i < start[v + 1]; ++i) {
@@ -46,6 +33,30 @@ std::vector<int> first_half_edge_on_same_vertices(const Mesh &mesh) {
 }
 
 } // namespace
+
+HalfEdgesByLowVertex half_edges_by_low_vertex(const Mesh &mesh) {
+  const size_t half_edges = 3 * mesh.face.size();
+  HalfEdgesByLowVertex out;
+  out.low.assign(half_edges, -1);
+  out.high.assign(half_edges, -1);
+  out.start.assign(mesh.vert.size() + 1, 0);
+  for (size_t h = 0; h < half_edges; ++h) {
+    const MeshFace &face = mesh.face[h / 3];
+    if (face.IsD()) continue;
+    const int k = int(h % 3);
+    const int a = index_of(mesh, face.cV(k)), b = index_of(mesh, face.cV((k + 1) % 3));
+    out.low[h] = std::min(a, b);
+    out.high[h] = std::max(a, b);
+    ++out.start[size_t(out.low[h]) + 1];
+  }
+  for (size_t v = 0; v < mesh.vert.size(); ++v)
+    out.start[v + 1] += out.start[v];
+  out.by_low.resize(size_t(out.start.back()));
+  std::vector<int> fill(out.start.begin(), out.start.end() - 1);
+  for (size_t h = 0; h < half_edges; ++h) // in increasing h within each vertex
+    if (out.low[h] >= 0) out.by_low[size_t(fill[size_t(out.low[h])]++)] = int(h);
+  return out;
+}
 
 MeshEdges build_mesh_edges(const Mesh &mesh) {
   MeshEdges edges;

@@ -28,6 +28,14 @@ struct MeshEdges {
 
 MeshEdges build_mesh_edges(const Mesh &mesh);
 
+// The half-edges h = 3 f + k (side k of face f, deleted faces left out: low = -1) grouped by
+// their lower vertex in linear time (a counting sort): those of vertex v are
+// by_low[start[v] .. start[v + 1]), in increasing h; `high` is each one's other vertex.
+struct HalfEdgesByLowVertex {
+  std::vector<int> low, high, start, by_low;
+};
+HalfEdgesByLowVertex half_edges_by_low_vertex(const Mesh &mesh);
+
 // For each vertex, the edges that end at it.
 std::vector<std::vector<int>> edges_at_vertices(const MeshEdges &edges, int vertex_count);
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "mesh/mesh_edges.h"
 #include "mesh/validation.h"
 
 #include <vcg/complex/algorithms/clean.h>
@@ -37,22 +38,8 @@ void update_face_adjacency(Mesh &mesh) {
   // The live half-edges h = 3 f + k grouped by their lower vertex (a counting sort), then by
   // their upper one within each vertex's few.
   const size_t half_edges = 3 * mesh.face.size();
-  std::vector<int> low(half_edges, -1), high(half_edges, -1);
-  std::vector<int> start(mesh.vert.size() + 1, 0);
-  for (size_t h = 0; h < half_edges; ++h) {
-    const MeshFace &face = mesh.face[h / 3];
-    if (face.IsD()) continue;
-    const int k = int(h % 3);
-    const int a = index_of(mesh, face.cV(k)), b = index_of(mesh, face.cV((k + 1) % 3));
-    low[h] = std::min(a, b);
-    high[h] = std::max(a, b);
-    ++start[size_t(low[h]) + 1];
-  }
-  for (size_t v = 0; v < mesh.vert.size(); ++v)
-    start[v + 1] += start[v];
-  std::vector<int> by_low(size_t(start.back())), fill(start.begin(), start.end() - 1);
-  for (size_t h = 0; h < half_edges; ++h)
-    if (low[h] >= 0) by_low[size_t(fill[size_t(low[h])]++)] = int(h);
+  const HalfEdgesByLowVertex grouped = half_edges_by_low_vertex(mesh);
+  const std::vector<int> &start = grouped.start, &by_low = grouped.by_low, &high = grouped.high;
   // Every half-edge's partner: itself on a border, the other face's on an edge of two faces.
   std::vector<int> partner(half_edges, -1);
   for (size_t v = 0; v < mesh.vert.size(); ++v)
