@@ -81,20 +81,5 @@ TEST(Progress, ACancelStopsTheJobAtItsNextReportAndAJobsErrorReachesTheCaller) {
   EXPECT_EQ(ran_on, std::this_thread::get_id());
 }
 
-TEST(Progress, WorkThatCannotReportIsWaitedForWithReports) {
-  int calls = 0;
-  Progress progress([&](double fraction, const std::string &stage) {
-    EXPECT_EQ(fraction, 0.25);
-    EXPECT_EQ(stage, "factoring");
-    ++calls;
-    return true;
-  });
-  report_while(progress.range(0.25, 0.5), 0.0, "factoring",
-               [] { std::this_thread::sleep_for(std::chrono::milliseconds(900)); });
-  EXPECT_GE(calls, 2);
-  EXPECT_THROW(report_while(progress, 0.25, "factoring", [] { throw InputError("no"); }),
-               InputError);
-}
-
 } // namespace
 } // namespace meromorph

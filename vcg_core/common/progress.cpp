@@ -22,23 +22,6 @@ Progress Progress::range(double begin, double end) const {
   return Progress(callback_, begin_ + width * begin, begin_ + width * end);
 }
 
-void report_while(const Progress &progress, double fraction, const std::string &stage,
-                  const std::function<void()> &work) {
-  if (!progress.reports()) {
-    work();
-    return;
-  }
-  std::future<void> done = std::async(std::launch::async, work);
-  try {
-    while (done.wait_for(std::chrono::milliseconds(250)) != std::future_status::ready)
-      progress.report(fraction, stage);
-  } catch (...) {
-    done.wait(); // the work reads the caller's data: it must end before anything unwinds
-    throw;
-  }
-  done.get(); // the work's own exception, if any
-}
-
 void run_reporting(const Progress &progress,
                    const std::function<void(const Progress &relay)> &job) {
   if (!progress.reports()) {

@@ -4,9 +4,6 @@
 //      MeshLab's CallBackPos, Blender's progress_update); it returns false to cancel.
 // Out: `Progress::report` calls it with a fraction in [0, 1]; when the callback asks to cancel,
 //      `report` throws `Cancelled`. `Progress::range` hands a sub-stage its own 0..1 slice.
-//      `report_while` runs a long piece of work that cannot report itself (a CHOLMOD
-//      factorization) on a worker thread while the calling thread reports every quarter second,
-//      so the bar stays alive and a cancel is heard; the cancel takes effect when the work ends.
 //      `run_reporting` runs a whole job on a worker thread that reports into a relay, while the
 //      calling thread hands the latest report to the callback at least every quarter second:
 //      the callback (a GUI's) is only ever called on the caller's thread, steadily, and a cancel
@@ -41,12 +38,6 @@ private:
   double begin_ = 0.0;
   double end_ = 1.0;
 };
-
-// `work` runs on another thread while this one calls report(fraction, stage) every 0.25 s; its
-// exception, if any, is thrown here. Cancelled is thrown once `work` has ended (it cannot be
-// stopped midway). Without a callback `work` simply runs here.
-void report_while(const Progress &progress, double fraction, const std::string &stage,
-                  const std::function<void()> &work);
 
 // `job(relay)` runs on another thread; its reports reach `progress` from this thread, the latest
 // one again every 0.25 s while nothing new comes; its exception, if any, is thrown here. When

@@ -6,14 +6,6 @@
 
 namespace meromorph {
 
-Eigen::MatrixX3d combine(const std::vector<Eigen::MatrixX3d> &vectors,
-                         const Eigen::VectorXd &coefficients) {
-  Eigen::MatrixX3d sum = Eigen::MatrixX3d::Zero(vectors.front().rows(), 3);
-  for (size_t k = 0; k < vectors.size(); ++k)
-    sum += coefficients[long(k)] * vectors[k];
-  return sum;
-}
-
 namespace {
 
 // C from the forms' face vectors, `columns(f, plain)` putting face f's vector of every form side

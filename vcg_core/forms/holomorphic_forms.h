@@ -30,10 +30,6 @@ ConjugateFit conjugate_coefficients(const FaceCorners &faces, const MeshEdges &e
                                     const FaceGeometry &geometry,
                                     const std::vector<Eigen::VectorXd> &harmonic_forms);
 
-// Face vectors of sum_k coefficients[k] * vectors[k].
-Eigen::MatrixX3d combine(const std::vector<Eigen::MatrixX3d> &vectors,
-                         const Eigen::VectorXd &coefficients);
-
 struct LocalCoefficients {
   std::vector<std::complex<double>> f, g;
 };

@@ -153,10 +153,8 @@ void measure_non_holomorphicity(const FaceCorners &faces, const MeshEdges &edges
   out.non_holomorphicity_mean = weighted / total_area;
 }
 
-} // namespace
-
-HolomorphicForms compute_holomorphic_forms(const Mesh &input, SolverKind solver,
-                                           const Progress &progress, const Validation *validated) {
+HolomorphicForms forms_of(const Mesh &input, SolverKind solver, const Progress &progress,
+                          const Validation *validated) {
   const Validation validation = validated ? *validated : validate_mesh(input);
   if (!validation.ok()) throw refusal(validation.main_finding());
   // Computed at unit scale (unit_scale.h): the forms' values on edges do not depend on it.
@@ -171,6 +169,17 @@ HolomorphicForms compute_holomorphic_forms(const Mesh &input, SolverKind solver,
   HolomorphicForms out = compute_holomorphic_forms(prepared, solver, progress);
   out.notes = validation.notes;
   out.timings_ms.front().second += preparing_ms; // "laplacian": edges and weights too
+  return out;
+}
+
+} // namespace
+
+HolomorphicForms compute_holomorphic_forms(const Mesh &input, SolverKind solver,
+                                           const Progress &progress, const Validation *validated) {
+  // The job runs on a worker thread; the callback is called on this one, steadily.
+  HolomorphicForms out;
+  run_reporting(progress,
+                [&](const Progress &relay) { out = forms_of(input, solver, relay, validated); });
   return out;
 }
 
@@ -199,8 +208,8 @@ HolomorphicForms compute_holomorphic_forms(const PreparedMesh &prepared, SolverK
   clock.done("homology");
 
   progress.report(0.2, "factoring the Laplacian");
-  std::unique_ptr<LaplacianSolver> factored = factor_laplacian(
-      cotan_laplacian(vertex_count, edges, weights), solver, {0}, progress.range(0.2, 0.6));
+  std::unique_ptr<LaplacianSolver> factored =
+      factor_laplacian(cotan_laplacian(vertex_count, edges, weights), solver);
   clock.done("factorization");
 
   progress.report(0.6, "harmonic forms");

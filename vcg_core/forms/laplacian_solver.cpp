@@ -93,18 +93,11 @@ private:
 } // namespace
 
 std::unique_ptr<LaplacianSolver> factor_laplacian(const Eigen::SparseMatrix<double> &laplacian,
-                                                  SolverKind kind, const std::vector<int> &pinned,
-                                                  const Progress &waiting) {
+                                                  SolverKind kind, const std::vector<int> &pinned) {
   using Matrix = Eigen::SparseMatrix<double>;
-  std::unique_ptr<LaplacianSolver> factored;
-  report_while(waiting, 0.0, "factoring the Laplacian", [&] {
-    if (kind == SolverKind::cholmod)
-      factored =
-          std::make_unique<PinnedSolver<Eigen::CholmodSupernodalLLT<Matrix>>>(laplacian, pinned);
-    else
-      factored = std::make_unique<PinnedSolver<Eigen::SimplicialLDLT<Matrix>>>(laplacian, pinned);
-  });
-  return factored;
+  if (kind == SolverKind::cholmod)
+    return std::make_unique<PinnedSolver<Eigen::CholmodSupernodalLLT<Matrix>>>(laplacian, pinned);
+  return std::make_unique<PinnedSolver<Eigen::SimplicialLDLT<Matrix>>>(laplacian, pinned);
 }
 
 } // namespace meromorph

@@ -17,8 +17,6 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
-#include "common/progress.h"
-
 namespace meromorph {
 
 enum class SolverKind { cholmod, eigen_ldlt };
@@ -32,11 +30,8 @@ public:
   virtual Eigen::VectorXd solve(const Eigen::VectorXd &right_hand_side) const = 0;
 };
 
-// `waiting`: reported (0 of it, every quarter second) while the factorization runs, which may
-// take seconds on a million vertices (common/progress.h: report_while).
 std::unique_ptr<LaplacianSolver> factor_laplacian(const Eigen::SparseMatrix<double> &laplacian,
                                                   SolverKind kind = SolverKind::cholmod,
-                                                  const std::vector<int> &pinned = {0},
-                                                  const Progress &waiting = {});
+                                                  const std::vector<int> &pinned = {0});
 
 } // namespace meromorph

@@ -33,8 +33,7 @@ constexpr int local_rings = 10;
 
 } // namespace
 
-Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, int pole_face_asked,
-                             const Progress &waiting) {
+Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, int pole_face_asked) {
   const Mesh &mesh = prepared.mesh;
   const MeshEdges &edges = prepared.edges;
   const std::vector<double> &areas = prepared.vertex_areas;
@@ -43,7 +42,7 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
   // Weights are raised only near folds (two rings), round by round; all of them at the end.
   auto solve = [&](int pole_face) {
     std::vector<char> raise(edges.edge_count(), 0);
-    Genus0Map attempt = genus0_map(prepared, solver, pole_face, raise, waiting);
+    Genus0Map attempt = genus0_map(prepared, solver, pole_face, raise);
     for (int round = 0; round < 4 && !attempt.folded_faces.empty(); ++round) {
       std::vector<char> near(mesh.vert.size(), 0);
       for (int f : attempt.folded_faces)
@@ -57,12 +56,10 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
       std::vector<char> region = near;
       grow_by_rings(edges, region, local_rings);
       Genus0Map local = genus0_map_again_in(prepared, solver, attempt, raise, region);
-      attempt = local.folded_faces.empty()
-                    ? std::move(local)
-                    : genus0_map(prepared, solver, pole_face, raise, waiting);
+      attempt = local.folded_faces.empty() ? std::move(local)
+                                           : genus0_map(prepared, solver, pole_face, raise);
     }
-    if (!attempt.folded_faces.empty())
-      attempt = genus0_map(prepared, solver, pole_face, {}, waiting);
+    if (!attempt.folded_faces.empty()) attempt = genus0_map(prepared, solver, pole_face, {});
     return attempt;
   };
   // The pinned-pole map, its shear removed and its pole region solved again
@@ -70,8 +67,7 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
   auto solve_and_correct = [&](int pole_face) {
     Genus0Map map = solve(pole_face);
     map.values =
-        correct_genus0_map(prepared, map.weights, solver, map.puncture_face, map.values, waiting)
-            .values;
+        correct_genus0_map(prepared, map.weights, solver, map.puncture_face, map.values).values;
     return map;
   };
   Genus0Map map = solve_and_correct(pole_face_asked);

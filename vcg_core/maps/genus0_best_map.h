@@ -25,8 +25,6 @@ struct Genus0Result {
   int puncture_face = -1, raised_weights = 0;
 };
 
-// `waiting`: reported while Laplacians are factored.
-Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, int pole_face,
-                             const Progress &waiting = {});
+Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, int pole_face);
 
 } // namespace meromorph

@@ -90,8 +90,7 @@ std::vector<int> folded_plane_faces(const FaceIncidence &in,
 
 Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
                                     const std::vector<double> &weights, SolverKind solver,
-                                    int puncture_face, const std::vector<PlaneValue> &pinned_map,
-                                    const Progress &waiting) {
+                                    int puncture_face, const std::vector<PlaneValue> &pinned_map) {
   const MeshEdges &edges = prepared.edges;
   const FaceIncidence &in = prepared.incidence;
   Genus0Correction out;
@@ -153,7 +152,7 @@ Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
       fixed[v] = std::abs(d) > 0 ? 1.0 / d : Complex(0, 0);
     }
     const Eigen::VectorXcd zeta =
-        harmonic_extension(laplacian, edges, weights, solver, pinned, fixed, 1, waiting);
+        harmonic_extension(laplacian, edges, weights, solver, pinned, fixed);
     std::vector<char> is_pinned(n, 0);
     for (int v : pinned)
       is_pinned[size_t(v)] = 1;

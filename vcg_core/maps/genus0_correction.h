@@ -38,8 +38,7 @@ struct Genus0Correction {
 
 Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
                                     const std::vector<double> &weights, SolverKind solver,
-                                    int puncture_face, const std::vector<PlaneValue> &pinned_map,
-                                    const Progress &waiting = {});
+                                    int puncture_face, const std::vector<PlaneValue> &pinned_map);
 
 // Faces whose image turns clockwise in the plane (checked in the chart z where |z| < 1 on all
 // corners, else in 1 / z), or is flat; faces below what doubles resolve are not counted.

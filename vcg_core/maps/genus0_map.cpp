@@ -109,10 +109,8 @@ bool values_crowd(const MeshEdges &edges, const Eigen::VectorXcd &z) {
 Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian,
                                     const MeshEdges &edges, const std::vector<double> &weights,
                                     SolverKind solver, const std::vector<int> &pinned,
-                                    const Eigen::VectorXcd &fixed, int refinement_steps,
-                                    const Progress &waiting) {
-  const std::unique_ptr<LaplacianSolver> factored =
-      factor_laplacian(laplacian, solver, pinned, waiting);
+                                    const Eigen::VectorXcd &fixed, int refinement_steps) {
+  const std::unique_ptr<LaplacianSolver> factored = factor_laplacian(laplacian, solver, pinned);
   Eigen::VectorXcd out(fixed.size());
   const Eigen::VectorXd given_real = fixed.real(), given_imag = fixed.imag();
   out.real() = factored->solve(-(laplacian * given_real)) + given_real;
@@ -131,7 +129,7 @@ Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian
 }
 
 Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int puncture_face,
-                     const std::vector<char> &raise, const Progress &waiting) {
+                     const std::vector<char> &raise) {
   const Mesh &mesh = prepared.mesh;
   const MeshEdges &edges = prepared.edges;
   const std::vector<double> &weights = prepared.weights;
@@ -157,8 +155,8 @@ Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int punctu
   Eigen::VectorXcd fixed(long(mesh.vert.size()));
   fixed.real() = fixed_u;
   fixed.imag() = fixed_v;
-  const Eigen::VectorXcd z = harmonic_extension(laplacian, edges, positive, solver, corners, fixed,
-                                                refinement_steps, waiting);
+  const Eigen::VectorXcd z =
+      harmonic_extension(laplacian, edges, positive, solver, corners, fixed, refinement_steps);
   const Eigen::VectorXd u = z.real(), v = z.imag();
 
   // Scale so that the median |z| is 1 (a Moebius scaling; centring comes later).

@@ -46,16 +46,14 @@ bool values_crowd(const MeshEdges &edges, const Eigen::VectorXcd &z);
 Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian,
                                     const MeshEdges &edges, const std::vector<double> &weights,
                                     SolverKind solver, const std::vector<int> &pinned,
-                                    const Eigen::VectorXcd &fixed, int refinement_steps = 1,
-                                    const Progress &waiting = {});
+                                    const Eigen::VectorXcd &fixed, int refinement_steps = 1);
 
 // `raise` (one flag per edge; empty: every edge) says which weights get the positive floor: the
 // plain cotangent map is the most conformal, but with negative weights it may fold;
 // `folded_faces` lists the faces turned over in the plane, so that a caller can raise the weights
 // around them only, and all of them as the last resort.
-// `waiting`: reported while the Laplacian is factored (laplacian_solver.h).
 Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int puncture_face = -1,
-                     const std::vector<char> &raise = {}, const Progress &waiting = {});
+                     const std::vector<char> &raise = {});
 
 // `first` with the vertices of `region` (one flag per vertex) solved again with the weights of
 // `raise` given the floor, every other vertex and the puncture face's corners kept where `first`

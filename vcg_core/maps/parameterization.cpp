@@ -94,8 +94,7 @@ Parameterization parameterize(Mesh &mesh, const ParameterizeOptions &options,
   progress.report(0.6, "meromorphic function");
   WrittenSphere written;
   if (out.genus == 0) {
-    const Genus0Result map =
-        best_genus0_map(prepared, options.solver, options.puncture_face, progress.range(0.6, 0.7));
+    const Genus0Result map = best_genus0_map(prepared, options.solver, options.puncture_face);
     out.puncture_face = map.puncture_face;
     out.raised_weights = map.raised_weights;
     out.method = "genus 0: harmonic map with a simple pole (strictly positive weights), inverse "

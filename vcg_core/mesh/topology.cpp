@@ -34,13 +34,15 @@ std::vector<char> boundary_vertices(const Mesh &mesh) {
   return boundary;
 }
 
-void update_face_adjacency(Mesh &mesh) {
-  // The live half-edges h = 3 f + k grouped by their lower vertex (a counting sort), then by
-  // their upper one within each vertex's few.
+namespace {
+
+// Per live half-edge h = 3 f + k its partner: itself on a border, the other face's half-edge on
+// an edge of two faces; empty when some edge has more than two faces. Deleted faces' half-edges
+// get -1.
+std::vector<int> half_edge_partners(const Mesh &mesh) {
   const size_t half_edges = 3 * mesh.face.size();
   const HalfEdgesByLowVertex grouped = half_edges_by_low_vertex(mesh);
   const std::vector<int> &start = grouped.start, &by_low = grouped.by_low, &high = grouped.high;
-  // Every half-edge's partner: itself on a border, the other face's on an edge of two faces.
   std::vector<int> partner(half_edges, -1);
   for (size_t v = 0; v < mesh.vert.size(); ++v)
     for (int i = start[v]; i < start[v + 1]; ++i) {
@@ -53,14 +55,22 @@ void update_face_adjacency(Mesh &mesh) {
         ++count;
         found = other;
       }
-      if (count > 2) { // a non-manifold edge: vcglib's fans of faces
-        vcg::tri::UpdateTopology<Mesh>::FaceFace(mesh);
-        return;
-      }
+      if (count > 2) return {}; // a non-manifold edge
       partner[size_t(h)] = count == 2 ? found : h;
       if (count == 2) partner[size_t(found)] = h;
     }
-  for (size_t h = 0; h < half_edges; ++h) {
+  return partner;
+}
+
+} // namespace
+
+void update_face_adjacency(Mesh &mesh) {
+  const std::vector<int> partner = half_edge_partners(mesh);
+  if (partner.empty()) { // a non-manifold edge: vcglib's fans of faces
+    vcg::tri::UpdateTopology<Mesh>::FaceFace(mesh);
+    return;
+  }
+  for (size_t h = 0; h < partner.size(); ++h) {
     MeshFace &face = mesh.face[h / 3];
     if (face.IsD()) continue;
     const int k = int(h % 3), other = partner[h];
@@ -70,54 +80,33 @@ void update_face_adjacency(Mesh &mesh) {
 }
 
 bool is_closed_oriented_connected_manifold(const Mesh &mesh) {
-  const size_t face_count = mesh.face.size(), half_edges = 3 * face_count;
+  const size_t face_count = mesh.face.size();
   if (face_count < 3) return false;
   for (const MeshFace &face : mesh.face)
     if (face.IsD() || repeats_a_vertex(face)) return false;
-  // Half-edges by their starting vertex (a counting sort); the twin of a -> b is the one b -> a.
-  std::vector<int> corner(half_edges); // the vertex at corner h % 3 of face h / 3
-  for (size_t h = 0; h < half_edges; ++h)
-    corner[h] = index_of(mesh, mesh.face[h / 3].cV(int(h % 3)));
-  auto from = [&](size_t h) { return corner[h]; };
-  auto to = [&](size_t h) { return corner[h - h % 3 + (h % 3 + 1) % 3]; };
-  std::vector<int> start(mesh.vert.size() + 1, 0);
-  for (size_t h = 0; h < half_edges; ++h)
-    ++start[size_t(from(h)) + 1];
-  for (size_t v = 0; v < mesh.vert.size(); ++v)
-    start[v + 1] += start[v];
-  std::vector<int> by_start(half_edges), fill(start.begin(), start.end() - 1);
-  for (size_t h = 0; h < half_edges; ++h)
-    by_start[size_t(fill[size_t(from(h))]++)] = int(h);
-  // Each half-edge a -> b: no other a -> b, exactly one b -> a.
-  std::vector<int> twin(half_edges, -1);
-  for (size_t h = 0; h < half_edges; ++h) {
-    const int a = from(h), b = to(h);
-    for (int i = start[size_t(a)]; i < start[size_t(a) + 1]; ++i)
-      if (size_t(by_start[size_t(i)]) != h && to(size_t(by_start[size_t(i)])) == b) return false;
-    int found = -1;
-    for (int i = start[size_t(b)]; i < start[size_t(b) + 1]; ++i)
-      if (to(size_t(by_start[size_t(i)])) == a) {
-        if (found >= 0) return false;
-        found = by_start[size_t(i)];
-      }
-    if (found < 0) return false;
-    twin[h] = found;
+  // Every side shared with exactly one other face, which runs it the other way: the twin.
+  const std::vector<int> twin = half_edge_partners(mesh);
+  if (twin.empty()) return false;
+  auto vertex_at = [&](size_t h) { return mesh.face[h / 3].cV(int(h % 3)); };
+  std::vector<int> out_of(mesh.vert.size(), 0); // half-edges leaving each vertex
+  for (size_t h = 0; h < twin.size(); ++h) {
+    const size_t t = size_t(twin[h]);
+    if (t == h || vertex_at(t) != vertex_at(3 * (h / 3) + (h % 3 + 1) % 3)) return false;
+    ++out_of[size_t(index_of(mesh, vertex_at(h)))];
   }
-  // One fan around every vertex: turning from half-edge a -> b (out of a) to the twin of the
-  // half-edge that enters a in the same face reaches every half-edge out of a.
-  std::vector<char> turned(half_edges, 0);
-  for (size_t v = 0; v < mesh.vert.size(); ++v) {
-    const int count = start[v + 1] - start[v];
-    if (count == 0) continue; // unreferenced: reported by check_vertices, no matter to topology
-    int h = by_start[size_t(start[v])], seen = 0;
+  // One fan around every vertex: turning from a half-edge out of a vertex to the twin of the
+  // half-edge that enters it in the same face goes round all the half-edges out of it.
+  std::vector<char> turned(twin.size(), 0);
+  for (size_t first = 0; first < twin.size(); ++first) {
+    if (turned[first]) continue;
+    int seen = 0;
+    size_t h = first;
     do {
-      if (turned[size_t(h)]) return false;
-      turned[size_t(h)] = 1;
+      turned[h] = 1;
       ++seen;
-      const int entering = 3 * (h / 3) + (h % 3 + 2) % 3;
-      h = twin[size_t(entering)];
-    } while (h != by_start[size_t(start[v])] && seen <= count);
-    if (seen != count) return false;
+      h = size_t(twin[3 * (h / 3) + (h % 3 + 2) % 3]);
+    } while (h != first);
+    if (seen != out_of[size_t(index_of(mesh, vertex_at(first)))]) return false;
   }
   // One component: faces reached across their sides from face 0.
   std::vector<char> reached(face_count, 0);

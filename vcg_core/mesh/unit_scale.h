@@ -39,8 +39,7 @@ public:
   ~UnitScaleInPlace();
   UnitScaleInPlace(const UnitScaleInPlace &) = delete;
   UnitScaleInPlace &operator=(const UnitScaleInPlace &) = delete;
-  // The position vertex v had before.
-  const Point3 &original(size_t v) const { return original_[v]; }
+  // The positions the vertices had before, by vertex index.
   const std::vector<Point3> &originals() const { return original_; }
 
 private:
