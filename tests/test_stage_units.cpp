@@ -285,6 +285,59 @@ TEST(LaplacianSolver, BothFactorizationsSolveThePinnedSystem) {
       EXPECT_NEAR(free[v], with_boundary[v], 1e-8) << v;
 }
 
+// The elimination order of one factorization handed to the next on a subset (as the genus-0
+// south-pole step does), and several right-hand sides at once: the same solutions, for both
+// factorizations; the order returned lists every free vertex once.
+TEST(LaplacianSolver, HandedOnOrderAndSeveralColumnsSolveTheSame) {
+  Mesh mesh;
+  make_icosphere(mesh, 3);
+  const PreparedMesh prepared = prepare_mesh(mesh);
+  const int n = int(mesh.vert.size());
+  const Eigen::SparseMatrix<double> laplacian =
+      cotan_laplacian(n, prepared.edges, prepared.weights);
+  for (SolverKind kind : {SolverKind::cholmod, SolverKind::eigen_ldlt}) {
+    const std::vector<int> first_pinned = {1, 2, 3};
+    const std::vector<int> order =
+        factor_laplacian(laplacian, kind, first_pinned)->elimination_order();
+    std::vector<int> sorted = order;
+    std::sort(sorted.begin(), sorted.end());
+    ASSERT_EQ(int(sorted.size()), n - 3) << solver_name(kind);
+    EXPECT_TRUE(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end());
+    for (int v : first_pinned)
+      EXPECT_FALSE(std::binary_search(sorted.begin(), sorted.end(), v));
+    // A Dirichlet problem on a region: the vertices nearest the north pole pinned.
+    std::vector<int> pinned;
+    for (int v = 0; v < n; ++v)
+      if (mesh.vert[size_t(v)].cP()[2] > 0.6) pinned.push_back(v);
+    std::vector<int> handed_on = first_pinned;
+    handed_on.insert(handed_on.end(), order.begin(), order.end());
+    Eigen::MatrixXd right(n, 2);
+    for (int v = 0; v < n; ++v) {
+      const auto &p = mesh.vert[size_t(v)].cP();
+      right(v, 0) = std::cos(2.0 * p[0]);
+      right(v, 1) = p[1] * p[2];
+    }
+    for (int v : pinned)
+      right.row(v).setZero();
+    const Eigen::MatrixXd own = factor_laplacian(laplacian, kind, pinned)->solve_columns(right);
+    const auto reordered = factor_laplacian(laplacian, kind, pinned, handed_on);
+    const Eigen::MatrixXd both = reordered->solve_columns(right);
+    EXPECT_LT((both - own).cwiseAbs().maxCoeff(), 1e-10 * own.cwiseAbs().maxCoeff());
+    for (int k = 0; k < 2; ++k)
+      EXPECT_LT((reordered->solve(right.col(k)) - own.col(k)).cwiseAbs().maxCoeff(),
+                1e-10 * own.cwiseAbs().maxCoeff());
+    // The residual at the free vertices is zero; the pinned ones stay 0.
+    const Eigen::MatrixXd residual = laplacian * both - right;
+    for (int v = 0; v < n; ++v) {
+      if (std::binary_search(pinned.begin(), pinned.end(), v))
+        EXPECT_EQ(both.row(v).cwiseAbs().maxCoeff(), 0.0);
+      else
+        EXPECT_LT(residual.row(v).cwiseAbs().maxCoeff(), 1e-9) << v;
+    }
+  }
+  EXPECT_THROW(factor_laplacian(laplacian, SolverKind::cholmod, {0}, {1, 2, 3}), std::logic_error);
+}
+
 struct TorusForms {
   Mesh mesh;
   std::unique_ptr<PreparedMesh> prepared;

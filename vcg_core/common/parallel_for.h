@@ -8,6 +8,7 @@
 //      end) returns the sum over one chunk of [0, count); the chunks (fixed, whatever the number
 //      of cores) run over the cores and their sums are added in chunk order: the same result on
 //      any machine, from one pass over the items however many sums each item feeds.
+//      `parallel_select`: the indices i in [0, count) where test(i) holds, in increasing order.
 #pragma once
 
 #include <algorithm>
@@ -51,6 +52,15 @@ Sum chunked_sum(std::size_t count, const Sum &zero, const Body &body) {
   for (const Sum &part : partial)
     total += part;
   return total;
+}
+
+template <class Test> std::vector<int> parallel_select(std::size_t count, const Test &test) {
+  std::vector<char> selected(count);
+  parallel_for(count, [&](std::size_t i) { selected[i] = test(i) ? 1 : 0; });
+  std::vector<int> out;
+  for (std::size_t i = 0; i < count; ++i)
+    if (selected[i]) out.push_back(int(i));
+  return out;
 }
 
 } // namespace meromorph

@@ -1,10 +1,11 @@
 #include "forms/laplacian_solver.h"
 
-#include <Eigen/CholmodSupport>
+#include <cholmod.h>
+
 #include <Eigen/SparseCholesky>
 
 #include "common/errors.h"
-#include "common/serial_openmp.h"
+#include "common/factorization_threads.h"
 
 namespace meromorph {
 
@@ -18,86 +19,201 @@ const char *solver_name(SolverKind kind) {
   return kind == SolverKind::cholmod ? "cholmod" : "ldlt";
 }
 
+Eigen::VectorXd LaplacianSolver::solve(const Eigen::VectorXd &right_hand_side) const {
+  return solve_columns(right_hand_side);
+}
+
 namespace {
 
-// Free vertices numbered densely; pinned ones get -1.
-std::vector<int> free_numbering(int size, const std::vector<int> &pinned) {
-  std::vector<int> numbering(size, 0);
-  for (int p : pinned)
-    numbering.at(p) = -1;
-  int next = 0;
-  for (int &n : numbering)
-    if (n == 0) n = next++;
-  return numbering;
+// Validation has accepted the mesh (connected, no degenerate faces): what is left is geometry
+// whose cotangent weights span more than double precision can factor.
+InputError not_factored() {
+  return InputError("the cotangent Laplacian could not be factored: the triangles' sizes or "
+                    "angles span more than double precision resolves (a vertex far from the "
+                    "rest, a spike?)");
 }
 
-// L restricted to the free vertices.
-Eigen::SparseMatrix<double> restricted(const Eigen::SparseMatrix<double> &laplacian,
-                                       const std::vector<int> &numbering, int free_count) {
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(size_t(laplacian.nonZeros()));
-  for (int column = 0; column < laplacian.outerSize(); ++column)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(laplacian, column); it; ++it) {
-      const int row = numbering[it.row()], col = numbering[it.col()];
-      if (row >= 0 && col >= 0) entries.emplace_back(row, col, it.value());
-    }
-  Eigen::SparseMatrix<double> reduced(free_count, free_count);
-  reduced.setFromTriplets(entries.begin(), entries.end());
-  return reduced;
-}
+// The free vertices numbered densely in increasing order (pinned ones get -1), and back.
+struct FreeVertices {
+  std::vector<int> number, vertex;
 
-// CHOLMOD's fill-reducing ordering: AMD alone. By default CHOLMOD tries AMD and, where the fill
-// looks high, METIS too and keeps the better; on these Laplacians the METIS attempt costs more than
-// its lower fill saves (measured: eight x1024, 786k vertices: factorization 10.5 s -> 5.8 s,
-// peak memory +9%; kitten x16 7.1 -> 4.4 s; maxplanck x64's map 17.9 -> 11.5 s).
-template <class Factorization> void configure(Factorization &) {}
-template <class Matrix> void configure(Eigen::CholmodSupernodalLLT<Matrix> &factorization) {
-  cholmod_common &common = factorization.cholmod();
-  common.nmethods = 1;
-  common.method[0].ordering = CHOLMOD_AMD;
-}
-
-template <class Factorization> class PinnedSolver : public LaplacianSolver {
-public:
-  PinnedSolver(const Eigen::SparseMatrix<double> &laplacian, const std::vector<int> &pinned)
-      : numbering_(free_numbering(int(laplacian.rows()), pinned)),
-        free_count_(int(laplacian.rows()) - int(pinned.size())) {
-    configure(factorization_);
-    const SerialOpenMP one_thread; // serial_openmp.h: CHOLMOD's fixed four threads per supernode
-    factorization_.compute(restricted(laplacian, numbering_, free_count_));
-    if (factorization_.info() != Eigen::Success)
-      // Validation has accepted the mesh (connected, no degenerate faces): what is left is
-      // geometry whose cotangent weights span more than double precision can factor.
-      throw InputError("the cotangent Laplacian could not be factored: the triangles' sizes or "
-                       "angles span more than double precision resolves (a vertex far from the "
-                       "rest, a spike?)");
+  FreeVertices(int size, const std::vector<int> &pinned) : number(size_t(size), 0) {
+    for (int p : pinned)
+      number.at(size_t(p)) = -1;
+    for (int v = 0; v < size; ++v)
+      if (number[size_t(v)] == 0) {
+        number[size_t(v)] = int(vertex.size());
+        vertex.push_back(v);
+      }
   }
-  Eigen::VectorXd solve(const Eigen::VectorXd &b) const override {
-    Eigen::VectorXd free_b(free_count_);
-    for (size_t v = 0; v < numbering_.size(); ++v)
-      if (numbering_[v] >= 0) free_b[numbering_[v]] = b[long(v)];
-    const Eigen::VectorXd free_x = factorization_.solve(free_b);
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
-    for (size_t v = 0; v < numbering_.size(); ++v)
-      if (numbering_[v] >= 0) x[long(v)] = free_x[numbering_[v]];
-    return x;
+  int count() const { return int(vertex.size()); }
+
+  Eigen::MatrixXd gathered(const Eigen::MatrixXd &b) const {
+    Eigen::MatrixXd out(count(), b.cols());
+    for (int i = 0; i < count(); ++i)
+      out.row(i) = b.row(vertex[size_t(i)]);
+    return out;
+  }
+  Eigen::MatrixXd scattered(const Eigen::MatrixXd &x, long rows) const {
+    Eigen::MatrixXd out = Eigen::MatrixXd::Zero(rows, x.cols());
+    for (int i = 0; i < count(); ++i)
+      out.row(vertex[size_t(i)]) = x.row(i);
+    return out;
+  }
+  // Positions (free numbers) in the order of `vertices`, pinned ones skipped; all free ones.
+  std::vector<int> positions(const std::vector<int> &vertices) const {
+    std::vector<int> out;
+    for (int v : vertices)
+      if (number.at(size_t(v)) >= 0) out.push_back(number[size_t(v)]);
+    if (int(out.size()) != count())
+      throw std::logic_error("an elimination order must list every free vertex once");
+    return out;
+  }
+};
+
+// The lower triangle of L restricted to the free vertices, compressed by columns: the free
+// numbering keeps the vertices' order, so every column's rows stay sorted.
+struct LowerTriangle {
+  std::vector<int> column_start, rows;
+  std::vector<double> values;
+
+  LowerTriangle(const Eigen::SparseMatrix<double> &laplacian, const FreeVertices &free) {
+    column_start.reserve(size_t(free.count()) + 1);
+    rows.reserve(size_t(laplacian.nonZeros()) / 2 + size_t(free.count()));
+    values.reserve(rows.capacity());
+    column_start.push_back(0);
+    for (int v : free.vertex) {
+      const int column = free.number[size_t(v)];
+      for (Eigen::SparseMatrix<double>::InnerIterator it(laplacian, v); it; ++it) {
+        const int row = free.number[size_t(it.row())];
+        if (row < column) continue; // pinned (-1) or above the diagonal
+        rows.push_back(row);
+        values.push_back(it.value());
+      }
+      column_start.push_back(int(rows.size()));
+    }
+  }
+  cholmod_sparse view() {
+    cholmod_sparse a{};
+    a.nrow = a.ncol = column_start.size() - 1;
+    a.nzmax = rows.size();
+    a.p = column_start.data();
+    a.i = rows.data();
+    a.x = values.data();
+    a.stype = -1; // symmetric, lower triangle stored
+    a.itype = CHOLMOD_INT;
+    a.xtype = CHOLMOD_REAL;
+    a.dtype = CHOLMOD_DOUBLE;
+    a.sorted = 1;
+    a.packed = 1;
+    return a;
+  }
+};
+
+// CHOLMOD's supernodal LL^T, ordered by AMD alone or by the order given. By default CHOLMOD
+// tries AMD and, where the fill looks high, METIS too and keeps the better; on these Laplacians
+// the METIS attempt costs more than its lower fill saves (measured: eight x1024, 786k vertices:
+// factorization 10.5 s -> 5.8 s, peak memory +9%). CHOLMOD keeps workspace in its common
+// object: solves are not to be called from two threads at once.
+class CholmodSolver : public LaplacianSolver {
+public:
+  CholmodSolver(const Eigen::SparseMatrix<double> &laplacian, const std::vector<int> &pinned,
+                const std::vector<int> &order)
+      : free_(int(laplacian.rows()), pinned) {
+    cholmod_start(&common_);
+    common_.nmethods = 1;
+    common_.method[0].ordering = order.empty() ? CHOLMOD_AMD : CHOLMOD_GIVEN;
+    common_.supernodal = CHOLMOD_SUPERNODAL;
+    std::vector<int> given = order.empty() ? std::vector<int>{} : free_.positions(order);
+    const FactorizationThreads threads(free_.count()); // common/factorization_threads.h
+    {
+      LowerTriangle lower(laplacian, free_);
+      cholmod_sparse matrix = lower.view();
+      factor_ =
+          cholmod_analyze_p(&matrix, given.empty() ? nullptr : given.data(), nullptr, 0, &common_);
+      if (!factor_ || !cholmod_factorize(&matrix, factor_, &common_) ||
+          common_.status != CHOLMOD_OK || factor_->minor < factor_->n) {
+        release();
+        throw not_factored();
+      }
+    }
+  }
+  ~CholmodSolver() override { release(); }
+
+  Eigen::MatrixXd solve_columns(const Eigen::MatrixXd &b) const override {
+    Eigen::MatrixXd free_b = free_.gathered(b);
+    cholmod_dense right{};
+    right.nrow = size_t(free_b.rows());
+    right.ncol = size_t(free_b.cols());
+    right.nzmax = right.nrow * right.ncol;
+    right.d = right.nrow;
+    right.x = free_b.data();
+    right.xtype = CHOLMOD_REAL;
+    right.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense *solution = cholmod_solve(CHOLMOD_A, factor_, &right, &common_);
+    if (!solution) throw not_factored();
+    const Eigen::Map<const Eigen::MatrixXd> x(static_cast<const double *>(solution->x),
+                                              free_b.rows(), free_b.cols());
+    Eigen::MatrixXd out = free_.scattered(x, b.rows());
+    cholmod_free_dense(&solution, &common_);
+    return out;
+  }
+
+  std::vector<int> elimination_order() const override {
+    const int *permutation = static_cast<const int *>(factor_->Perm);
+    std::vector<int> order(size_t(free_.count()));
+    for (size_t k = 0; k < order.size(); ++k)
+      order[k] = free_.vertex[size_t(permutation[k])];
+    return order;
   }
 
 private:
-  std::vector<int> numbering_;
-  int free_count_;
-  // Eigen's solve() is const, but CHOLMOD's wrapper keeps workspace in the object.
-  mutable Factorization factorization_;
+  void release() {
+    if (factor_) cholmod_free_factor(&factor_, &common_);
+    cholmod_finish(&common_);
+  }
+
+  FreeVertices free_;
+  mutable cholmod_common common_;
+  cholmod_factor *factor_ = nullptr;
+};
+
+// Eigen's simplicial LDL^T, its own AMD ordering (to check CHOLMOD against).
+class EigenSolver : public LaplacianSolver {
+public:
+  EigenSolver(const Eigen::SparseMatrix<double> &laplacian, const std::vector<int> &pinned)
+      : free_(int(laplacian.rows()), pinned) {
+    LowerTriangle lower(laplacian, free_);
+    const Eigen::Map<const Eigen::SparseMatrix<double>> matrix(
+        free_.count(), free_.count(), long(lower.rows.size()), lower.column_start.data(),
+        lower.rows.data(), lower.values.data());
+    factorization_.compute(matrix);
+    if (factorization_.info() != Eigen::Success) throw not_factored();
+  }
+  Eigen::MatrixXd solve_columns(const Eigen::MatrixXd &b) const override {
+    return free_.scattered(factorization_.solve(free_.gathered(b)), b.rows());
+  }
+  std::vector<int> elimination_order() const override {
+    std::vector<int> order(size_t(free_.count()));
+    const auto &position = factorization_.permutationP().indices(); // of each free vertex
+    for (int k = 0; k < free_.count(); ++k)
+      order[size_t(position[k])] = free_.vertex[size_t(k)];
+    return order;
+  }
+
+private:
+  FreeVertices free_;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> factorization_;
 };
 
 } // namespace
 
 std::unique_ptr<LaplacianSolver> factor_laplacian(const Eigen::SparseMatrix<double> &laplacian,
-                                                  SolverKind kind, const std::vector<int> &pinned) {
-  using Matrix = Eigen::SparseMatrix<double>;
+                                                  SolverKind kind, const std::vector<int> &pinned,
+                                                  const std::vector<int> &elimination_order) {
   if (kind == SolverKind::cholmod)
-    return std::make_unique<PinnedSolver<Eigen::CholmodSupernodalLLT<Matrix>>>(laplacian, pinned);
-  return std::make_unique<PinnedSolver<Eigen::SimplicialLDLT<Matrix>>>(laplacian, pinned);
+    return std::make_unique<CholmodSolver>(laplacian, pinned, elimination_order);
+  return std::make_unique<EigenSolver>(laplacian, pinned);
 }
 
 } // namespace meromorph

@@ -1,13 +1,18 @@
 // Factor the cotangent Laplacian once, solve many times.
 //
-// In:  the V x V cotangent Laplacian of a connected mesh (singular: its kernel is the constants)
-//      and which factorization to use.
+// In:  the V x V cotangent Laplacian of a connected mesh (singular: its kernel is the constants),
+//      which factorization to use, the pinned vertices and, optionally, the order in which to
+//      eliminate the free ones.
 // Out: a solver for L x = b at the free vertices, with x = 0 at the pinned vertices (default:
-// vertex
-//      0 alone, which with b summing to zero solves the singular system; pinning a set of vertices
-//      gives Dirichlet problems: put -L_free,pinned x_pinned into b). The reduced matrix is
-//      symmetric positive definite. CHOLMOD's supernodal Cholesky (on OpenBLAS) is the default;
-//      Eigen's SimplicialLDLT is there to check it against.
+//      vertex 0 alone, which with b summing to zero solves the singular system; pinning a set of
+//      vertices gives Dirichlet problems: put -L_free,pinned x_pinned into b). The reduced matrix
+//      is symmetric positive definite. CHOLMOD's supernodal Cholesky (on OpenBLAS, fill-reducing
+//      ordering AMD) is the default; Eigen's SimplicialLDLT is there to check it against.
+//      Several right-hand sides at once (`solve_columns`) share one pass over the factor. The
+//      elimination order of a factorization can be handed to the next one on a subset of the
+//      vertices: the order a good ordering induces on a principal submatrix fills in no more than
+//      the whole matrix did, and the ordering (about a fifth of the factorization) is not computed
+//      again.
 #pragma once
 
 #include <memory>
@@ -27,11 +32,18 @@ const char *solver_name(SolverKind kind);
 class LaplacianSolver {
 public:
   virtual ~LaplacianSolver() = default;
-  virtual Eigen::VectorXd solve(const Eigen::VectorXd &right_hand_side) const = 0;
+  Eigen::VectorXd solve(const Eigen::VectorXd &right_hand_side) const;
+  // Column by column: V x k in, V x k out.
+  virtual Eigen::MatrixXd solve_columns(const Eigen::MatrixXd &right_hand_sides) const = 0;
+  // The free vertices in the order the factorization eliminated them.
+  virtual std::vector<int> elimination_order() const = 0;
 };
 
+// `elimination_order` (empty: the solver's own ordering) lists vertices; the free ones among them,
+// which must be all of them, are eliminated in that order (CHOLMOD; Eigen's LDL^T keeps its own).
 std::unique_ptr<LaplacianSolver> factor_laplacian(const Eigen::SparseMatrix<double> &laplacian,
                                                   SolverKind kind = SolverKind::cholmod,
-                                                  const std::vector<int> &pinned = {0});
+                                                  const std::vector<int> &pinned = {0},
+                                                  const std::vector<int> &elimination_order = {});
 
 } // namespace meromorph

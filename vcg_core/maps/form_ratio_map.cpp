@@ -9,7 +9,7 @@
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
 
-#include "common/serial_openmp.h"
+#include "common/factorization_threads.h"
 #include "forms/holomorphic_forms.h"
 #include "mesh/face_vectors.h"
 #include "mesh/mesh_edges.h"
@@ -174,7 +174,7 @@ std::optional<Eigen::VectorXcd> solve_hermitian(const MeshEdges &edges, ChartSys
         system.right, start.allFinite() ? start : Eigen::VectorXcd::Zero(n));
     if (iterated.info() == Eigen::Success && solution.allFinite()) return solution;
   }
-  const SerialOpenMP one_thread; // common/serial_openmp.h
+  const FactorizationThreads threads(hermitian.rows()); // common/factorization_threads.h
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<Complex>, Eigen::Lower> factored(hermitian);
   if (factored.info() != Eigen::Success) return std::nullopt;
   Eigen::VectorXcd solution = factored.solve(system.right);

@@ -1,5 +1,6 @@
 #include "maps/genus0_best_map.h"
 
+#include "common/parallel_for.h"
 #include "maps/genus0_correction.h"
 #include "maps/genus0_map.h"
 #include "mesh/face_vectors.h"
@@ -10,11 +11,15 @@ namespace {
 
 // Faces whose image is below double resolution (sphere_geometry.h).
 int collapsed_faces(const FaceIncidence &in, const std::vector<PlaneValue> &values) {
-  int count = 0;
-  for (const std::array<int, 3> &c : in.corners)
-    count += collapsed_image(to_sphere(values[size_t(c[0])]), to_sphere(values[size_t(c[1])]),
-                             to_sphere(values[size_t(c[2])]));
-  return count;
+  return chunked_sum(in.corners.size(), 0, [&](size_t begin, size_t end) {
+    int count = 0;
+    for (size_t f = begin; f < end; ++f) {
+      const std::array<int, 3> &c = in.corners[f];
+      count += collapsed_image(to_sphere(values[size_t(c[0])]), to_sphere(values[size_t(c[1])]),
+                               to_sphere(values[size_t(c[2])]));
+    }
+    return count;
+  });
 }
 
 // Marks the vertices within `rings` edges of the marked ones.
@@ -66,8 +71,9 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
   // (genus0_correction.h).
   auto solve_and_correct = [&](int pole_face) {
     Genus0Map map = solve(pole_face);
-    map.values =
-        correct_genus0_map(prepared, map.weights, solver, map.puncture_face, map.values).values;
+    map.values = correct_genus0_map(prepared, map.weights, solver, map.puncture_face, map.values,
+                                    map.elimination_order)
+                     .values;
     return map;
   };
   Genus0Map map = solve_and_correct(pole_face_asked);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/parallel_for.h"
 #include "maps/genus0_map.h"
 #include "mesh/cotan_laplacian.h"
 
@@ -41,15 +42,17 @@ double median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
-// The vertices ordered by |z - centre|, nearest first.
-std::vector<int> by_distance_from(const std::vector<PlaneValue> &values, Complex centre) {
-  std::vector<std::pair<double, int>> order;
-  for (size_t v = 0; v < values.size(); ++v)
-    order.push_back({values[v].infinite ? INFINITY : std::abs(values[v].w - centre), int(v)});
-  std::sort(order.begin(), order.end());
-  std::vector<int> out;
-  for (const auto &entry : order)
-    out.push_back(entry.second);
+// The `count` vertices nearest `centre` (|z - centre|), in no particular order.
+std::vector<int> nearest_to(const std::vector<PlaneValue> &values, Complex centre, size_t count) {
+  std::vector<std::pair<double, int>> order(values.size());
+  parallel_for(values.size(), [&](size_t v) {
+    order[v] = {values[v].infinite ? INFINITY : std::abs(values[v].w - centre), int(v)};
+  });
+  count = std::min(count, order.size());
+  std::nth_element(order.begin(), order.begin() + long(count), order.end());
+  std::vector<int> out(count);
+  for (size_t i = 0; i < count; ++i)
+    out[i] = order[i].second;
   return out;
 }
 
@@ -57,8 +60,7 @@ std::vector<int> by_distance_from(const std::vector<PlaneValue> &values, Complex
 
 std::vector<int> folded_plane_faces(const FaceIncidence &in,
                                     const std::vector<PlaneValue> &values) {
-  std::vector<int> folded;
-  for (size_t f = 0; f < in.corners.size(); ++f) {
+  return parallel_select(in.corners.size(), [&](size_t f) {
     PlaneValue corner[3];
     bool inside_unit_disk = true;
     for (int k = 0; k < 3; ++k) {
@@ -82,15 +84,15 @@ std::vector<int> folded_plane_faces(const FaceIncidence &in,
         z[k] = corner[k].w;
     const double size = std::max(std::abs(z[1] - z[0]), std::abs(z[2] - z[0]));
     const double distance = std::max({std::abs(z[0]), std::abs(z[1]), std::abs(z[2])});
-    if (size < 1e-12 * distance) continue; // below what doubles resolve
-    if (std::imag(std::conj(z[1] - z[0]) * (z[2] - z[0])) <= 0) folded.push_back(int(f));
-  }
-  return folded;
+    if (size < 1e-12 * distance) return false; // below what doubles resolve
+    return std::imag(std::conj(z[1] - z[0]) * (z[2] - z[0])) <= 0;
+  });
 }
 
 Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
                                     const std::vector<double> &weights, SolverKind solver,
-                                    int puncture_face, const std::vector<PlaneValue> &pinned_map) {
+                                    int puncture_face, const std::vector<PlaneValue> &pinned_map,
+                                    const std::vector<int> &elimination_order) {
   const MeshEdges &edges = prepared.edges;
   const FaceIncidence &in = prepared.incidence;
   Genus0Correction out;
@@ -107,24 +109,22 @@ Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
   };
 
   // 1. The shear.
-  std::vector<char> outer(n, 0);
-  {
-    const std::vector<int> order = by_distance_from(pinned_map, Complex(0, 0));
-    for (size_t i = n - size_t(double(n) * outer_share); i < n; ++i)
-      outer[size_t(order[i])] = 1;
-  }
-  std::vector<double> nu_real, nu_imag;
-  for (size_t f = 0; f < in.corners.size(); ++f) {
-    if (int(f) == puncture_face) continue;
-    bool far = false;
+  std::vector<char> outer(n, 1);
+  for (int v : nearest_to(pinned_map, Complex(0, 0), n - size_t(double(n) * outer_share)))
+    outer[size_t(v)] = 0;
+  std::vector<Complex> face_nu(in.corners.size(), Complex(NAN, NAN));
+  parallel_for(in.corners.size(), [&](size_t f) {
+    if (int(f) == puncture_face) return;
     for (int k = 0; k < 3; ++k)
-      far |= bool(outer[size_t(in.corners[f][k])]);
-    if (far) continue;
-    const Complex nu = face_shear(prepared, int(f), pinned_map);
-    if (!std::isfinite(nu.real()) || !std::isfinite(nu.imag())) continue;
-    nu_real.push_back(nu.real());
-    nu_imag.push_back(nu.imag());
-  }
+      if (outer[size_t(in.corners[f][k])]) return;
+    face_nu[f] = face_shear(prepared, int(f), pinned_map);
+  });
+  std::vector<double> nu_real, nu_imag;
+  for (const Complex &nu : face_nu)
+    if (std::isfinite(nu.real()) && std::isfinite(nu.imag())) {
+      nu_real.push_back(nu.real());
+      nu_imag.push_back(nu.imag());
+    }
   if (nu_real.empty()) return out;
   const Complex nu(median(nu_real), median(nu_imag));
   if (!(std::abs(nu) < 0.5)) return out; // not a small shear: not this model's case
@@ -143,16 +143,15 @@ Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
   }
   const Complex south(median(real), median(imag));
   {
-    const std::vector<int> order = by_distance_from(out.values, south);
-    const std::vector<int> pinned(
-        order.begin(), order.begin() + long(std::max<double>(3, double(n) * south_cap_share)));
+    const std::vector<int> pinned =
+        nearest_to(out.values, south, size_t(std::max<double>(3, double(n) * south_cap_share)));
     Eigen::VectorXcd fixed = Eigen::VectorXcd::Zero(long(n));
     for (int v : pinned) {
       const Complex d = out.values[size_t(v)].w - south;
       fixed[v] = std::abs(d) > 0 ? 1.0 / d : Complex(0, 0);
     }
     const Eigen::VectorXcd zeta =
-        harmonic_extension(laplacian, edges, weights, solver, pinned, fixed);
+        harmonic_extension(laplacian, edges, weights, solver, pinned, fixed, 1, elimination_order);
     std::vector<char> is_pinned(n, 0);
     for (int v : pinned)
       is_pinned[size_t(v)] = 1;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "common/errors.h"
+#include "common/parallel_for.h"
 #include "mesh/cotan_laplacian.h"
 #include "mesh/face_vectors.h"
 #include "sphere/sphere_geometry.h"
@@ -80,9 +81,8 @@ std::vector<int> pole_triangle(const Mesh &mesh, const FaceGeometry &geometry, i
 // Orientation in the plane: every face but the pole face must turn counter-clockwise.
 std::vector<int> folds_in_the_plane(const FaceIncidence &in, const std::vector<PlaneValue> &values,
                                     int puncture_face) {
-  std::vector<int> folded;
-  for (size_t f = 0; f < in.corners.size(); ++f) {
-    if (int(f) == puncture_face) continue;
+  return parallel_select(in.corners.size(), [&](size_t f) {
+    if (int(f) == puncture_face) return false;
     Complex z[3];
     for (int k = 0; k < 3; ++k)
       z[k] = values[size_t(in.corners[f][k])].w;
@@ -90,41 +90,53 @@ std::vector<int> folds_in_the_plane(const FaceIncidence &in, const std::vector<P
     // weight can unfold it (a better pole can; see parameterization.cpp).
     const double size = std::max(std::abs(z[1] - z[0]), std::abs(z[2] - z[0]));
     const double distance = std::max({std::abs(z[0]), std::abs(z[1]), std::abs(z[2])});
-    if (size < 1e-12 * distance) continue;
-    if (std::imag(std::conj(z[1] - z[0]) * (z[2] - z[0])) <= 0) folded.push_back(int(f));
-  }
-  return folded;
+    if (size < 1e-12 * distance) return false;
+    return std::imag(std::conj(z[1] - z[0]) * (z[2] - z[0])) <= 0;
+  });
 }
 
 } // namespace
 
 bool values_crowd(const MeshEdges &edges, const Eigen::VectorXcd &z) {
   const double scale = z.cwiseAbs().maxCoeff();
-  double shortest = INFINITY;
-  for (const auto &ends : edges.vertices)
-    shortest = std::min(shortest, std::abs(z[ends[0]] - z[ends[1]]));
-  return !(shortest >= crowding_ratio * scale);
+  // Whether some edge is shorter than the bound (NaN counts as crowded).
+  const double bound = crowding_ratio * scale;
+  const int short_edges = chunked_sum(edges.vertices.size(), 0, [&](size_t begin, size_t end) {
+    int count = 0;
+    for (size_t e = begin; e < end; ++e)
+      count += !(std::abs(z[edges.vertices[e][0]] - z[edges.vertices[e][1]]) >= bound);
+    return count;
+  });
+  return short_edges > 0 || !(bound >= 0);
 }
 
 Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian,
                                     const MeshEdges &edges, const std::vector<double> &weights,
                                     SolverKind solver, const std::vector<int> &pinned,
-                                    const Eigen::VectorXcd &fixed, int refinement_steps) {
-  const std::unique_ptr<LaplacianSolver> factored = factor_laplacian(laplacian, solver, pinned);
+                                    const Eigen::VectorXcd &fixed, int refinement_steps,
+                                    const std::vector<int> &elimination_order,
+                                    std::vector<int> *used_order) {
+  const std::unique_ptr<LaplacianSolver> factored =
+      factor_laplacian(laplacian, solver, pinned, elimination_order);
+  if (used_order) *used_order = factored->elimination_order();
+  Eigen::MatrixXd given(fixed.size(), 2);
+  given.col(0) = fixed.real();
+  given.col(1) = fixed.imag();
+  Eigen::MatrixXd x = factored->solve_columns(-(laplacian * given)) + given;
   Eigen::VectorXcd out(fixed.size());
-  const Eigen::VectorXd given_real = fixed.real(), given_imag = fixed.imag();
-  out.real() = factored->solve(-(laplacian * given_real)) + given_real;
-  out.imag() = factored->solve(-(laplacian * given_imag)) + given_imag;
+  out.real() = x.col(0);
+  out.imag() = x.col(1);
   // Where nothing crowds, one solve is accurate to far below the smallest edge's image: the
   // refinement steps would change nothing a written double shows.
   if (refinement_steps == 0 || !values_crowd(edges, out)) return out;
-  auto refined = [&](Eigen::VectorXd x) {
-    for (int step = 0; step < refinement_steps; ++step)
-      x -= factored->solve(laplacian_of_differences(edges, weights, x));
-    return x;
-  };
-  out.real() = refined(out.real());
-  out.imag() = refined(out.imag());
+  for (int step = 0; step < refinement_steps; ++step) {
+    Eigen::MatrixXd residual(x.rows(), 2);
+    for (int k = 0; k < 2; ++k)
+      residual.col(k) = laplacian_of_differences(edges, weights, x.col(k));
+    x -= factored->solve_columns(residual);
+  }
+  out.real() = x.col(0);
+  out.imag() = x.col(1);
   return out;
 }
 
@@ -155,8 +167,11 @@ Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int punctu
   Eigen::VectorXcd fixed(long(mesh.vert.size()));
   fixed.real() = fixed_u;
   fixed.imag() = fixed_v;
-  const Eigen::VectorXcd z =
-      harmonic_extension(laplacian, edges, positive, solver, corners, fixed, refinement_steps);
+  out.elimination_order = corners;
+  std::vector<int> order;
+  const Eigen::VectorXcd z = harmonic_extension(laplacian, edges, positive, solver, corners, fixed,
+                                                refinement_steps, {}, &order);
+  out.elimination_order.insert(out.elimination_order.end(), order.begin(), order.end());
   const Eigen::VectorXd u = z.real(), v = z.imag();
 
   // Scale so that the median |z| is 1 (a Moebius scaling; centring comes later).
@@ -180,6 +195,7 @@ Genus0Map genus0_map_again_in(const PreparedMesh &prepared, SolverKind solver,
   const int n = int(prepared.mesh.vert.size());
   Genus0Map out;
   out.puncture_face = first.puncture_face;
+  out.elimination_order = first.elimination_order;
   const std::vector<double> positive = raised_weights(prepared.weights, raise, out.raised_weights);
   const Eigen::SparseMatrix<double> laplacian = cotan_laplacian(n, edges, positive);
   std::vector<int> pinned;

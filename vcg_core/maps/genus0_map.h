@@ -32,6 +32,9 @@ struct Genus0Map {
   int raised_weights = 0;
   std::vector<double> weights;   // the edge weights solved with (some raised)
   std::vector<int> folded_faces; // in the plane, before projection, among faces doubles resolve
+  // The puncture face's corners, then the other vertices in the order the solve eliminated them:
+  // an order for the factorizations that follow on the same edges (laplacian_solver.h).
+  std::vector<int> elimination_order;
 };
 
 // Whether some edge's image is shorter than `crowding_ratio` of the largest value: then one
@@ -42,11 +45,14 @@ bool values_crowd(const MeshEdges &edges, const Eigen::VectorXcd &z);
 // The harmonic extension of complex values given at `pinned` (the rest ignored) to every other
 // vertex: one factorization of the free vertices' Laplacian, two solves; where the values crowd
 // (values_crowd), steps of iterative refinement (the residual summed over edge differences, exact
-// there), two solves a step.
+// there), two solves a step. `elimination_order` as in factor_laplacian; where `used_order` is
+// given, the order the factorization used goes there.
 Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian,
                                     const MeshEdges &edges, const std::vector<double> &weights,
                                     SolverKind solver, const std::vector<int> &pinned,
-                                    const Eigen::VectorXcd &fixed, int refinement_steps = 1);
+                                    const Eigen::VectorXcd &fixed, int refinement_steps = 1,
+                                    const std::vector<int> &elimination_order = {},
+                                    std::vector<int> *used_order = nullptr);
 
 // `raise` (one flag per edge; empty: every edge) says which weights get the positive floor: the
 // plain cotangent map is the most conformal, but with negative weights it may fold;

@@ -4,6 +4,8 @@
 
 #include <Eigen/Dense>
 
+#include "common/parallel_for.h"
+
 namespace meromorph {
 
 Eigen::Vector3d ball_translate(const Eigen::Vector3d &x, const Eigen::Vector3d &c) {
@@ -17,25 +19,38 @@ namespace {
 
 Eigen::Vector3d translated_centroid(const std::vector<Eigen::Vector3d> &points,
                                     const std::vector<double> &weights, const Eigen::Vector3d &c) {
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  double total = 0;
-  for (size_t i = 0; i < points.size(); ++i) {
-    sum += weights[i] * ball_translate(points[i], c);
-    total += weights[i];
-  }
-  return sum / total;
+  // x, y, z and the weight, summed.
+  const Eigen::Vector4d sum =
+      chunked_sum(points.size(), Eigen::Vector4d::Zero().eval(), [&](size_t begin, size_t end) {
+        Eigen::Vector4d part = Eigen::Vector4d::Zero();
+        for (size_t i = begin; i < end; ++i) {
+          part.head<3>() += weights[i] * ball_translate(points[i], c);
+          part[3] += weights[i];
+        }
+        return part;
+      });
+  return sum.head<3>() / sum[3];
 }
 
 // The derivative of the translated centroid with respect to the translation, at 0.
 Eigen::Matrix3d centroid_jacobian(const std::vector<Eigen::Vector3d> &points,
                                   const std::vector<double> &weights) {
-  Eigen::Matrix3d moment = Eigen::Matrix3d::Zero();
-  double total = 0;
-  for (size_t i = 0; i < points.size(); ++i) {
-    moment.noalias() += weights[i] * points[i] * points[i].transpose();
-    total += weights[i];
-  }
-  return 2 * moment / total - 2 * Eigen::Matrix3d::Identity();
+  // The moment's six entries and the weight, summed.
+  using Sums = Eigen::Matrix<double, 7, 1>;
+  const Sums sum = chunked_sum(points.size(), Sums::Zero().eval(), [&](size_t begin, size_t end) {
+    Sums part = Sums::Zero();
+    for (size_t i = begin; i < end; ++i) {
+      const Eigen::Vector3d &x = points[i];
+      const double w = weights[i];
+      part += w * (Sums() << x.x() * x.x(), x.y() * x.y(), x.z() * x.z(), x.x() * x.y(),
+                   x.x() * x.z(), x.y() * x.z(), 1.0)
+                      .finished();
+    }
+    return part;
+  });
+  Eigen::Matrix3d moment;
+  moment << sum[0], sum[3], sum[4], sum[3], sum[1], sum[5], sum[4], sum[5], sum[2];
+  return 2 * moment / sum[6] - 2 * Eigen::Matrix3d::Identity();
 }
 
 } // namespace
@@ -110,8 +125,8 @@ MobiusCentering center_on_sphere(std::vector<PlaneValue> &values,
     }
     if (c.norm() == 0) break;
     out.transformation = translation_matrix(c).after(out.transformation);
-    for (size_t i = 0; i < values.size(); ++i)
-      values[i] = out.transformation.apply(original[i]);
+    parallel_for(values.size(),
+                 [&](size_t i) { values[i] = out.transformation.apply(original[i]); });
     points = to_sphere(values);
     const Eigen::Vector3d next = centroid(points, weights);
     if (next.norm() >= current.norm()) {

@@ -5,6 +5,8 @@
 
 #include <Eigen/Geometry>
 
+#include "common/parallel_for.h"
+
 namespace meromorph {
 
 Eigen::Vector3d to_sphere(const Complex &w) {
@@ -19,10 +21,8 @@ Eigen::Vector3d to_sphere(const PlaneValue &value) {
 }
 
 std::vector<Eigen::Vector3d> to_sphere(const std::vector<PlaneValue> &values) {
-  std::vector<Eigen::Vector3d> points;
-  points.reserve(values.size());
-  for (const PlaneValue &value : values)
-    points.push_back(to_sphere(value));
+  std::vector<Eigen::Vector3d> points(values.size());
+  parallel_for(values.size(), [&](size_t i) { points[i] = to_sphere(values[i]); });
   return points;
 }
 
