@@ -4,7 +4,9 @@
 #include <cmath>
 #include <limits>
 #include <queue>
+#include <unordered_set>
 
+#include "common/parallel_for.h"
 #include "maps/branch_star.h"
 #include "sphere/branch_points.h"
 
@@ -53,7 +55,7 @@ Shifted shift_onto(const FaceIncidence &in, const Genus1Map &map, int c, Complex
   const double outer = std::min(ring * (1 + 1e-9) + fade_factor * std::abs(s), clearance);
   Shifted out;
   if (outer < ring * (1 + 1e-9) + 1.5 * std::abs(s)) return out; // no room: not a candidate
-  std::vector<int> seen{c};
+  std::unordered_set<int> seen{c};
   std::queue<int> queue;
   queue.push(c);
   std::vector<int> faces, fading;
@@ -73,10 +75,7 @@ Shifted shift_onto(const FaceIncidence &in, const Genus1Map &map, int c, Complex
     for (int f : in.faces_of_vertex[size_t(v)]) {
       (distance <= ring * (1 + 1e-9) + std::abs(s) ? faces : fading).push_back(f);
       for (int w : in.corners[size_t(f)])
-        if (std::find(seen.begin(), seen.end(), w) == seen.end()) {
-          seen.push_back(w);
-          queue.push(w);
-        }
+        if (seen.insert(w).second) queue.push(w);
     }
   }
   std::sort(faces.begin(), faces.end());
@@ -252,16 +251,15 @@ Genus1Placement place_half_period_branch_points(const PreparedMesh &prepared, co
                                                 std::vector<PlaneValue> &values) {
   const FaceIncidence &in = prepared.incidence;
   Genus1Placement out;
-  std::vector<Eigen::Vector3d> sphere(values.size());
-  for (size_t v = 0; v < values.size(); ++v)
-    sphere[v] = to_sphere(values[v]);
+  std::vector<Eigen::Vector3d> sphere = to_sphere(values);
   reshape_origin_ring(in, map, centring, sphere, values);
   const auto half_periods = map.p_function.half_periods();
   for (int k = 0; k < 3; ++k) {
-    std::vector<std::pair<double, int>> by_distance;
-    for (size_t v = 0; v < map.flat.size(); ++v)
-      by_distance.push_back(
-          {map.p_function.lattice_distance(map.flat[v] - half_periods[size_t(k)]), int(v)});
+    std::vector<std::pair<double, int>> by_distance(map.flat.size());
+    parallel_for(map.flat.size(), [&](size_t v) {
+      by_distance[v] = {map.p_function.lattice_distance(map.flat[v] - half_periods[size_t(k)]),
+                        int(v)};
+    });
     const size_t count = std::min<size_t>(candidates_per_half_period, by_distance.size());
     std::partial_sort(by_distance.begin(), by_distance.begin() + long(count), by_distance.end());
 

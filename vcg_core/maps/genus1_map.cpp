@@ -7,6 +7,7 @@
 #include <queue>
 
 #include "common/errors.h"
+#include "common/parallel_for.h"
 #include "maps/genus1_branch_placement.h"
 #include "mesh/face_vectors.h"
 
@@ -86,10 +87,10 @@ std::vector<int> origin_candidates(const PreparedMesh &prepared, const Eigen::Ve
     double score = widest[size_t(origin)];
     for (const Complex &half : p_function.half_periods()) {
       const auto [ta, tb] = lattice_coordinates(flat[size_t(origin)] + half);
-      for (size_t v = 0; v < vertex_count; ++v) {
+      parallel_for(vertex_count, [&](size_t v) { // squared distances: only their order counts
         const double da = lattice[v][0] - ta, db = lattice[v][1] - tb;
-        distance[v] = {std::abs(da - std::round(da) + (db - std::round(db)) * tau), int(v)};
-      }
+        distance[v] = {std::norm(da - std::round(da) + (db - std::round(db)) * tau), int(v)};
+      });
       std::nth_element(distance.begin(), distance.begin() + 7, distance.end());
       double spot = std::numeric_limits<double>::infinity();
       for (int k = 0; k < 8; ++k)
@@ -128,11 +129,11 @@ Genus1Map genus1_map(const PreparedMesh &prepared, const Eigen::VectorXcd &psi, 
             .front();
   out.flat = integrate_from(origin_vertex, incident, edges, psi);
 
-  out.values.reserve(vertex_count);
-  for (const Complex &z : out.flat) {
-    const bool pole = out.p_function.is_lattice_point(z, 1e-12);
-    out.values.push_back(PlaneValue{pole ? Complex() : out.p_function.value(z), pole});
-  }
+  out.values.resize(size_t(vertex_count));
+  parallel_for(out.flat.size(), [&](size_t v) {
+    const bool pole = out.p_function.is_lattice_point(out.flat[v], 1e-12);
+    out.values[v] = PlaneValue{pole ? Complex() : out.p_function.value(out.flat[v]), pole};
+  });
   const auto roots = out.p_function.roots();
   for (int k = 0; k < 3; ++k)
     out.branch_values[k] = {roots[k], false};

@@ -90,7 +90,7 @@ WeierstrassP::Complex WeierstrassP::shortest_representative(Complex z) const {
   for (int a = -1; a <= 1; ++a)
     for (int b = -1; b <= 1; ++b) {
       const Complex candidate = u - double(a) - double(b) * tau_;
-      if (std::abs(candidate) < std::abs(best)) best = candidate;
+      if (std::norm(candidate) < std::norm(best)) best = candidate; // squares: no hypot
     }
   return best * w1_;
 }

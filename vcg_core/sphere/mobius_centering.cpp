@@ -17,6 +17,9 @@ Eigen::Vector3d ball_translate(const Eigen::Vector3d &x, const Eigen::Vector3d &
 
 namespace {
 
+constexpr size_t sample_size = 16384;
+constexpr double sampled_beyond = 0.1; // centroid norm
+
 Eigen::Vector3d translated_centroid(const std::vector<Eigen::Vector3d> &points,
                                     const std::vector<double> &weights, const Eigen::Vector3d &c) {
   // x, y, z and the weight, summed.
@@ -99,9 +102,24 @@ MobiusCentering center_on_sphere(std::vector<PlaneValue> &values,
   out.centroid_before = centroid(points, weights);
   Eigen::Vector3d current = out.centroid_before;
   for (; out.steps < 100 && current.norm() > 1e-12; ++out.steps) {
+    // Far from centred, the step is chosen on an even sample of the points (their weights
+    // kept): the choice needs the centroid to a percent, not to the last digit, and up to 24
+    // candidates are weighed. The step taken is then measured on all points.
+    const bool sampled = current.norm() > sampled_beyond && points.size() > 2 * sample_size;
+    std::vector<Eigen::Vector3d> sample_points;
+    std::vector<double> sample_weights;
+    if (sampled) {
+      const size_t stride = points.size() / sample_size;
+      for (size_t i = 0; i < points.size(); i += stride) {
+        sample_points.push_back(points[i]);
+        sample_weights.push_back(weights[i]);
+      }
+    }
+    const std::vector<Eigen::Vector3d> &judged = sampled ? sample_points : points;
+    const std::vector<double> &judged_weights = sampled ? sample_weights : weights;
     // Newton step on c -> centroid after translating by c. At c = 0 the translation moves x by
     // -2 c + 2 (x . c) x to first order, so the Jacobian is 2 sum w x x^T / sum w - 2 I.
-    Eigen::Vector3d newton = -centroid_jacobian(points, weights).fullPivLu().solve(current);
+    Eigen::Vector3d newton = -centroid_jacobian(judged, judged_weights).fullPivLu().solve(current);
     if (!newton.allFinite()) newton = Eigen::Vector3d::Zero();
     if (newton.norm() > 0.95) newton *= 0.95 / newton.norm();
     // Far from centred (mass crowded at one spot), Newton's model is poor: also try pushing
@@ -114,7 +132,7 @@ MobiusCentering center_on_sphere(std::vector<PlaneValue> &values,
     Eigen::Vector3d c = Eigen::Vector3d::Zero();
     double best = current.norm();
     for (const Eigen::Vector3d &candidate : candidates) {
-      const double norm = translated_centroid(points, weights, candidate).norm();
+      const double norm = translated_centroid(judged, judged_weights, candidate).norm();
       if (norm < best) {
         best = norm;
         c = candidate;
