@@ -6,6 +6,7 @@
 #include <set>
 #include <tuple>
 
+#include "common/parallel_for.h"
 #include "maps/branch_star.h"
 #include "mesh/mesh_edges.h"
 #include "sphere/branch_points.h"
@@ -44,12 +45,13 @@ std::vector<std::vector<int>> trouble_spots(const FaceIncidence &in,
                                             const std::vector<Eigen::Vector3d> &sphere) {
   const int vertex_count = int(in.faces_of_vertex.size());
   std::vector<char> trouble(vertex_count, 0);
-  for (size_t f = 0; f < in.corners.size(); ++f)
-    if (folded_or_flat(in, sphere, int(f)))
-      for (int v : in.corners[f])
-        trouble[v] = 1;
-  for (int v = 0; v < vertex_count; ++v)
-    if (!trouble[v] && vertex_winding(in, sphere, v) < 1) trouble[v] = 1;
+  for (int f : parallel_select(in.corners.size(),
+                               [&](size_t f) { return folded_or_flat(in, sphere, int(f)); }))
+    for (int v : in.corners[size_t(f)])
+      trouble[size_t(v)] = 1;
+  parallel_for(size_t(vertex_count), [&](size_t v) {
+    if (!trouble[v] && vertex_winding(in, sphere, int(v)) < 1) trouble[v] = 1;
+  });
   std::vector<std::vector<int>> spots;
   std::vector<char> done(vertex_count, 0);
   for (int seed = 0; seed < vertex_count; ++seed) {
