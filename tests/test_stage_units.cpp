@@ -249,6 +249,30 @@ TEST(ZeroAreaFaces, ACapIsFlippedAway) {
   EXPECT_EQ(fix.face_in_work[0], -1); // the cap itself changed
 }
 
+// The Laplacian as the sum over edges of w (e_i - e_j)(e_i - e_j)^T, compared entry by entry with
+// a dense sum, also where an intrinsic triangulation joins two vertices twice or a vertex to
+// itself.
+TEST(CotanLaplacian, SumOverEdgesWithRepeatedEdgesAndLoops) {
+  MeshEdges edges;
+  edges.vertices = {{0, 1}, {1, 2}, {2, 0}, {3, 1}, {1, 3}, {2, 2}, {3, 0}, {0, 1}};
+  const std::vector<double> weights = {0.5, -0.25, 2.0, 1.0, 0.75, 3.0, 1.5, 0.125};
+  const Eigen::SparseMatrix<double> laplacian = cotan_laplacian(4, edges, weights);
+  Eigen::MatrixXd expected = Eigen::MatrixXd::Zero(4, 4);
+  for (size_t e = 0; e < weights.size(); ++e) {
+    Eigen::Vector4d d = Eigen::Vector4d::Zero();
+    d[edges.vertices[e][0]] += 1;
+    d[edges.vertices[e][1]] -= 1;
+    expected += weights[e] * d * d.transpose();
+  }
+  EXPECT_LT((Eigen::MatrixXd(laplacian) - expected).cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_TRUE(laplacian.isCompressed());
+  EXPECT_EQ(laplacian.nonZeros(), 4 + 2 * 5); // the diagonal and five distinct pairs
+  for (int column = 0; column < 4; ++column)  // rows increasing, each once
+    for (int k = laplacian.outerIndexPtr()[column] + 1; k < laplacian.outerIndexPtr()[column + 1];
+         ++k)
+      EXPECT_LT(laplacian.innerIndexPtr()[k - 1], laplacian.innerIndexPtr()[k]);
+}
+
 TEST(LaplacianSolver, BothFactorizationsSolveThePinnedSystem) {
   EXPECT_EQ(solver_from_name("cholmod"), SolverKind::cholmod);
   EXPECT_EQ(solver_from_name("ldlt"), SolverKind::eigen_ldlt);

@@ -200,7 +200,6 @@ HolomorphicForms compute_holomorphic_forms(const PreparedMesh &prepared, SolverK
   out.intrinsic = std::make_shared<IntrinsicDelaunay>(mesh, prepared.edges);
   const MeshEdges &edges = out.intrinsic->edges();
   const std::vector<double> weights = out.intrinsic->cotan_weights();
-  const FaceCorners faces = out.intrinsic->laid_out_flat(); // for the per-face stages below only
   clock.done("laplacian");
 
   progress.report(0.1, "homology basis");
@@ -218,6 +217,8 @@ HolomorphicForms compute_holomorphic_forms(const PreparedMesh &prepared, SolverK
   clock.done("harmonic");
 
   progress.report(0.8, "holomorphic forms and periods");
+  // Laid out only now: the factor, the largest array, is gone.
+  const FaceCorners faces = out.intrinsic->laid_out_flat();
   const FaceGeometry geometry = face_geometry(faces);
   measure_residuals(vertex_count, edges, weights, out);
   const ConjugateFit fit = conjugate_coefficients(faces, edges, geometry, out.harmonic);

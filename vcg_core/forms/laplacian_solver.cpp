@@ -117,9 +117,8 @@ struct LowerTriangle {
 // object: solves are not to be called from two threads at once.
 class CholmodSolver : public LaplacianSolver {
 public:
-  CholmodSolver(const Eigen::SparseMatrix<double> &laplacian, const std::vector<int> &pinned,
-                const std::vector<int> &order)
-      : free_(int(laplacian.rows()), pinned) {
+  CholmodSolver(FreeVertices free, LowerTriangle lower, const std::vector<int> &order)
+      : free_(std::move(free)) {
     cholmod_start(&common_);
     common_.nmethods = 1;
     common_.method[0].ordering = order.empty() ? CHOLMOD_AMD : CHOLMOD_GIVEN;
@@ -127,7 +126,6 @@ public:
     std::vector<int> given = order.empty() ? std::vector<int>{} : free_.positions(order);
     const FactorizationThreads threads(free_.count()); // common/factorization_threads.h
     {
-      LowerTriangle lower(laplacian, free_);
       cholmod_sparse matrix = lower.view();
       factor_ =
           cholmod_analyze_p(&matrix, given.empty() ? nullptr : given.data(), nullptr, 0, &common_);
@@ -181,9 +179,7 @@ private:
 // Eigen's simplicial LDL^T, its own AMD ordering (to check CHOLMOD against).
 class EigenSolver : public LaplacianSolver {
 public:
-  EigenSolver(const Eigen::SparseMatrix<double> &laplacian, const std::vector<int> &pinned)
-      : free_(int(laplacian.rows()), pinned) {
-    LowerTriangle lower(laplacian, free_);
+  EigenSolver(FreeVertices free, LowerTriangle lower) : free_(std::move(free)) {
     const Eigen::Map<const Eigen::SparseMatrix<double>> matrix(
         free_.count(), free_.count(), long(lower.rows.size()), lower.column_start.data(),
         lower.rows.data(), lower.values.data());
@@ -208,12 +204,32 @@ private:
 
 } // namespace
 
+namespace {
+
+std::unique_ptr<LaplacianSolver> factored(FreeVertices free, LowerTriangle lower, SolverKind kind,
+                                          const std::vector<int> &elimination_order) {
+  if (kind == SolverKind::cholmod)
+    return std::make_unique<CholmodSolver>(std::move(free), std::move(lower), elimination_order);
+  return std::make_unique<EigenSolver>(std::move(free), std::move(lower));
+}
+
+} // namespace
+
 std::unique_ptr<LaplacianSolver> factor_laplacian(const Eigen::SparseMatrix<double> &laplacian,
                                                   SolverKind kind, const std::vector<int> &pinned,
                                                   const std::vector<int> &elimination_order) {
-  if (kind == SolverKind::cholmod)
-    return std::make_unique<CholmodSolver>(laplacian, pinned, elimination_order);
-  return std::make_unique<EigenSolver>(laplacian, pinned);
+  FreeVertices free(int(laplacian.rows()), pinned);
+  LowerTriangle lower(laplacian, free);
+  return factored(std::move(free), std::move(lower), kind, elimination_order);
+}
+
+std::unique_ptr<LaplacianSolver> factor_laplacian(Eigen::SparseMatrix<double> &&laplacian,
+                                                  SolverKind kind, const std::vector<int> &pinned,
+                                                  const std::vector<int> &elimination_order) {
+  FreeVertices free(int(laplacian.rows()), pinned);
+  LowerTriangle lower(laplacian, free);
+  Eigen::SparseMatrix<double>().swap(laplacian); // freed before the factor is allocated
+  return factored(std::move(free), std::move(lower), kind, elimination_order);
 }
 
 } // namespace meromorph

@@ -45,5 +45,10 @@ std::unique_ptr<LaplacianSolver> factor_laplacian(const Eigen::SparseMatrix<doub
                                                   SolverKind kind = SolverKind::cholmod,
                                                   const std::vector<int> &pinned = {0},
                                                   const std::vector<int> &elimination_order = {});
+// The same, the Laplacian released before the factor is allocated (its lower triangle is copied).
+std::unique_ptr<LaplacianSolver> factor_laplacian(Eigen::SparseMatrix<double> &&laplacian,
+                                                  SolverKind kind = SolverKind::cholmod,
+                                                  const std::vector<int> &pinned = {0},
+                                                  const std::vector<int> &elimination_order = {});
 
 } // namespace meromorph
