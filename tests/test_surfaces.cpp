@@ -38,7 +38,7 @@ TEST(Surfaces, GridTorusLiesOnTheTorusOfRevolution) {
     const double radial = std::hypot(p[0], p[1]) - 3.0;
     EXPECT_NEAR(std::hypot(radial, p[2]), 1.0, 1e-12);
   }
-  EXPECT_GT(vcg::tri::Stat<Mesh>::ComputeMeshVolume(mesh), 0.0) << "faces point outward";
+  EXPECT_GT(enclosed_volume(mesh), 0.0) << "faces point outward";
 }
 
 TEST(Surfaces, ImplicitTorusIsCloseToTheTorusOfRevolution) {
@@ -52,14 +52,14 @@ TEST(Surfaces, ImplicitTorusIsCloseToTheTorusOfRevolution) {
     worst = std::max(worst, std::abs(std::hypot(std::hypot(p[0], p[1]) - 2.0, p[2]) - 1.0));
   }
   EXPECT_LT(worst, 0.02); // within a small fraction of the edge length (2 pi / 24 = 0.26)
-  EXPECT_GT(vcg::tri::Stat<Mesh>::ComputeMeshVolume(mesh), 0.0);
+  EXPECT_GT(enclosed_volume(mesh), 0.0);
 }
 
 TEST(Surfaces, GenusSurfacesFaceOutwardAndAreDeterministic) {
   Mesh a, b;
   make_genus_surface(a, 3, 20);
   make_genus_surface(b, 3, 20);
-  EXPECT_GT(vcg::tri::Stat<Mesh>::ComputeMeshVolume(a), 0.0);
+  EXPECT_GT(enclosed_volume(a), 0.0);
   const MeshArrays first = arrays_from_mesh(a), second = arrays_from_mesh(b);
   EXPECT_EQ(first.triangles, second.triangles);
   ASSERT_EQ(first.positions.size(), second.positions.size());
@@ -84,7 +84,7 @@ TEST(Surfaces, RigidMotionIsRigidAndReproducible) {
     const MeshFace &g = moved.face[index_of(mesh, &f)];
     EXPECT_NEAR((f.cP(0) - f.cP(1)).Norm(), (g.cP(0) - g.cP(1)).Norm(), 1e-12);
   }
-  EXPECT_GT(vcg::tri::Stat<Mesh>::ComputeMeshVolume(moved), 0.0) << "a rotation keeps orientation";
+  EXPECT_GT(enclosed_volume(moved), 0.0) << "a rotation keeps orientation";
 }
 
 TEST(Surfaces, InjectedNeedlesKeepTheSurfaceAndItsTopology) {

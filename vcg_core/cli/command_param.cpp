@@ -64,6 +64,7 @@ void write_surface(Mesh &mesh, const Parameterization &map, MeshFormat format,
     mesh.vert[v].T().V() = map.uv.vertex[v][1];
     mesh.vert[v].Q() = map.sheets.vertex_layer[v]; // the layer, as MeshLab's quality
   }
+  if (!mesh.face.IsWedgeTexCoordEnabled()) mesh.face.EnableWedgeTexCoord(); // mesh.h
   for (size_t f = 0; f < mesh.face.size(); ++f)
     for (int k = 0; k < 3; ++k) {
       mesh.face[f].WT(k).U() = map.uv.wedge[f][k][0];

@@ -79,8 +79,7 @@ std::vector<std::string> repair_mesh(Mesh &mesh) {
     Clean::OrientCoherentlyMesh(mesh, oriented, orientable);
     if (orientable) {
       // A closed surface faces outward: positive enclosed volume.
-      bool flip_all =
-          Clean::CountHoles(mesh) == 0 && vcg::tri::Stat<Mesh>::ComputeMeshVolume(mesh) < 0;
+      bool flip_all = Clean::CountHoles(mesh) == 0 && enclosed_volume(mesh) < 0;
       if (flip_all) Clean::FlipMesh(mesh);
       vcg::tri::UpdateTopology<Mesh>::FaceFace(mesh);
       repairs.push_back("oriented all faces consistently" +

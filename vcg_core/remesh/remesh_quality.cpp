@@ -59,6 +59,7 @@ RemeshQuality measure_remesh(const Mesh &input, const Mesh &remeshed,
   vcg::tri::Append<Mesh, Mesh>::MeshCopy(source, const_cast<Mesh &>(input));
   vcg::tri::Append<Mesh, Mesh>::MeshCopy(result, const_cast<Mesh &>(remeshed));
   for (Mesh *mesh : {&source, &result}) {
+    enable_face_extras(*mesh); // the samplers use face normals
     vcg::tri::UpdateBounding<Mesh>::Box(*mesh);
     vcg::tri::UpdateNormal<Mesh>::PerVertexNormalizedPerFace(*mesh);
     vcg::tri::UpdateTopology<Mesh>::FaceFace(*mesh);

@@ -53,10 +53,11 @@ void extract_isosurface(const ScalarField &field, const vcg::Box3d &box, double 
   walker.BuildMesh<MarchingCubes>(mesh, volume, marching_cubes, 0.0);
 
   using Clean = vcg::tri::Clean<Mesh>;
+  enable_face_extras(mesh); // remeshing and normals use them
   Clean::RemoveDuplicateVertex(mesh);
   Clean::RemoveUnreferencedVertex(mesh);
   vcg::tri::Allocator<Mesh>::CompactEveryVector(mesh);
-  if (vcg::tri::Stat<Mesh>::ComputeMeshVolume(mesh) < 0) Clean::FlipMesh(mesh);
+  if (enclosed_volume(mesh) < 0) Clean::FlipMesh(mesh);
 
   if (remesh) {
     vcg::tri::UpdateTopology<Mesh>::FaceFace(mesh);
@@ -66,7 +67,13 @@ void extract_isosurface(const ScalarField &field, const vcg::Box3d &box, double 
     params.SetFeatureAngleDeg(180.0); // a smooth surface: no crease to keep
     params.maxSurfDist = voxel / 2;
     params.iter = 8;
-    vcg::tri::IsotropicRemeshing<Mesh>::Do(mesh, params);
+    // As vcglib's two-argument Do, with the projection copy's optional face components enabled.
+    Mesh projection;
+    enable_face_extras(projection);
+    vcg::tri::UpdateBounding<Mesh>::Box(mesh);
+    vcg::tri::UpdateNormal<Mesh>::PerVertexNormalizedPerFaceNormalized(mesh);
+    vcg::tri::Append<Mesh, Mesh>::MeshCopy(projection, mesh);
+    vcg::tri::IsotropicRemeshing<Mesh>::Do(mesh, projection, params);
     Clean::RemoveUnreferencedVertex(mesh);
     vcg::tri::Allocator<Mesh>::CompactEveryVector(mesh);
   }

@@ -53,7 +53,7 @@ void make_grid_torus(Mesh &mesh, double major_radius, double minor_radius, int m
       arrays.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
     }
   mesh_from_arrays(arrays, mesh);
-  if (vcg::tri::Stat<Mesh>::ComputeMeshVolume(mesh) < 0) vcg::tri::Clean<Mesh>::FlipMesh(mesh);
+  if (enclosed_volume(mesh) < 0) vcg::tri::Clean<Mesh>::FlipMesh(mesh);
   vcg::tri::UpdateTopology<Mesh>::FaceFace(mesh);
   vcg::tri::UpdateBounding<Mesh>::Box(mesh);
 }
