@@ -36,7 +36,7 @@ void strip_common_tail(std::vector<std::pair<int, int>> &a, std::vector<std::pai
 // Breadth-first tree of vertices from vertex 0: combinatorial, so a rigid motion or a scale of
 // the mesh gives the same loops (a geometric shortest-path tree would break ties differently).
 Tree vertex_tree(int vertex_count, const MeshEdges &edges) {
-  const std::vector<std::vector<int>> incident = edges_at_vertices(edges, vertex_count);
+  const IndexLists incident = edges_at_vertices(edges, vertex_count);
   Tree tree{std::vector<int>(vertex_count, -1), std::vector<int>(vertex_count, -1)};
   std::vector<char> seen(vertex_count, 0);
   std::queue<int> frontier;

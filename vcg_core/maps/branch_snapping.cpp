@@ -18,8 +18,7 @@ namespace {
 
 // A conformal coordinate on `region` (a disc): the integral of a holomorphic 1-form from
 // `origin` along edges (path independent there: the form is closed).
-std::map<int, Complex> integrated_coordinate(const MeshEdges &edges,
-                                             const std::vector<std::vector<int>> &edges_at,
+std::map<int, Complex> integrated_coordinate(const MeshEdges &edges, const IndexLists &edges_at,
                                              const Eigen::VectorXcd &form, int origin,
                                              const std::map<int, int> &region) {
   std::map<int, Complex> z{{origin, Complex()}};

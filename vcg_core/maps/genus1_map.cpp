@@ -16,8 +16,8 @@ namespace meromorph {
 namespace {
 
 // z per vertex: psi integrated along a breadth-first tree from `root` (z = 0 there).
-std::vector<Complex> integrate_from(int root, const std::vector<std::vector<int>> &incident,
-                                    const MeshEdges &edges, const Eigen::VectorXcd &psi) {
+std::vector<Complex> integrate_from(int root, const IndexLists &incident, const MeshEdges &edges,
+                                    const Eigen::VectorXcd &psi) {
   std::vector<Complex> flat(incident.size(), Complex(0, 0));
   std::vector<char> reached(incident.size(), 0);
   std::queue<int> frontier;
@@ -122,7 +122,7 @@ Genus1Map genus1_map(const PreparedMesh &prepared, const Eigen::VectorXcd &psi, 
     throw ArgumentError("origin vertex " + std::to_string(origin_vertex) + " does not exist (0.." +
                         std::to_string(vertex_count - 1) + ")");
   Genus1Map out{{}, {}, WeierstrassP(period_a, period_b), {}, -1};
-  const std::vector<std::vector<int>> &incident = prepared.edges_at_vertex;
+  const IndexLists &incident = prepared.edges_at_vertex;
   if (origin_vertex < 0)
     origin_vertex =
         origin_candidates(prepared, psi, integrate_from(0, incident, edges, psi), out.p_function)

@@ -85,7 +85,7 @@ std::vector<int> orient_zero_area_images(const Mesh &mesh, const std::vector<int
       }
     }
     if (chosen < 0) continue;
-    const std::vector<int> &around = in.faces_of_vertex[size_t(chosen)];
+    const IndexRange around = in.faces_of_vertex[size_t(chosen)];
     if (!std::all_of(around.begin(), around.end(),
                      [&](int g) { return !folded_or_flat(in, sphere, g); }))
       movable.insert(chosen);

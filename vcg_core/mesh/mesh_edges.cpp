@@ -95,35 +95,25 @@ MeshEdges build_mesh_edges(const Mesh &mesh) {
   return edges;
 }
 
-std::vector<std::vector<int>> edges_at_vertices(const MeshEdges &edges, int vertex_count) {
-  std::vector<int> count(size_t(vertex_count), 0);
-  for (const auto &ends : edges.vertices)
-    for (int end : ends)
-      ++count[size_t(end)];
-  std::vector<std::vector<int>> incident(vertex_count);
-  for (int v = 0; v < vertex_count; ++v) // one allocation a vertex
-    incident[size_t(v)].reserve(size_t(count[size_t(v)]));
-  for (int e = 0; e < edges.edge_count(); ++e)
-    for (int end : edges.vertices[e])
-      incident[end].push_back(e);
-  return incident;
+IndexLists edges_at_vertices(const MeshEdges &edges, int vertex_count) {
+  return IndexLists::grouped(size_t(vertex_count), [&](const auto &emit) {
+    for (int e = 0; e < edges.edge_count(); ++e)
+      for (int end : edges.vertices[size_t(e)])
+        emit(end, e);
+  });
 }
 
 FaceIncidence face_incidence(const Mesh &mesh) {
   FaceIncidence in;
   in.corners.resize(mesh.face.size());
-  std::vector<int> count(mesh.vert.size(), 0);
-  for (size_t f = 0; f < mesh.face.size(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      in.corners[f][k] = index_of(mesh, mesh.face[f].cV(k));
-      ++count[size_t(in.corners[f][k])];
-    }
-  in.faces_of_vertex.resize(mesh.vert.size());
-  for (size_t v = 0; v < mesh.vert.size(); ++v) // one allocation a vertex
-    in.faces_of_vertex[v].reserve(size_t(count[v]));
   for (size_t f = 0; f < mesh.face.size(); ++f)
     for (int k = 0; k < 3; ++k)
-      in.faces_of_vertex[size_t(in.corners[f][k])].push_back(int(f));
+      in.corners[f][k] = index_of(mesh, mesh.face[f].cV(k));
+  in.faces_of_vertex = IndexLists::grouped(mesh.vert.size(), [&](const auto &emit) {
+    for (size_t f = 0; f < in.corners.size(); ++f)
+      for (int v : in.corners[f])
+        emit(v, int(f));
+  });
   return in;
 }
 

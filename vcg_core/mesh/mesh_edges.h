@@ -13,6 +13,7 @@
 #include <map>
 #include <vector>
 
+#include "mesh/index_lists.h"
 #include "mesh/mesh.h"
 
 namespace meromorph {
@@ -37,11 +38,11 @@ struct HalfEdgesByLowVertex {
 HalfEdgesByLowVertex half_edges_by_low_vertex(const Mesh &mesh);
 
 // For each vertex, the edges that end at it.
-std::vector<std::vector<int>> edges_at_vertices(const MeshEdges &edges, int vertex_count);
+IndexLists edges_at_vertices(const MeshEdges &edges, int vertex_count);
 
 struct FaceIncidence {
-  std::vector<std::array<int, 3>> corners;       // per face: its three vertices
-  std::vector<std::vector<int>> faces_of_vertex; // per vertex: the faces around it
+  std::vector<std::array<int, 3>> corners; // per face: its three vertices
+  IndexLists faces_of_vertex;              // per vertex: the faces around it
 };
 
 FaceIncidence face_incidence(const Mesh &mesh);

@@ -21,7 +21,7 @@ struct PreparedMesh {
   MeshEdges edges;
   std::vector<double> weights; // cotangent weight per edge
   FaceIncidence incidence;
-  std::vector<std::vector<int>> edges_at_vertex;
+  IndexLists edges_at_vertex;
   FaceGeometry geometry;
   std::vector<double> vertex_areas;
 };
