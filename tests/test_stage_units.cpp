@@ -273,16 +273,28 @@ TEST(CotanLaplacian, SumOverEdgesWithRepeatedEdgesAndLoops) {
       EXPECT_LT(laplacian.innerIndexPtr()[k - 1], laplacian.innerIndexPtr()[k]);
 }
 
+// The cotangent Laplacian of an icosphere (three subdivisions), for the solver tests.
+struct IcosphereLaplacian {
+  Mesh mesh;
+  std::unique_ptr<PreparedMesh> prepared;
+  Eigen::SparseMatrix<double> laplacian;
+  int n = 0;
+  IcosphereLaplacian() {
+    make_icosphere(mesh, 3);
+    prepared = std::make_unique<PreparedMesh>(prepare_mesh(mesh));
+    n = int(mesh.vert.size());
+    laplacian = cotan_laplacian(n, prepared->edges, prepared->weights);
+  }
+};
+
 TEST(LaplacianSolver, BothFactorizationsSolveThePinnedSystem) {
   EXPECT_EQ(solver_from_name("cholmod"), SolverKind::cholmod);
   EXPECT_EQ(solver_from_name("ldlt"), SolverKind::eigen_ldlt);
   EXPECT_STREQ(solver_name(SolverKind::eigen_ldlt), "ldlt");
-  Mesh mesh;
-  make_icosphere(mesh, 3);
-  const PreparedMesh prepared = prepare_mesh(mesh);
-  const int n = int(mesh.vert.size());
-  const Eigen::SparseMatrix<double> laplacian =
-      cotan_laplacian(n, prepared.edges, prepared.weights);
+  const IcosphereLaplacian sphere;
+  const Mesh &mesh = sphere.mesh;
+  const int n = sphere.n;
+  const Eigen::SparseMatrix<double> &laplacian = sphere.laplacian;
   Eigen::VectorXd expected(n);
   for (int v = 0; v < n; ++v)
     expected[v] = std::sin(3.0 * mesh.vert[size_t(v)].cP()[0]) + mesh.vert[size_t(v)].cP()[2];
@@ -313,12 +325,10 @@ TEST(LaplacianSolver, BothFactorizationsSolveThePinnedSystem) {
 // south-pole step does), and several right-hand sides at once: the same solutions, for both
 // factorizations; the order returned lists every free vertex once.
 TEST(LaplacianSolver, HandedOnOrderAndSeveralColumnsSolveTheSame) {
-  Mesh mesh;
-  make_icosphere(mesh, 3);
-  const PreparedMesh prepared = prepare_mesh(mesh);
-  const int n = int(mesh.vert.size());
-  const Eigen::SparseMatrix<double> laplacian =
-      cotan_laplacian(n, prepared.edges, prepared.weights);
+  const IcosphereLaplacian sphere;
+  const Mesh &mesh = sphere.mesh;
+  const int n = sphere.n;
+  const Eigen::SparseMatrix<double> &laplacian = sphere.laplacian;
   for (SolverKind kind : {SolverKind::cholmod, SolverKind::eigen_ldlt}) {
     const std::vector<int> first_pinned = {1, 2, 3};
     const std::vector<int> order =

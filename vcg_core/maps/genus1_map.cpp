@@ -86,9 +86,9 @@ std::vector<int> origin_candidates(const PreparedMesh &prepared, const Eigen::Ve
   for (int origin : candidates) {
     double score = widest[size_t(origin)];
     for (const Complex &half : p_function.half_periods()) {
-      const auto [ta, tb] = lattice_coordinates(flat[size_t(origin)] + half);
+      const std::array<double, 2> target = lattice_coordinates(flat[size_t(origin)] + half);
       parallel_for(vertex_count, [&](size_t v) { // squared distances: only their order counts
-        const double da = lattice[v][0] - ta, db = lattice[v][1] - tb;
+        const double da = lattice[v][0] - target[0], db = lattice[v][1] - target[1];
         distance[v] = {std::norm(da - std::round(da) + (db - std::round(db)) * tau), int(v)};
       });
       std::nth_element(distance.begin(), distance.begin() + 7, distance.end());
