@@ -1,5 +1,9 @@
 #include "mesh/validation.h"
 
+#if defined(_OPENMP)
+#include <parallel/algorithm>
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -9,6 +13,7 @@
 #include <vcg/complex/append.h>
 
 #include "common/errors.h"
+#include "common/parallel_for.h"
 #include "common/wording.h"
 #include "mesh/topology.h"
 #include "mesh/unit_scale.h"
@@ -140,19 +145,24 @@ void check_faces(const Mesh &mesh, Validation &out, bool doubled_faces_possible)
                   std::ldexp(half[2], unit_exponent))
         .Norm();
   };
-  for (size_t f = 0; f < mesh.face.size(); ++f) {
+  enum : char { fine, repeats, zero_area, too_small };
+  std::vector<char> kind(mesh.face.size());
+  parallel_for(mesh.face.size(), [&](size_t f) {
     const MeshFace &face = mesh.face[f];
     if (repeats_a_vertex(face)) {
-      repeated.faces.push_back(int(f));
+      kind[f] = repeats;
     } else if (has_zero_area(face)) {
-      flat.faces.push_back(int(f));
+      kind[f] = zero_area;
     } else {
       double longest = 0;
       for (int k = 0; k < 3; ++k)
         longest = std::max(longest, unit_length(face.cP(k), face.cP((k + 1) % 3)));
-      if (longest < smallest_relative_face) tiny.faces.push_back(int(f));
+      kind[f] = longest < smallest_relative_face ? too_small : fine;
     }
-  }
+  });
+  for (size_t f = 0; f < kind.size(); ++f)
+    if (kind[f] != fine)
+      (kind[f] == repeats ? repeated : kind[f] == zero_area ? flat : tiny).faces.push_back(int(f));
   if (!tiny.faces.empty()) {
     tiny.message = plural(tiny.faces.size(), "face is", "faces are") +
                    " smaller than 1e-11 of the whole mesh, too small for double precision "
@@ -218,8 +228,13 @@ void check_vertices(const Mesh &mesh, Validation &out) {
     const Point3 &p = mesh.vert[v].cP();
     return std::make_tuple(p[0], p[1], p[2]);
   };
-  std::sort(order.begin(), order.end(),
-            [&](int a, int b) { return key(a) < key(b) || (key(a) == key(b) && a < b); });
+  // A total order (ties by index): the same result from the parallel sort as from any other.
+  const auto before = [&](int a, int b) { return key(a) < key(b) || (key(a) == key(b) && a < b); };
+#if defined(_OPENMP)
+  __gnu_parallel::sort(order.begin(), order.end(), before);
+#else
+  std::sort(order.begin(), order.end(), before);
+#endif
   // Coinciding vertices on the edge of a hole are a seam that merging closes: a finding that
   // repair fixes. Elsewhere the topology keeps them apart and the map needs no position to
   // differ from another: a note.
