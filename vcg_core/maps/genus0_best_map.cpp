@@ -23,13 +23,21 @@ int collapsed_faces(const FaceIncidence &in, const std::vector<PlaneValue> &valu
 }
 
 // Marks the vertices within `rings` edges of the marked ones.
-void grow_by_rings(const MeshEdges &edges, std::vector<char> &marked, int rings) {
-  for (int ring = 0; ring < rings; ++ring) {
-    std::vector<char> grown = marked;
-    for (const auto &ends : edges.vertices)
-      if (marked[size_t(ends[0])] || marked[size_t(ends[1])])
-        grown[size_t(ends[0])] = grown[size_t(ends[1])] = 1;
-    marked = std::move(grown);
+// (Breadth first from the marked ones: the work is the grown region's, not the mesh's per ring.)
+void grow_by_rings(const PreparedMesh &prepared, std::vector<char> &marked, int rings) {
+  std::vector<int> frontier;
+  for (size_t v = 0; v < marked.size(); ++v)
+    if (marked[v]) frontier.push_back(int(v));
+  for (int ring = 0; ring < rings && !frontier.empty(); ++ring) {
+    std::vector<int> next;
+    for (int v : frontier)
+      for (int e : prepared.edges_at_vertex[size_t(v)])
+        for (int w : prepared.edges.vertices[size_t(e)])
+          if (!marked[size_t(w)]) {
+            marked[size_t(w)] = 1;
+            next.push_back(w);
+          }
+    frontier = std::move(next);
   }
 }
 
@@ -53,13 +61,13 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
       for (int f : attempt.folded_faces)
         for (int v : prepared.incidence.corners[f])
           near[size_t(v)] = 1;
-      grow_by_rings(edges, near, 2);
+      grow_by_rings(prepared, near, 2);
       for (int e = 0; e < edges.edge_count(); ++e)
         if (near[size_t(edges.vertices[e][0])] && near[size_t(edges.vertices[e][1])]) raise[e] = 1;
       // The weights change only there: solve again within a few rings of them first, the rest
       // of the map kept; the whole map again where that still folds.
       std::vector<char> region = near;
-      grow_by_rings(edges, region, local_rings);
+      grow_by_rings(prepared, region, local_rings);
       Genus0Map local = genus0_map_again_in(prepared, solver, attempt, raise, region);
       attempt = local.folded_faces.empty() ? std::move(local)
                                            : genus0_map(prepared, solver, pole_face, raise);
