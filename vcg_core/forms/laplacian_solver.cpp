@@ -23,6 +23,10 @@ Eigen::VectorXd LaplacianSolver::solve(const Eigen::VectorXd &right_hand_side) c
   return solve_columns(right_hand_side);
 }
 
+Eigen::MatrixXd LaplacianSolver::solve_columns_without_last(const Eigen::MatrixXd &, int) const {
+  throw std::logic_error("this factorization has no leading-block solves");
+}
+
 namespace {
 
 // Validation has accepted the mesh (connected, no degenerate faces): what is left is geometry
@@ -119,11 +123,14 @@ class CholmodSolver : public LaplacianSolver {
 public:
   CholmodSolver(FreeVertices free, LowerTriangle lower, const std::vector<int> &order)
       : free_(std::move(free)) {
+    std::vector<int> given = order.empty() ? std::vector<int>{} : free_.positions(order);
     cholmod_start(&common_);
     common_.nmethods = 1;
     common_.method[0].ordering = order.empty() ? CHOLMOD_AMD : CHOLMOD_GIVEN;
     common_.supernodal = CHOLMOD_SUPERNODAL;
-    std::vector<int> given = order.empty() ? std::vector<int>{} : free_.positions(order);
+    // A given order is kept as it is: a postorder could move vertices meant to be eliminated
+    // last (solve_columns_without_last) before others.
+    common_.postorder = given.empty();
     const FactorizationThreads threads(free_.count()); // common/factorization_threads.h
     {
       cholmod_sparse matrix = lower.view();
@@ -140,21 +147,34 @@ public:
 
   Eigen::MatrixXd solve_columns(const Eigen::MatrixXd &b) const override {
     Eigen::MatrixXd free_b = free_.gathered(b);
-    cholmod_dense right{};
-    right.nrow = size_t(free_b.rows());
-    right.ncol = size_t(free_b.cols());
-    right.nzmax = right.nrow * right.ncol;
-    right.d = right.nrow;
-    right.x = free_b.data();
-    right.xtype = CHOLMOD_REAL;
-    right.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense right = dense_view(free_b);
     cholmod_dense *solution = cholmod_solve(CHOLMOD_A, factor_, &right, &common_);
     if (!solution) throw not_factored();
-    const Eigen::Map<const Eigen::MatrixXd> x(static_cast<const double *>(solution->x),
-                                              free_b.rows(), free_b.cols());
-    Eigen::MatrixXd out = free_.scattered(x, b.rows());
-    cholmod_free_dense(&solution, &common_);
-    return out;
+    return scattered_and_freed(solution, b.rows());
+  }
+
+  // L L^T = P A P^T: with the trailing rows of y = L^-1 P b set to 0, x = P^T L^-T y solves the
+  // leading block and is 0 on the trailing rows.
+  Eigen::MatrixXd solve_columns_without_last(const Eigen::MatrixXd &b,
+                                             int last_count) const override {
+    if (last_count < 0 || last_count > free_.count())
+      throw std::logic_error("more vertices to leave out than the factor has");
+    Eigen::MatrixXd free_b = free_.gathered(b);
+    cholmod_dense right = dense_view(free_b);
+    cholmod_dense *permuted = cholmod_solve(CHOLMOD_P, factor_, &right, &common_);
+    cholmod_dense *forward =
+        permuted ? cholmod_solve(CHOLMOD_L, factor_, permuted, &common_) : nullptr;
+    cholmod_free_dense(&permuted, &common_);
+    if (!forward) throw not_factored();
+    Eigen::Map<Eigen::MatrixXd> y(static_cast<double *>(forward->x), free_b.rows(), free_b.cols());
+    y.bottomRows(last_count).setZero();
+    cholmod_dense *backward = cholmod_solve(CHOLMOD_Lt, factor_, forward, &common_);
+    cholmod_free_dense(&forward, &common_);
+    cholmod_dense *solution =
+        backward ? cholmod_solve(CHOLMOD_Pt, factor_, backward, &common_) : nullptr;
+    cholmod_free_dense(&backward, &common_);
+    if (!solution) throw not_factored();
+    return scattered_and_freed(solution, b.rows());
   }
 
   std::vector<int> elimination_order() const override {
@@ -166,6 +186,24 @@ public:
   }
 
 private:
+  static cholmod_dense dense_view(Eigen::MatrixXd &columns) {
+    cholmod_dense view{};
+    view.nrow = size_t(columns.rows());
+    view.ncol = size_t(columns.cols());
+    view.nzmax = view.nrow * view.ncol;
+    view.d = view.nrow;
+    view.x = columns.data();
+    view.xtype = CHOLMOD_REAL;
+    view.dtype = CHOLMOD_DOUBLE;
+    return view;
+  }
+  Eigen::MatrixXd scattered_and_freed(cholmod_dense *solution, long rows) const {
+    const Eigen::Map<const Eigen::MatrixXd> x(static_cast<const double *>(solution->x),
+                                              long(solution->nrow), long(solution->ncol));
+    Eigen::MatrixXd out = free_.scattered(x, rows);
+    cholmod_free_dense(&solution, &common_);
+    return out;
+  }
   void release() {
     if (factor_) cholmod_free_factor(&factor_, &common_);
     cholmod_finish(&common_);
@@ -221,6 +259,26 @@ std::unique_ptr<LaplacianSolver> factor_laplacian(const Eigen::SparseMatrix<doub
   FreeVertices free(int(laplacian.rows()), pinned);
   LowerTriangle lower(laplacian, free);
   return factored(std::move(free), std::move(lower), kind, elimination_order);
+}
+
+std::vector<int> elimination_order_with_last(const Eigen::SparseMatrix<double> &laplacian,
+                                             const std::vector<int> &pinned,
+                                             const std::vector<char> &eliminate_last) {
+  const FreeVertices free(int(laplacian.rows()), pinned);
+  LowerTriangle lower(laplacian, free);
+  std::vector<int> group(size_t(free.count())), permutation(size_t(free.count()));
+  for (int i = 0; i < free.count(); ++i)
+    group[size_t(i)] = eliminate_last.at(size_t(free.vertex[size_t(i)])) ? 1 : 0;
+  cholmod_common common;
+  cholmod_start(&common);
+  cholmod_sparse matrix = lower.view();
+  const int ordered = cholmod_camd(&matrix, nullptr, 0, group.data(), permutation.data(), &common);
+  cholmod_finish(&common);
+  if (!ordered) throw std::runtime_error("CAMD could not order the Laplacian");
+  std::vector<int> order(permutation.size());
+  for (size_t k = 0; k < order.size(); ++k)
+    order[k] = free.vertex[size_t(permutation[k])];
+  return order;
 }
 
 std::unique_ptr<LaplacianSolver> factor_laplacian(Eigen::SparseMatrix<double> &&laplacian,

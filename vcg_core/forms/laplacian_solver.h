@@ -37,6 +37,11 @@ public:
   virtual Eigen::MatrixXd solve_columns(const Eigen::MatrixXd &right_hand_sides) const = 0;
   // The free vertices in the order the factorization eliminated them.
   virtual std::vector<int> elimination_order() const = 0;
+  // The system of the free vertices eliminated first alone, the last `last_count` of
+  // elimination_order() pinned at 0 too: the factor's leading block is that system's factor, so
+  // no new factorization (CHOLMOD; the others throw std::logic_error).
+  virtual Eigen::MatrixXd solve_columns_without_last(const Eigen::MatrixXd &right_hand_sides,
+                                                     int last_count) const;
 };
 
 // `elimination_order` (empty: the solver's own ordering) lists vertices; the free ones among them,
@@ -45,6 +50,11 @@ std::unique_ptr<LaplacianSolver> factor_laplacian(const Eigen::SparseMatrix<doub
                                                   SolverKind kind = SolverKind::cholmod,
                                                   const std::vector<int> &pinned = {0},
                                                   const std::vector<int> &elimination_order = {});
+// An elimination order (as above) of the free vertices that eliminates those flagged in
+// `eliminate_last` after all others: CHOLMOD's CAMD, minimum degree within both groups.
+std::vector<int> elimination_order_with_last(const Eigen::SparseMatrix<double> &laplacian,
+                                             const std::vector<int> &pinned,
+                                             const std::vector<char> &eliminate_last);
 // The same, the Laplacian released before the factor is allocated (its lower triangle is copied).
 std::unique_ptr<LaplacianSolver> factor_laplacian(Eigen::SparseMatrix<double> &&laplacian,
                                                   SolverKind kind = SolverKind::cholmod,

@@ -3,6 +3,7 @@
 #include "common/parallel_for.h"
 #include "maps/genus0_correction.h"
 #include "maps/genus0_map.h"
+#include "maps/south_cap_prediction.h"
 #include "mesh/face_vectors.h"
 #include "sphere/mobius_centering.h"
 
@@ -22,28 +23,6 @@ int collapsed_faces(const FaceIncidence &in, const std::vector<PlaneValue> &valu
   });
 }
 
-// Marks the vertices within `rings` edges of the marked ones.
-// (Breadth first from the marked ones: the work is the grown region's, not the mesh's per ring.)
-void grow_by_rings(const PreparedMesh &prepared, std::vector<char> &marked, int rings) {
-  std::vector<int> frontier;
-  for (size_t v = 0; v < marked.size(); ++v)
-    if (marked[v]) frontier.push_back(int(v));
-  for (int ring = 0; ring < rings && !frontier.empty(); ++ring) {
-    std::vector<int> next;
-    for (int v : frontier)
-      for (int e : prepared.edges_at_vertex[size_t(v)])
-        for (int w : prepared.edges.vertices[size_t(e)])
-          if (!marked[size_t(w)]) {
-            marked[size_t(w)] = 1;
-            next.push_back(w);
-          }
-    frontier = std::move(next);
-  }
-}
-
-// How far around raised weights the map is solved again first.
-constexpr int local_rings = 10;
-
 } // namespace
 
 Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, int pole_face_asked) {
@@ -54,25 +33,36 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
   // many obtuse triangles), the map with strictly positive weights cannot.
   // Weights are raised only near folds (two rings), round by round; all of them at the end.
   auto solve = [&](int pole_face) {
+    if (pole_face < 0) pole_face = default_puncture_face(prepared);
+    // With CHOLMOD, one factorization serves both steps where the south-pole step's cap is
+    // predicted well enough (south_cap_prediction.h).
+    std::vector<char> cap;
+    if (solver == SolverKind::cholmod) {
+      int raised = 0;
+      cap =
+          predicted_south_cap(prepared, positive_weights(prepared.weights, {}, raised), pole_face);
+    }
     std::vector<char> raise(edges.edge_count(), 0);
-    Genus0Map attempt = genus0_map(prepared, solver, pole_face, raise);
+    Genus0Map attempt = genus0_map(prepared, solver, pole_face, raise, cap);
     for (int round = 0; round < 4 && !attempt.folded_faces.empty(); ++round) {
-      std::vector<char> near(mesh.vert.size(), 0);
-      for (int f : attempt.folded_faces)
-        for (int v : prepared.incidence.corners[f])
-          near[size_t(v)] = 1;
-      grow_by_rings(prepared, near, 2);
-      for (int e = 0; e < edges.edge_count(); ++e)
-        if (near[size_t(edges.vertices[e][0])] && near[size_t(edges.vertices[e][1])]) raise[e] = 1;
       // The weights change only there: solve again within a few rings of them first, the rest
       // of the map kept; the whole map again where that still folds.
-      std::vector<char> region = near;
-      grow_by_rings(prepared, region, local_rings);
+      std::vector<char> region;
+      region_around_folds(prepared, attempt.folded_faces, raise, region);
       Genus0Map local = genus0_map_again_in(prepared, solver, attempt, raise, region);
-      attempt = local.folded_faces.empty() ? std::move(local)
-                                           : genus0_map(prepared, solver, pole_face, raise);
+      if (local.folded_faces.empty()) {
+        // The factor stays good for the south-pole step, which repairs folds the same way.
+        local.cap_last = std::move(attempt.cap_last);
+        attempt = std::move(local);
+      } else {
+        attempt.cap_last = {}; // one factor held at a time
+        attempt = genus0_map(prepared, solver, pole_face, raise, cap);
+      }
     }
-    if (!attempt.folded_faces.empty()) attempt = genus0_map(prepared, solver, pole_face, {});
+    if (!attempt.folded_faces.empty()) {
+      attempt.cap_last = {};
+      attempt = genus0_map(prepared, solver, pole_face, {}, cap);
+    }
     return attempt;
   };
   // The pinned-pole map, its shear removed and its pole region solved again
@@ -80,8 +70,9 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
   auto solve_and_correct = [&](int pole_face) {
     Genus0Map map = solve(pole_face);
     map.values = correct_genus0_map(prepared, map.weights, solver, map.puncture_face, map.values,
-                                    map.elimination_order)
+                                    map.elimination_order, map.cap_last)
                      .values;
+    map.cap_last = {};
     return map;
   };
   Genus0Map map = solve_and_correct(pole_face_asked);

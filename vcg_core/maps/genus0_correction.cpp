@@ -4,14 +4,16 @@
 #include <cmath>
 
 #include "common/parallel_for.h"
+#include "forms/leading_block_solve.h"
 #include "maps/genus0_map.h"
 #include "mesh/cotan_laplacian.h"
 
 namespace meromorph {
 namespace {
 
-constexpr double outer_share = 0.1;     // the vertices farthest out, left out of the shear's median
-constexpr double south_cap_share = 0.1; // pinned in the south-pole step
+constexpr double outer_share = 0.1; // the vertices farthest out, left out of the shear's median
+// A predicted cap is used where it holds at least this share of the map's own.
+constexpr double least_cap_overlap = 0.5;
 
 Eigen::Vector3d position(const MeshVertex &vertex) {
   return vertex.cP().ToEigenVector<Eigen::Vector3d>();
@@ -56,7 +58,35 @@ std::vector<int> nearest_to(const std::vector<PlaneValue> &values, Complex centr
   return out;
 }
 
+// The share of `exact` that `predicted` holds.
+double overlap(const std::vector<int> &predicted, const std::vector<int> &exact, size_t n) {
+  std::vector<char> in(n, 0);
+  for (int v : predicted)
+    in[size_t(v)] = 1;
+  size_t common = 0;
+  for (int v : exact)
+    common += in[size_t(v)];
+  return exact.empty() ? 0 : double(common) / double(exact.size());
+}
+
+// The median of the finite values, component by component.
+Complex median_value(const std::vector<PlaneValue> &values) {
+  std::vector<double> real, imag;
+  for (const PlaneValue &value : values)
+    if (!value.infinite) {
+      real.push_back(value.w.real());
+      imag.push_back(value.w.imag());
+    }
+  if (real.empty()) return {0, 0};
+  return {median(real), median(imag)};
+}
+
 } // namespace
+
+std::vector<int> south_cap(const std::vector<PlaneValue> &values) {
+  return nearest_to(values, median_value(values),
+                    size_t(std::max<double>(3, double(values.size()) * south_cap_share)));
+}
 
 std::vector<int> folded_plane_faces(const FaceIncidence &in,
                                     const std::vector<PlaneValue> &values) {
@@ -92,7 +122,8 @@ std::vector<int> folded_plane_faces(const FaceIncidence &in,
 Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
                                     const std::vector<double> &weights, SolverKind solver,
                                     int puncture_face, const std::vector<PlaneValue> &pinned_map,
-                                    const std::vector<int> &elimination_order) {
+                                    const std::vector<int> &elimination_order,
+                                    const CapLastFactor &cap_last) {
   const MeshEdges &edges = prepared.edges;
   const FaceIncidence &in = prepared.incidence;
   Genus0Correction out;
@@ -134,27 +165,19 @@ Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
   if (!accept(unsheared)) return out;
   out.shear = nu;
 
-  const Eigen::SparseMatrix<double> laplacian = cotan_laplacian(int(n), edges, weights);
   // 2. The south-pole step, in the chart zeta = 1 / (z - z_s).
-  std::vector<double> real, imag;
-  for (const PlaneValue &value : out.values) {
-    real.push_back(value.w.real());
-    imag.push_back(value.w.imag());
+  const Complex south = median_value(out.values);
+  std::vector<int> pinned = south_cap(out.values);
+  const bool by_cap_last = cap_last.solver && overlap(cap_last.cap, pinned, n) >= least_cap_overlap;
+  if (by_cap_last) pinned = cap_last.cap;
+  std::vector<char> is_pinned(n, 0);
+  Eigen::VectorXcd fixed = Eigen::VectorXcd::Zero(long(n));
+  for (int v : pinned) {
+    is_pinned[size_t(v)] = 1;
+    const Complex d = out.values[size_t(v)].w - south;
+    fixed[v] = std::abs(d) > 0 ? 1.0 / d : Complex(0, 0);
   }
-  const Complex south(median(real), median(imag));
-  {
-    const std::vector<int> pinned =
-        nearest_to(out.values, south, size_t(std::max<double>(3, double(n) * south_cap_share)));
-    Eigen::VectorXcd fixed = Eigen::VectorXcd::Zero(long(n));
-    for (int v : pinned) {
-      const Complex d = out.values[size_t(v)].w - south;
-      fixed[v] = std::abs(d) > 0 ? 1.0 / d : Complex(0, 0);
-    }
-    const Eigen::VectorXcd zeta =
-        harmonic_extension(laplacian, edges, weights, solver, pinned, fixed, 1, elimination_order);
-    std::vector<char> is_pinned(n, 0);
-    for (int v : pinned)
-      is_pinned[size_t(v)] = 1;
+  auto mapped_back = [&](const Eigen::VectorXcd &zeta) {
     std::vector<PlaneValue> candidate = out.values;
     for (size_t v = 0; v < n; ++v) {
       if (is_pinned[v]) continue;
@@ -163,8 +186,50 @@ Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
       else
         candidate[v] = {south + 1.0 / zeta[long(v)], false};
     }
-    accept(candidate);
+    return candidate;
+  };
+  auto by_new_factorization = [&] {
+    return mapped_back(harmonic_extension(cotan_laplacian(int(n), edges, weights), edges, weights,
+                                          solver, pinned, fixed, 1, elimination_order));
+  };
+  if (!by_cap_last) {
+    accept(by_new_factorization());
+    return out;
   }
+  // With the pinned-pole map's factor, whose weights are the map's before any were raised: the
+  // region around the raised ones (as the map itself was, genus0_best_map.cpp) and around faces
+  // the result folds solved again with the map's weights, those near the folds raised too; a new
+  // factorization where that still folds.
+  const LeadingBlockSolve solve(*cap_last.solver, *cap_last.laplacian, int(cap_last.cap.size()),
+                                cap_last.corners);
+  const Eigen::VectorXcd zeta =
+      harmonic_extension_by([&](const Eigen::MatrixXd &b) { return solve.solve_columns(b); },
+                            *cap_last.laplacian, edges, cap_last.weights, fixed, 1);
+  std::vector<PlaneValue> candidate = mapped_back(zeta);
+  std::vector<char> region(n, 0), raise;
+  for (int e = 0; e < edges.edge_count(); ++e)
+    if (weights[size_t(e)] != cap_last.weights[size_t(e)])
+      for (int v : edges.vertices[size_t(e)])
+        region[size_t(v)] = 1;
+  grow_by_rings(prepared, region, local_rings);
+  const std::vector<int> folded = folded_plane_faces(in, candidate);
+  if (folded.size() > folded_before) {
+    std::vector<char> around_folds;
+    region_around_folds(prepared, folded, raise, around_folds);
+    for (size_t v = 0; v < n; ++v)
+      region[v] |= around_folds[v];
+  }
+  std::vector<int> kept;
+  for (size_t v = 0; v < n; ++v)
+    if (!region[v] || is_pinned[v]) kept.push_back(int(v));
+  if (kept.size() < n) {
+    int raised = 0;
+    const std::vector<double> region_weights =
+        raise.empty() ? weights : positive_weights(weights, raise, raised);
+    candidate = mapped_back(harmonic_extension(cotan_laplacian(int(n), edges, region_weights),
+                                               edges, region_weights, solver, kept, zeta, 1));
+  }
+  if (!accept(candidate)) accept(by_new_factorization());
   return out;
 }
 

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "forms/laplacian_solver.h"
+#include "maps/genus0_map.h"
 #include "mesh/mesh.h"
 #include "mesh/mesh_edges.h"
 #include "mesh/prepared_mesh.h"
@@ -31,17 +32,26 @@
 
 namespace meromorph {
 
+// The south-pole step's cap: the share of vertices nearest the median (component by component)
+// of the finite values.
+constexpr double south_cap_share = 0.1;
+std::vector<int> south_cap(const std::vector<PlaneValue> &values);
+
 struct Genus0Correction {
   std::vector<PlaneValue> values;
   Complex shear{0, 0}; // nu, removed in step 1
   int steps_taken = 0; // 0 to 2
 };
 
-// `elimination_order`: the pinned-pole map's (Genus0Map), reused by the south-pole step.
+// `elimination_order`: the pinned-pole map's (Genus0Map), reused by the south-pole step's
+// factorization; `cap_last` (may be empty): the pinned-pole map's factor with a predicted cap
+// eliminated last (south_cap_prediction.h), which the south-pole step then solves with and no
+// factorization, the predicted cap pinned, where it holds at least half of the map's own cap.
 Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
                                     const std::vector<double> &weights, SolverKind solver,
                                     int puncture_face, const std::vector<PlaneValue> &pinned_map,
-                                    const std::vector<int> &elimination_order);
+                                    const std::vector<int> &elimination_order,
+                                    const CapLastFactor &cap_last);
 
 // Faces whose image turns clockwise in the plane (checked in the chart z where |z| < 1 on all
 // corners, else in 1 / z), or is flat; faces below what doubles resolve are not counted.

@@ -13,8 +13,6 @@ namespace meromorph {
 
 namespace {
 
-// The pole is modelled by 1 / (w - centroid) in the face's own plane: accurate for a small,
-// well-shaped face. Among the faces of about median area, the one with the largest smallest angle.
 int best_shaped_face(const Mesh &mesh, const FaceGeometry &geometry) {
   std::vector<double> areas = geometry.areas;
   std::nth_element(areas.begin(), areas.begin() + long(areas.size() / 2), areas.end());
@@ -32,10 +30,10 @@ int best_shaped_face(const Mesh &mesh, const FaceGeometry &geometry) {
   return best;
 }
 
-// Strictly positive weights on the chosen edges (`raise`; empty: all): a floor of 1e-3 of the
-// median positive weight. Counts the weights raised.
-std::vector<double> raised_weights(const std::vector<double> &weights,
-                                   const std::vector<char> &raise, int &raised) {
+} // namespace
+
+std::vector<double> positive_weights(const std::vector<double> &weights,
+                                     const std::vector<char> &raise, int &raised) {
   std::vector<double> positive = weights;
   std::vector<double> sorted;
   for (double w : weights)
@@ -49,6 +47,12 @@ std::vector<double> raised_weights(const std::vector<double> &weights,
     }
   return positive;
 }
+
+int default_puncture_face(const PreparedMesh &prepared) {
+  return best_shaped_face(prepared.mesh, prepared.geometry);
+}
+
+namespace {
 
 // The pole triangle: 1 / (w - c) at the puncture face's corners, in the face's own frame (w
 // relative to its centroid, in units of the square root of its area). Fills the two coordinates
@@ -97,6 +101,40 @@ std::vector<int> folds_in_the_plane(const FaceIncidence &in, const std::vector<P
 
 } // namespace
 
+void grow_by_rings(const PreparedMesh &prepared, std::vector<char> &marked, int rings) {
+  // Breadth first from the marked ones: the work is the grown region's, not the mesh's per ring.
+  std::vector<int> frontier;
+  for (size_t v = 0; v < marked.size(); ++v)
+    if (marked[v]) frontier.push_back(int(v));
+  for (int ring = 0; ring < rings && !frontier.empty(); ++ring) {
+    std::vector<int> next;
+    for (int v : frontier)
+      for (int e : prepared.edges_at_vertex[size_t(v)])
+        for (int w : prepared.edges.vertices[size_t(e)])
+          if (!marked[size_t(w)]) {
+            marked[size_t(w)] = 1;
+            next.push_back(w);
+          }
+    frontier = std::move(next);
+  }
+}
+
+void region_around_folds(const PreparedMesh &prepared, const std::vector<int> &folded_faces,
+                         std::vector<char> &raise, std::vector<char> &region) {
+  std::vector<char> near(prepared.mesh.vert.size(), 0);
+  for (int f : folded_faces)
+    for (int v : prepared.incidence.corners[size_t(f)])
+      near[size_t(v)] = 1;
+  grow_by_rings(prepared, near, 2);
+  const MeshEdges &edges = prepared.edges;
+  raise.resize(size_t(edges.edge_count()), 0);
+  for (int e = 0; e < edges.edge_count(); ++e)
+    if (near[size_t(edges.vertices[size_t(e)][0])] && near[size_t(edges.vertices[size_t(e)][1])])
+      raise[size_t(e)] = 1;
+  region = std::move(near);
+  grow_by_rings(prepared, region, local_rings);
+}
+
 bool values_crowd(const MeshEdges &edges, const Eigen::VectorXcd &z) {
   const double scale = z.cwiseAbs().maxCoeff();
   // Whether some edge is shorter than the bound (NaN counts as crowded).
@@ -119,10 +157,18 @@ Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian
   const std::unique_ptr<LaplacianSolver> factored =
       factor_laplacian(laplacian, solver, pinned, elimination_order);
   if (used_order) *used_order = factored->elimination_order();
+  return harmonic_extension_by([&](const Eigen::MatrixXd &b) { return factored->solve_columns(b); },
+                               laplacian, edges, weights, fixed, refinement_steps);
+}
+
+Eigen::VectorXcd harmonic_extension_by(const ColumnSolve &solve,
+                                       const Eigen::SparseMatrix<double> &laplacian,
+                                       const MeshEdges &edges, const std::vector<double> &weights,
+                                       const Eigen::VectorXcd &fixed, int refinement_steps) {
   Eigen::MatrixXd given(fixed.size(), 2);
   given.col(0) = fixed.real();
   given.col(1) = fixed.imag();
-  Eigen::MatrixXd x = factored->solve_columns(-(laplacian * given)) + given;
+  Eigen::MatrixXd x = solve(-(laplacian * given)) + given;
   Eigen::VectorXcd out(fixed.size());
   out.real() = x.col(0);
   out.imag() = x.col(1);
@@ -133,7 +179,7 @@ Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian
     Eigen::MatrixXd residual(x.rows(), 2);
     for (int k = 0; k < 2; ++k)
       residual.col(k) = laplacian_of_differences(edges, weights, x.col(k));
-    x -= factored->solve_columns(residual);
+    x -= solve(residual);
   }
   out.real() = x.col(0);
   out.imag() = x.col(1);
@@ -141,7 +187,8 @@ Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian
 }
 
 Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int puncture_face,
-                     const std::vector<char> &raise) {
+                     const std::vector<char> &raise,
+                     const std::vector<char> &cap_to_eliminate_last) {
   const Mesh &mesh = prepared.mesh;
   const MeshEdges &edges = prepared.edges;
   const std::vector<double> &weights = prepared.weights;
@@ -153,9 +200,9 @@ Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int punctu
     throw ArgumentError("puncture face " + std::to_string(puncture_face) + " does not exist");
   out.puncture_face = puncture_face;
 
-  const std::vector<double> positive = raised_weights(weights, raise, out.raised_weights);
-  const Eigen::SparseMatrix<double> laplacian =
-      cotan_laplacian(int(mesh.vert.size()), edges, positive);
+  const std::vector<double> positive = positive_weights(weights, raise, out.raised_weights);
+  auto laplacian = std::make_shared<const Eigen::SparseMatrix<double>>(
+      cotan_laplacian(int(mesh.vert.size()), edges, positive));
 
   Eigen::VectorXd fixed_u, fixed_v;
   const std::vector<int> corners = pole_triangle(mesh, geometry, puncture_face, fixed_u, fixed_v);
@@ -167,11 +214,25 @@ Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int punctu
   Eigen::VectorXcd fixed(long(mesh.vert.size()));
   fixed.real() = fixed_u;
   fixed.imag() = fixed_v;
+  const bool cap_last = solver == SolverKind::cholmod && !cap_to_eliminate_last.empty();
+  std::shared_ptr<const LaplacianSolver> factored = factor_laplacian(
+      *laplacian, solver, corners,
+      cap_last ? elimination_order_with_last(*laplacian, corners, cap_to_eliminate_last)
+               : std::vector<int>{});
   out.elimination_order = corners;
-  std::vector<int> order;
-  const Eigen::VectorXcd z = harmonic_extension(laplacian, edges, positive, solver, corners, fixed,
-                                                refinement_steps, {}, &order);
+  const std::vector<int> order = factored->elimination_order();
   out.elimination_order.insert(out.elimination_order.end(), order.begin(), order.end());
+  const Eigen::VectorXcd z =
+      harmonic_extension_by([&](const Eigen::MatrixXd &b) { return factored->solve_columns(b); },
+                            *laplacian, edges, positive, fixed, refinement_steps);
+  if (cap_last) {
+    out.cap_last.corners = corners;
+    for (size_t k = order.size(); k-- > 0 && cap_to_eliminate_last[size_t(order[k])];)
+      out.cap_last.cap.push_back(order[k]);
+    out.cap_last.solver = std::move(factored);
+    out.cap_last.laplacian = std::move(laplacian);
+    out.cap_last.weights = positive;
+  }
   const Eigen::VectorXd u = z.real(), v = z.imag();
 
   // Scale so that the median |z| is 1 (a Moebius scaling; centring comes later).
@@ -196,7 +257,8 @@ Genus0Map genus0_map_again_in(const PreparedMesh &prepared, SolverKind solver,
   Genus0Map out;
   out.puncture_face = first.puncture_face;
   out.elimination_order = first.elimination_order;
-  const std::vector<double> positive = raised_weights(prepared.weights, raise, out.raised_weights);
+  const std::vector<double> positive =
+      positive_weights(prepared.weights, raise, out.raised_weights);
   const Eigen::SparseMatrix<double> laplacian = cotan_laplacian(n, edges, positive);
   std::vector<int> pinned;
   for (int v = 0; v < n; ++v)

@@ -13,6 +13,8 @@
 //      face folds, on long thin parts too. The count of raised weights is reported.
 #pragma once
 
+#include <functional>
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
@@ -26,6 +28,16 @@
 
 namespace meromorph {
 
+// The pinned-pole map's factorization, kept for the south-pole step (genus0_correction.h): it
+// eliminated `cap` (free vertices) last, so its leading block is the factor of the Laplacian with
+// the cap and the puncture face's `corners` pinned (leading_block_solve.h frees the corners).
+struct CapLastFactor {
+  std::shared_ptr<const LaplacianSolver> solver;
+  std::shared_ptr<const Eigen::SparseMatrix<double>> laplacian;
+  std::vector<double> weights; // the Laplacian's
+  std::vector<int> cap, corners;
+};
+
 struct Genus0Map {
   std::vector<PlaneValue> values;
   int puncture_face = -1;
@@ -35,6 +47,7 @@ struct Genus0Map {
   // The puncture face's corners, then the other vertices in the order the solve eliminated them:
   // an order for the factorizations that follow on the same edges (laplacian_solver.h).
   std::vector<int> elimination_order;
+  CapLastFactor cap_last; // where genus0_map was given a cap to eliminate last
 };
 
 // Whether some edge's image is shorter than `crowding_ratio` of the largest value: then one
@@ -47,6 +60,13 @@ bool values_crowd(const MeshEdges &edges, const Eigen::VectorXcd &z);
 // (values_crowd), steps of iterative refinement (the residual summed over edge differences, exact
 // there), two solves a step. `elimination_order` as in factor_laplacian; where `used_order` is
 // given, the order the factorization used goes there.
+// The same with a solver at hand (V x k in, V x k out, 0 at the pinned vertices).
+using ColumnSolve = std::function<Eigen::MatrixXd(const Eigen::MatrixXd &)>;
+Eigen::VectorXcd harmonic_extension_by(const ColumnSolve &solve,
+                                       const Eigen::SparseMatrix<double> &laplacian,
+                                       const MeshEdges &edges, const std::vector<double> &weights,
+                                       const Eigen::VectorXcd &fixed, int refinement_steps);
+
 Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian,
                                     const MeshEdges &edges, const std::vector<double> &weights,
                                     SolverKind solver, const std::vector<int> &pinned,
@@ -54,12 +74,33 @@ Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian
                                     const std::vector<int> &elimination_order = {},
                                     std::vector<int> *used_order = nullptr);
 
+// The puncture face taken when none is asked for: among the faces of about median area, the one
+// with the largest smallest angle (the pole's model 1 / w is accurate on a small, round face).
+int default_puncture_face(const PreparedMesh &prepared);
+
+// The weights below a floor of 1e-3 of the median positive weight raised to it, where `raise`
+// (one flag per edge; empty: all) allows; `raised` counts them.
+std::vector<double> positive_weights(const std::vector<double> &weights,
+                                     const std::vector<char> &raise, int &raised);
+
+// Marks the vertices within `rings` edges of the marked ones.
+void grow_by_rings(const PreparedMesh &prepared, std::vector<char> &marked, int rings);
+
+// Around folded faces: `raise` flags the edges within two rings of their corners, `region` the
+// vertices within `local_rings` more, where a map is solved again with those weights raised.
+constexpr int local_rings = 10;
+void region_around_folds(const PreparedMesh &prepared, const std::vector<int> &folded_faces,
+                         std::vector<char> &raise, std::vector<char> &region);
+
 // `raise` (one flag per edge; empty: every edge) says which weights get the positive floor: the
 // plain cotangent map is the most conformal, but with negative weights it may fold;
 // `folded_faces` lists the faces turned over in the plane, so that a caller can raise the weights
 // around them only, and all of them as the last resort.
+// With CHOLMOD and `cap_to_eliminate_last` (one flag per vertex) given, the factorization
+// eliminates those vertices last and is kept (Genus0Map::cap_last).
 Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int puncture_face = -1,
-                     const std::vector<char> &raise = {});
+                     const std::vector<char> &raise = {},
+                     const std::vector<char> &cap_to_eliminate_last = {});
 
 // `first` with the vertices of `region` (one flag per vertex) solved again with the weights of
 // `raise` given the floor, every other vertex and the puncture face's corners kept where `first`
