@@ -524,7 +524,10 @@ TEST(Periods, ModulusReductionAndSymplecticBasis) {
   // The torus's two loops meet once.
   TorusForms torus;
   torus_forms(torus);
-  const Eigen::MatrixXi wedge = wedge_matrix(torus.homology.dual_forms, torus.prepared->edges);
+  std::vector<Eigen::VectorXd> dual_forms;
+  for (const Eigen::SparseVector<double> &omega : torus.homology.dual_forms)
+    dual_forms.push_back(Eigen::VectorXd(omega));
+  const Eigen::MatrixXi wedge = wedge_matrix(dual_forms, torus.prepared->edges);
   EXPECT_EQ(wedge(0, 0), 0);
   EXPECT_EQ(std::abs(wedge(0, 1)), 1);
   EXPECT_EQ(wedge(1, 0), -wedge(0, 1));

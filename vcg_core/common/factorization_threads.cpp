@@ -1,6 +1,5 @@
 #include "common/factorization_threads.h"
 
-#include <cstdlib>
 #include <mutex>
 
 #include <dlfcn.h>

@@ -1,5 +1,7 @@
 #include "forms/harmonic_forms.h"
 
+#include "common/parallel_for.h"
+
 namespace meromorph {
 
 Eigen::VectorXd weighted_divergence(int vertex_count, const MeshEdges &edges,
@@ -13,21 +15,26 @@ Eigen::VectorXd weighted_divergence(int vertex_count, const MeshEdges &edges,
   return divergence;
 }
 
-std::vector<Eigen::VectorXd> harmonic_forms(const std::vector<Eigen::VectorXd> &closed_forms,
-                                            int vertex_count, const MeshEdges &edges,
-                                            const std::vector<double> &weights,
-                                            const LaplacianSolver &solver) {
+std::vector<Eigen::VectorXd>
+harmonic_forms(const std::vector<Eigen::SparseVector<double>> &closed_forms, int vertex_count,
+               const MeshEdges &edges, const std::vector<double> &weights,
+               const LaplacianSolver &solver) {
   // One pass over the factor for all the forms' potentials.
-  Eigen::MatrixXd divergences(vertex_count, long(closed_forms.size()));
+  Eigen::MatrixXd divergences = Eigen::MatrixXd::Zero(vertex_count, long(closed_forms.size()));
   for (size_t k = 0; k < closed_forms.size(); ++k)
-    divergences.col(long(k)) = weighted_divergence(vertex_count, edges, weights, closed_forms[k]);
+    for (Eigen::SparseVector<double>::InnerIterator it(closed_forms[k]); it; ++it) {
+      const long e = it.index();
+      divergences(edges.vertices[size_t(e)][1], long(k)) += weights[size_t(e)] * it.value();
+      divergences(edges.vertices[size_t(e)][0], long(k)) -= weights[size_t(e)] * it.value();
+    }
   const Eigen::MatrixXd potentials = solver.solve_columns(divergences);
   std::vector<Eigen::VectorXd> harmonic;
   for (size_t k = 0; k < closed_forms.size(); ++k) {
-    Eigen::VectorXd h = closed_forms[k];
+    Eigen::VectorXd h = closed_forms[k]; // dense from here
     const auto potential = potentials.col(long(k));
-    for (int e = 0; e < edges.edge_count(); ++e)
-      h[e] -= potential[edges.vertices[e][1]] - potential[edges.vertices[e][0]];
+    parallel_for(size_t(edges.edge_count()), [&](size_t e) {
+      h[long(e)] -= potential[edges.vertices[e][1]] - potential[edges.vertices[e][0]];
+    });
     harmonic.push_back(std::move(h));
   }
   return harmonic;

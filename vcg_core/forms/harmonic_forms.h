@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include "forms/laplacian_solver.h"
 #include "mesh/mesh_edges.h"
@@ -19,9 +20,10 @@ Eigen::VectorXd weighted_divergence(int vertex_count, const MeshEdges &edges,
                                     const std::vector<double> &weights,
                                     const Eigen::VectorXd &form);
 
-std::vector<Eigen::VectorXd> harmonic_forms(const std::vector<Eigen::VectorXd> &closed_forms,
-                                            int vertex_count, const MeshEdges &edges,
-                                            const std::vector<double> &weights,
-                                            const LaplacianSolver &solver);
+// The closed forms are sparse (homology_basis.h: nonzero where a dual loop crosses).
+std::vector<Eigen::VectorXd>
+harmonic_forms(const std::vector<Eigen::SparseVector<double>> &closed_forms, int vertex_count,
+               const MeshEdges &edges, const std::vector<double> &weights,
+               const LaplacianSolver &solver);
 
 } // namespace meromorph

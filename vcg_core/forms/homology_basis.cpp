@@ -106,16 +106,25 @@ std::vector<std::pair<int, int>> primal_loop(const MeshEdges &edges, const Tree 
 
 // Dual loop as a 1-form: across the generator from its left face to its right face, then back
 // through the face tree. Crossing an edge from its left face to its right face counts +1.
-Eigen::VectorXd dual_form(const MeshEdges &edges, const Tree &faces, int generator) {
-  Eigen::VectorXd form = Eigen::VectorXd::Zero(edges.edge_count());
-  form[generator] += 1;
+Eigen::SparseVector<double> dual_form(const MeshEdges &edges, const Tree &faces, int generator) {
+  std::vector<std::pair<int, double>> crossings{{generator, 1.0}};
   const int left = edges.faces[generator][0], right = edges.faces[generator][1];
   auto from_right = path_to_root(faces, right), from_left = path_to_root(faces, left);
   strip_common_tail(from_right, from_left);
   for (auto [edge, leaving] : from_right)
-    form[edge] += edges.faces[edge][0] == leaving ? 1 : -1;
+    crossings.push_back({edge, edges.faces[edge][0] == leaving ? 1.0 : -1.0});
   for (auto [edge, leaving] : from_left)
-    form[edge] += edges.faces[edge][0] == leaving ? -1 : 1;
+    crossings.push_back({edge, edges.faces[edge][0] == leaving ? -1.0 : 1.0});
+  std::sort(crossings.begin(), crossings.end());
+  Eigen::SparseVector<double> form(edges.edge_count());
+  form.reserve(long(crossings.size()));
+  for (size_t k = 0; k < crossings.size();) {
+    const int edge = crossings[k].first;
+    double sum = 0;
+    for (; k < crossings.size() && crossings[k].first == edge; ++k)
+      sum += crossings[k].second;
+    if (sum != 0) form.insertBack(edge) = sum;
+  }
   return form;
 }
 
@@ -125,6 +134,14 @@ double integrate(const Eigen::VectorXd &form, const std::vector<std::pair<int, i
   double sum = 0;
   for (auto [edge, sign] : loop)
     sum += sign * form[edge];
+  return sum;
+}
+
+double integrate(const Eigen::SparseVector<double> &form,
+                 const std::vector<std::pair<int, int>> &loop) {
+  double sum = 0;
+  for (auto [edge, sign] : loop)
+    sum += sign * form.coeff(edge);
   return sum;
 }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/SparseCore>
 
 #include "mesh/mesh.h"
 #include "mesh/mesh_edges.h"
@@ -22,13 +23,17 @@ namespace meromorph {
 struct HomologyBasis {
   int genus = 0;
   std::vector<std::vector<std::pair<int, int>>> primal_loops; // (edge, +1 / -1)
-  std::vector<Eigen::VectorXd> dual_forms;                    // closed 1-forms
-  std::vector<int> generator_edges;                           // edge in neither tree, per loop
+  // Closed 1-forms, nonzero only on the edges their dual loop crosses (a few thousand of
+  // millions): sparse, as the harmonic forms made from them are not.
+  std::vector<Eigen::SparseVector<double>> dual_forms;
+  std::vector<int> generator_edges; // edge in neither tree, per loop
 };
 
 HomologyBasis tree_cotree(int vertex_count, const MeshEdges &edges);
 
 // Integral of a 1-form along a loop.
 double integrate(const Eigen::VectorXd &form, const std::vector<std::pair<int, int>> &loop);
+double integrate(const Eigen::SparseVector<double> &form,
+                 const std::vector<std::pair<int, int>> &loop);
 
 } // namespace meromorph

@@ -44,6 +44,7 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
     }
     std::vector<char> raise(edges.edge_count(), 0);
     Genus0Map attempt = genus0_map(prepared, solver, pole_face, raise, cap);
+    const std::vector<int> order = attempt.elimination_order; // the same for the same puncture
     for (int round = 0; round < 4 && !attempt.folded_faces.empty(); ++round) {
       // The weights change only there: solve again within a few rings of them first, the rest
       // of the map kept; the whole map again where that still folds.
@@ -56,12 +57,12 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
         attempt = std::move(local);
       } else {
         attempt.cap_last = {}; // one factor held at a time
-        attempt = genus0_map(prepared, solver, pole_face, raise, cap);
+        attempt = genus0_map(prepared, solver, pole_face, raise, cap, order);
       }
     }
     if (!attempt.folded_faces.empty()) {
       attempt.cap_last = {};
-      attempt = genus0_map(prepared, solver, pole_face, {}, cap);
+      attempt = genus0_map(prepared, solver, pole_face, {}, cap, order);
     }
     return attempt;
   };

@@ -187,8 +187,8 @@ Eigen::VectorXcd harmonic_extension_by(const ColumnSolve &solve,
 }
 
 Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int puncture_face,
-                     const std::vector<char> &raise,
-                     const std::vector<char> &cap_to_eliminate_last) {
+                     const std::vector<char> &raise, const std::vector<char> &cap_to_eliminate_last,
+                     const std::vector<int> &elimination_order) {
   const Mesh &mesh = prepared.mesh;
   const MeshEdges &edges = prepared.edges;
   const std::vector<double> &weights = prepared.weights;
@@ -217,8 +217,9 @@ Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int punctu
   const bool cap_last = solver == SolverKind::cholmod && !cap_to_eliminate_last.empty();
   std::shared_ptr<const LaplacianSolver> factored = factor_laplacian(
       *laplacian, solver, corners,
-      cap_last ? elimination_order_with_last(*laplacian, corners, cap_to_eliminate_last)
-               : std::vector<int>{});
+      !cap_last || !elimination_order.empty()
+          ? elimination_order
+          : elimination_order_with_last(*laplacian, corners, cap_to_eliminate_last));
   out.elimination_order = corners;
   const std::vector<int> order = factored->elimination_order();
   out.elimination_order.insert(out.elimination_order.end(), order.begin(), order.end());

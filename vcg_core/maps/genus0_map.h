@@ -97,10 +97,13 @@ void region_around_folds(const PreparedMesh &prepared, const std::vector<int> &f
 // `folded_faces` lists the faces turned over in the plane, so that a caller can raise the weights
 // around them only, and all of them as the last resort.
 // With CHOLMOD and `cap_to_eliminate_last` (one flag per vertex) given, the factorization
-// eliminates those vertices last and is kept (Genus0Map::cap_last).
+// eliminates those vertices last and is kept (Genus0Map::cap_last); `elimination_order`, if given,
+// is an earlier call's on the same puncture and cap (Genus0Map::elimination_order), not computed
+// again.
 Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int puncture_face = -1,
                      const std::vector<char> &raise = {},
-                     const std::vector<char> &cap_to_eliminate_last = {});
+                     const std::vector<char> &cap_to_eliminate_last = {},
+                     const std::vector<int> &elimination_order = {});
 
 // `first` with the vertices of `region` (one flag per vertex) solved again with the weights of
 // `raise` given the floor, every other vertex and the puncture face's corners kept where `first`
