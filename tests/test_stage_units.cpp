@@ -24,6 +24,7 @@
 #include "forms/laplacian_solver.h"
 #include "forms/leading_block_solve.h"
 #include "forms/periods.h"
+#include "forms/reweighted_solve.h"
 #include "maps/branch_star.h"
 #include "maps/floater_embedding.h"
 #include "maps/fold_untangling.h"
@@ -377,6 +378,47 @@ TEST(LaplacianSolver, HandedOnOrderAndSeveralColumnsSolveTheSame) {
 // pinned that eliminated a cap (z > 0.6) last solves the problem with the cap pinned and those
 // three free, through its leading block bordered by the three, as a factorization of that problem
 // does.
+// A few weights changed (raised, as genus 0 does around folds, and one lowered below zero): the
+// old factor updated by Woodbury solves as a factorization of the new Laplacian does, and says
+// it cannot where the change touches more vertices than allowed.
+TEST(LaplacianSolver, ReweightedSolvesAsANewFactorization) {
+  const IcosphereLaplacian sphere;
+  const Mesh &mesh = sphere.mesh;
+  const int n = sphere.n;
+  const PreparedMesh &prepared = *sphere.prepared;
+  const std::vector<int> pinned = {0, 5, 7};
+  const std::vector<double> &before = prepared.weights;
+  std::vector<double> after = before;
+  for (int e : {3, 10, 11, 40, 41, 42})
+    after[size_t(e)] += 0.5;
+  after[20] = -0.1;
+  for (int e = 0; e < prepared.edges.edge_count(); ++e) // an edge at a pinned vertex changes too
+    if (prepared.edges.vertices[size_t(e)][0] == 5 || prepared.edges.vertices[size_t(e)][1] == 5) {
+      after[size_t(e)] *= 2;
+      break;
+    }
+  const auto factor =
+      factor_laplacian(cotan_laplacian(n, prepared.edges, before), SolverKind::cholmod, pinned);
+  const ReweightedSolve updated(*factor, n, pinned, prepared.edges, before, after);
+  ASSERT_TRUE(updated.usable());
+  Eigen::MatrixXd right(n, 2);
+  for (int v = 0; v < n; ++v) {
+    const auto &p = mesh.vert[size_t(v)].cP();
+    right(v, 0) = std::cos(p[0] + 2 * p[1]);
+    right(v, 1) = p[2] * p[2] - p[0];
+  }
+  for (int v : pinned)
+    right.row(v).setZero();
+  const Eigen::MatrixXd own =
+      factor_laplacian(cotan_laplacian(n, prepared.edges, after), SolverKind::cholmod, pinned)
+          ->solve_columns(right);
+  const Eigen::MatrixXd both = updated.solve_columns(right);
+  EXPECT_LT((both - own).cwiseAbs().maxCoeff(), 1e-9 * own.cwiseAbs().maxCoeff());
+  for (int v : pinned)
+    EXPECT_EQ(both.row(v).cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_FALSE(ReweightedSolve(*factor, n, pinned, prepared.edges, before, after, 4).usable());
+}
+
 TEST(LaplacianSolver, LeadingBlockBorderedSolvesAsItsOwnFactorization) {
   const IcosphereLaplacian sphere;
   const Mesh &mesh = sphere.mesh;

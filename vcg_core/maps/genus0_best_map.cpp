@@ -55,6 +55,9 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
         // The factor stays good for the south-pole step, which repairs folds the same way.
         local.cap_last = std::move(attempt.cap_last);
         attempt = std::move(local);
+      } else if (std::optional<Genus0Map> whole = genus0_map_reweighted(prepared, attempt, raise)) {
+        whole->cap_last = std::move(attempt.cap_last);
+        attempt = std::move(*whole);
       } else {
         attempt.cap_last = {}; // one factor held at a time
         attempt = genus0_map(prepared, solver, pole_face, raise, cap, order);

@@ -5,6 +5,7 @@
 
 #include "common/errors.h"
 #include "common/parallel_for.h"
+#include "forms/reweighted_solve.h"
 #include "mesh/cotan_laplacian.h"
 #include "mesh/face_vectors.h"
 #include "sphere/sphere_geometry.h"
@@ -99,6 +100,23 @@ std::vector<int> folds_in_the_plane(const FaceIncidence &in, const std::vector<P
   });
 }
 
+// Scaled so that the median |z| is 1 (a Moebius scaling; centring comes later).
+std::vector<PlaneValue> scaled_to_median_one(const Eigen::VectorXcd &z) {
+  std::vector<double> radii(size_t(z.size()));
+  for (size_t i = 0; i < radii.size(); ++i)
+    radii[i] = std::abs(z[long(i)]);
+  std::nth_element(radii.begin(), radii.begin() + long(radii.size() / 2), radii.end());
+  const double scale = radii[radii.size() / 2] > 0 ? 1.0 / radii[radii.size() / 2] : 1.0;
+  std::vector<PlaneValue> values;
+  values.reserve(size_t(z.size()));
+  for (long i = 0; i < z.size(); ++i)
+    values.push_back({z[i] * scale, false});
+  return values;
+}
+
+// Two steps of iterative refinement (see genus0_map).
+constexpr int refinement_steps = 2;
+
 } // namespace
 
 void grow_by_rings(const PreparedMesh &prepared, std::vector<char> &marked, int rings) {
@@ -192,7 +210,6 @@ Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int punctu
   const Mesh &mesh = prepared.mesh;
   const MeshEdges &edges = prepared.edges;
   const std::vector<double> &weights = prepared.weights;
-  constexpr int refinement_steps = 2;
   Genus0Map out;
   const FaceGeometry &geometry = prepared.geometry;
   if (puncture_face < 0) puncture_face = best_shaped_face(mesh, geometry);
@@ -234,18 +251,37 @@ Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int punctu
     out.cap_last.laplacian = std::move(laplacian);
     out.cap_last.weights = positive;
   }
-  const Eigen::VectorXd u = z.real(), v = z.imag();
-
-  // Scale so that the median |z| is 1 (a Moebius scaling; centring comes later).
-  std::vector<double> radii(mesh.vert.size());
-  for (size_t i = 0; i < radii.size(); ++i)
-    radii[i] = std::hypot(u[long(i)], v[long(i)]);
-  std::nth_element(radii.begin(), radii.begin() + long(radii.size() / 2), radii.end());
-  const double scale = radii[radii.size() / 2] > 0 ? 1.0 / radii[radii.size() / 2] : 1.0;
-  out.values.reserve(mesh.vert.size());
-  for (size_t i = 0; i < mesh.vert.size(); ++i)
-    out.values.push_back({Complex(u[long(i)], v[long(i)]) * scale, false});
+  out.values = scaled_to_median_one(z);
   out.folded_faces = folds_in_the_plane(prepared.incidence, out.values, puncture_face);
+  out.weights = positive;
+  return out;
+}
+
+std::optional<Genus0Map> genus0_map_reweighted(const PreparedMesh &prepared, const Genus0Map &first,
+                                               const std::vector<char> &raise) {
+  const CapLastFactor &factor = first.cap_last;
+  if (!factor.solver) return std::nullopt;
+  const Mesh &mesh = prepared.mesh;
+  const int n = int(mesh.vert.size());
+  Genus0Map out;
+  out.puncture_face = first.puncture_face;
+  out.elimination_order = first.elimination_order;
+  const std::vector<double> positive =
+      positive_weights(prepared.weights, raise, out.raised_weights);
+  const ReweightedSolve solve(*factor.solver, n, factor.corners, prepared.edges, factor.weights,
+                              positive);
+  if (!solve.usable()) return std::nullopt;
+  Eigen::VectorXd fixed_u, fixed_v;
+  pole_triangle(mesh, prepared.geometry, out.puncture_face, fixed_u, fixed_v);
+  Eigen::VectorXcd fixed(n);
+  fixed.real() = fixed_u;
+  fixed.imag() = fixed_v;
+  const Eigen::VectorXcd z =
+      harmonic_extension_by([&](const Eigen::MatrixXd &b) { return solve.solve_columns(b); },
+                            cotan_laplacian(n, prepared.edges, positive), prepared.edges, positive,
+                            fixed, refinement_steps);
+  out.values = scaled_to_median_one(z);
+  out.folded_faces = folds_in_the_plane(prepared.incidence, out.values, out.puncture_face);
   out.weights = positive;
   return out;
 }

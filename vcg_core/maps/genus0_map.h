@@ -15,6 +15,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -104,6 +105,13 @@ Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int punctu
                      const std::vector<char> &raise = {},
                      const std::vector<char> &cap_to_eliminate_last = {},
                      const std::vector<int> &elimination_order = {});
+
+// `first` solved again on the whole mesh with the weights of `raise` given the floor, as
+// genus0_map would, but with `first`'s kept factor (Genus0Map::cap_last) updated for the few
+// changed weights (reweighted_solve.h) instead of a new factorization. Empty where `first` kept
+// no factor or the change touches too many vertices. The result keeps no factor of its own.
+std::optional<Genus0Map> genus0_map_reweighted(const PreparedMesh &prepared, const Genus0Map &first,
+                                               const std::vector<char> &raise);
 
 // `first` with the vertices of `region` (one flag per vertex) solved again with the weights of
 // `raise` given the floor, every other vertex and the puncture face's corners kept where `first`
