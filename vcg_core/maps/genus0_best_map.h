@@ -4,8 +4,12 @@
 //      face asked for (-1: automatic) and the surface area per vertex (the centring's weights).
 // Out: the values in the extended plane, the pole face used and how many weights were raised.
 //      The plain cotangent map is tried first; where it folds, weights are raised to positive
-//      ones near the folds (two rings), round by round, all of them at the end. Its shear is
-//      removed and its pole region solved again (genus0_correction.h). With an automatic pole,
+//      ones near the folds (two rings), round by round (solved again within ten rings of them,
+//      or on the whole mesh by updating the factor for the few changed weights, or by a new
+//      factorization), all of them at the end. Its shear is removed and its pole region solved
+//      again (genus0_correction.h). With CHOLMOD, the first factorization eliminates the south
+//      cap predicted from a coarse map last, so that one factorization serves the map and the
+//      south-pole step (south_cap_prediction.h). With an automatic pole,
 //      where the centred map folds or crowds faces below double precision, the map is solved
 //      again with the pole at the best-shaped face the centred map puts near the north pole,
 //      and kept if it collapses no more faces.

@@ -13,7 +13,13 @@
 //         of vertices nearest the median value z_s are pinned at zeta = 1 / (z - z_s), the rest is
 //         the harmonic extension in that chart (the puncture face is an ordinary face there), and
 //         mapped back;
-//      The south-pole step eliminates in the order the pinned-pole map's factorization chose.
+//      With CHOLMOD the step needs no factorization of its own where the pinned-pole map's
+//      factor eliminated a predicted cap last (south_cap_prediction.h) that holds at least half
+//      of the cap above: that cap is pinned instead, solved with the factor's leading block and
+//      the puncture corners bordered in (leading_block_solve.h); the factor's weights are the
+//      map's before any were raised, so the region around raised weights (and around faces the
+//      result folds) is solved again locally, as genus0_best_map.h does for the map itself.
+//      Otherwise the step factors its Laplacian, in the order the pinned-pole map's chose.
 //      (Solving the half nearest z_s again with the rest pinned, as a third step, was measured:
 //      0.13 -> 0.05 degrees on an icosphere, no gain or a loss on real meshes, one more
 //      factorization.)

@@ -5,6 +5,7 @@
 #include <numeric>
 #include <queue>
 
+#include "common/parallel_for.h"
 #include "sphere/branch_points.h"
 #include "sphere/sphere_geometry.h"
 
@@ -133,7 +134,7 @@ CutEdges cut_edges(const Mesh &mesh, const MeshEdges &edges, const std::vector<V
     arc_length.push_back(arc_normal.back().norm());
   }
   std::vector<char> on_cut(mesh.vert.size(), 0);
-  for (size_t v = 0; v < mesh.vert.size(); ++v)
+  parallel_for(mesh.vert.size(), [&](size_t v) {
     for (size_t a = 0; a < arcs.size(); ++a) {
       const Vector &p = nodes[size_t(arcs[a][0])], &q = nodes[size_t(arcs[a][1])];
       const double length = arc_length[a];
@@ -141,12 +142,13 @@ CutEdges cut_edges(const Mesh &mesh, const MeshEdges &edges, const std::vector<V
           on_arc(sphere[v], p, q))
         on_cut[v] = 1;
     }
+  });
   // `crossing`: the edge's image crosses a cut, or may (it starts on one); `edge_cut` adds the
   // edges of the faces set apart.
   CutEdges out;
   std::vector<char> &crossing = out.crossing;
   crossing.assign(edges.vertices.size(), 0);
-  for (size_t e = 0; e < edges.vertices.size(); ++e) {
+  parallel_for(edges.vertices.size(), [&](size_t e) {
     const int i = edges.vertices[e][0], j = edges.vertices[e][1];
     crossing[e] = at_branch_vertex[i] || at_branch_vertex[j] || on_cut[i] || on_cut[j];
     for (size_t a = 0; a < arcs.size() && !crossing[e]; ++a) {
@@ -157,28 +159,28 @@ CutEdges cut_edges(const Mesh &mesh, const MeshEdges &edges, const std::vector<V
       crossing[e] =
           arcs_cross(sphere[i], sphere[j], nodes[size_t(arcs[a][0])], nodes[size_t(arcs[a][1])]);
     }
-  }
+  });
   // Edges whose image is too short for the crossing test to be sure of its side (where long thin
   // parts crowd, cross products of such nearby points are mostly rounding) are cut too, so that a
   // sheet cannot leak into another through them.
   out.cut = crossing;
   std::vector<char> &edge_cut = out.cut;
-  for (size_t e = 0; e < edges.vertices.size(); ++e)
+  parallel_for(edges.vertices.size(), [&](size_t e) {
     if ((sphere[size_t(edges.vertices[e][0])] - sphere[size_t(edges.vertices[e][1])]).norm() <
         unsure_edge_length)
       edge_cut[e] = 1;
-  for (int f = 0; f < face_count; ++f) {
-    bool at_branch = false;
+  });
+  const std::vector<int> set_apart = parallel_select(size_t(face_count), [&](size_t f) {
     for (int k = 0; k < 3; ++k)
-      at_branch = at_branch || at_branch_vertex[index_of(mesh, mesh.face[f].cV(k))];
-    const Vector &a = corner(f, 0), &b = corner(f, 1), &c = corner(f, 2);
-    bool holds_value = false;
+      if (at_branch_vertex[index_of(mesh, mesh.face[f].cV(k))]) return true;
+    const Vector &a = corner(int(f), 0), &b = corner(int(f), 1), &c = corner(int(f), 2);
     for (const Vector &node : nodes)
-      holds_value = holds_value || inside(node, a, b, c);
-    if (at_branch || holds_value || folded_image(a, b, c))
-      for (int e : edges.face_edges[f])
-        edge_cut[e] = 1;
-  }
+      if (inside(node, a, b, c)) return true;
+    return folded_image(a, b, c);
+  });
+  for (int f : set_apart)
+    for (int e : edges.face_edges[size_t(f)])
+      edge_cut[size_t(e)] = 1;
   return out;
 }
 
