@@ -457,6 +457,9 @@ TEST(LaplacianSolver, LeadingBlockBorderedSolvesAsItsOwnFactorization) {
   EXPECT_LT((both - own).cwiseAbs().maxCoeff(), 1e-9 * own.cwiseAbs().maxCoeff());
   for (int v : cap)
     EXPECT_EQ(both.row(v).cwiseAbs().maxCoeff(), 0.0);
+  // Later solves reuse the bordering the first one computed.
+  const Eigen::MatrixXd again = bordered.solve_columns(right.col(1));
+  EXPECT_LT((again - own.col(1)).cwiseAbs().maxCoeff(), 1e-9 * own.cwiseAbs().maxCoeff());
   // Eigen's LDL^T has no leading-block solves: it says so.
   EXPECT_THROW(factor_laplacian(laplacian, SolverKind::eigen_ldlt, corners)
                    ->solve_columns_without_last(right, 1),

@@ -11,19 +11,7 @@ namespace meromorph {
 LeadingBlockSolve::LeadingBlockSolve(const LaplacianSolver &factor,
                                      const Eigen::SparseMatrix<double> &laplacian, int last_count,
                                      std::vector<int> freed)
-    : factor_(factor), laplacian_(laplacian), last_count_(last_count), freed_(std::move(freed)) {
-  const long m = long(freed_.size());
-  Eigen::MatrixXd columns = Eigen::MatrixXd::Zero(laplacian.rows(), m);
-  for (long k = 0; k < m; ++k)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(laplacian, freed_[size_t(k)]); it; ++it)
-      columns(it.row(), k) = it.value(); // rows the factor pins or leaves out are not read
-  freed_columns_solved_ = factor_.solve_columns_without_last(columns, last_count_);
-  Eigen::MatrixXd schur = -laplacian_at_freed(freed_columns_solved_);
-  for (long j = 0; j < m; ++j)
-    for (long k = 0; k < m; ++k)
-      schur(j, k) += laplacian.coeff(freed_[size_t(j)], freed_[size_t(k)]);
-  schur_inverse_ = schur.inverse();
-}
+    : factor_(factor), laplacian_(laplacian), last_count_(last_count), freed_(std::move(freed)) {}
 
 Eigen::MatrixXd LeadingBlockSolve::laplacian_at_freed(const Eigen::MatrixXd &x) const {
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(long(freed_.size()), x.cols());
@@ -34,9 +22,30 @@ Eigen::MatrixXd LeadingBlockSolve::laplacian_at_freed(const Eigen::MatrixXd &x) 
 }
 
 Eigen::MatrixXd LeadingBlockSolve::solve_columns(const Eigen::MatrixXd &b) const {
-  Eigen::MatrixXd x = factor_.solve_columns_without_last(b, last_count_);
-  if (freed_.empty()) return x;
-  Eigen::MatrixXd at_freed(long(freed_.size()), b.cols());
+  const long m = long(freed_.size());
+  if (m == 0) return factor_.solve_columns_without_last(b, last_count_);
+  Eigen::MatrixXd x;
+  if (bordered_) {
+    x = factor_.solve_columns_without_last(b, last_count_);
+  } else {
+    // L's columns at the freed vertices beside b (rows the factor pins or leaves out are not
+    // read): one pass over the factor for both.
+    Eigen::MatrixXd both = Eigen::MatrixXd::Zero(b.rows(), b.cols() + m);
+    both.leftCols(b.cols()) = b;
+    for (long k = 0; k < m; ++k)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(laplacian_, freed_[size_t(k)]); it; ++it)
+        both(it.row(), b.cols() + k) = it.value();
+    both = factor_.solve_columns_without_last(both, last_count_);
+    freed_columns_solved_ = both.rightCols(m);
+    x = both.leftCols(b.cols());
+    Eigen::MatrixXd schur = -laplacian_at_freed(freed_columns_solved_);
+    for (long j = 0; j < m; ++j)
+      for (long k = 0; k < m; ++k)
+        schur(j, k) += laplacian_.coeff(freed_[size_t(j)], freed_[size_t(k)]);
+    schur_inverse_ = schur.inverse();
+    bordered_ = true;
+  }
+  Eigen::MatrixXd at_freed(m, b.cols());
   for (size_t k = 0; k < freed_.size(); ++k)
     at_freed.row(long(k)) = b.row(freed_[k]);
   const Eigen::MatrixXd x_freed = schur_inverse_ * (at_freed - laplacian_at_freed(x));

@@ -5,9 +5,9 @@
 //      vertices the factor pinned that are free here (`freed`, e.g. a puncture face's corners).
 // Out: solves of the Laplacian at the vertices free here, 0 at the pinned ones, as from a
 //      factorization of its own. The leading block's solves (no new factorization) with the
-//      freed vertices joined by their Schur complement: the factor's solves of their columns
-//      are done once, then each right-hand side costs one leading-block solve more than with no
-//      freed vertices.
+//      freed vertices joined by their Schur complement: the leading block's solves of their
+//      columns ride along with the first right-hand sides (one pass over the factor), later ones
+//      cost one leading-block solve each. Not for two threads at once.
 #pragma once
 
 #include <vector>
@@ -34,8 +34,9 @@ private:
   const Eigen::SparseMatrix<double> &laplacian_;
   int last_count_;
   std::vector<int> freed_;
-  Eigen::MatrixXd freed_columns_solved_; // V x m: the leading block's solve of L's columns
-  Eigen::MatrixXd schur_inverse_;        // m x m
+  mutable bool bordered_ = false;                // the two below are computed
+  mutable Eigen::MatrixXd freed_columns_solved_; // V x m: the leading block's solve of L's columns
+  mutable Eigen::MatrixXd schur_inverse_;        // m x m
 };
 
 } // namespace meromorph
