@@ -274,7 +274,7 @@ std::vector<int> elimination_order_with_last(const Eigen::SparseMatrix<double> &
   cholmod_sparse matrix = lower.view();
   const int ordered = cholmod_camd(&matrix, nullptr, 0, group.data(), permutation.data(), &common);
   cholmod_finish(&common);
-  if (!ordered) throw std::runtime_error("CAMD could not order the Laplacian");
+  if (!ordered) return {}; // (out of memory) the factorization orders by AMD instead
   std::vector<int> order(permutation.size());
   for (size_t k = 0; k < order.size(); ++k)
     order[k] = free.vertex[size_t(permutation[k])];

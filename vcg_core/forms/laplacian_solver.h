@@ -51,7 +51,8 @@ std::unique_ptr<LaplacianSolver> factor_laplacian(const Eigen::SparseMatrix<doub
                                                   const std::vector<int> &pinned = {0},
                                                   const std::vector<int> &elimination_order = {});
 // An elimination order (as above) of the free vertices that eliminates those flagged in
-// `eliminate_last` after all others: CHOLMOD's CAMD, minimum degree within both groups.
+// `eliminate_last` after all others: CHOLMOD's CAMD, minimum degree within both groups. Empty
+// where CAMD fails (the factorization then orders by itself).
 std::vector<int> elimination_order_with_last(const Eigen::SparseMatrix<double> &laplacian,
                                              const std::vector<int> &pinned,
                                              const std::vector<char> &eliminate_last);

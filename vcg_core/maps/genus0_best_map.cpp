@@ -39,8 +39,12 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
     std::vector<char> cap;
     if (solver == SolverKind::cholmod) {
       int raised = 0;
-      cap =
-          predicted_south_cap(prepared, positive_weights(prepared.weights, {}, raised), pole_face);
+      try { // a prediction only saves a factorization: none where it cannot be made
+        cap = predicted_south_cap(prepared, positive_weights(prepared.weights, {}, raised),
+                                  pole_face);
+      } catch (const std::exception &) {
+        cap.clear();
+      }
     }
     std::vector<char> raise(edges.edge_count(), 0);
     Genus0Map attempt = genus0_map(prepared, solver, pole_face, raise, cap);
