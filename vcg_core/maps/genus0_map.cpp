@@ -59,7 +59,7 @@ namespace {
 // relative to its centroid, in units of the square root of its area). Fills the two coordinates
 // at those corners and returns them.
 std::vector<int> pole_triangle(const Mesh &mesh, const FaceGeometry &geometry, int puncture_face,
-                               Eigen::VectorXd &fixed_u, Eigen::VectorXd &fixed_v) {
+                               Eigen::VectorXcd &fixed) {
   const MeshFace &face = mesh.face[puncture_face];
   std::vector<int> corners;
   Eigen::Vector3d p[3];
@@ -71,13 +71,10 @@ std::vector<int> pole_triangle(const Mesh &mesh, const FaceGeometry &geometry, i
   const Eigen::Vector3d e1 = (p[1] - p[0]).normalized();
   const Eigen::Vector3d e2 = geometry.normals[puncture_face].cross(e1);
   const double size = std::sqrt(geometry.areas[puncture_face]);
-  fixed_u = Eigen::VectorXd::Zero(long(mesh.vert.size()));
-  fixed_v = fixed_u;
+  fixed = Eigen::VectorXcd::Zero(long(mesh.vert.size()));
   for (int k = 0; k < 3; ++k) {
     const Complex w((p[k] - centroid).dot(e1) / size, (p[k] - centroid).dot(e2) / size);
-    const Complex z = 1.0 / w;
-    fixed_u[corners[k]] = z.real();
-    fixed_v[corners[k]] = z.imag();
+    fixed[corners[k]] = 1.0 / w;
   }
 
   return corners;
@@ -170,11 +167,9 @@ Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian
                                     const MeshEdges &edges, const std::vector<double> &weights,
                                     SolverKind solver, const std::vector<int> &pinned,
                                     const Eigen::VectorXcd &fixed, int refinement_steps,
-                                    const std::vector<int> &elimination_order,
-                                    std::vector<int> *used_order) {
+                                    const std::vector<int> &elimination_order) {
   const std::unique_ptr<LaplacianSolver> factored =
       factor_laplacian(laplacian, solver, pinned, elimination_order);
-  if (used_order) *used_order = factored->elimination_order();
   return harmonic_extension_by([&](const Eigen::MatrixXd &b) { return factored->solve_columns(b); },
                                laplacian, edges, weights, fixed, refinement_steps);
 }
@@ -221,16 +216,13 @@ Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int punctu
   auto laplacian = std::make_shared<const Eigen::SparseMatrix<double>>(
       cotan_laplacian(int(mesh.vert.size()), edges, positive));
 
-  Eigen::VectorXd fixed_u, fixed_v;
-  const std::vector<int> corners = pole_triangle(mesh, geometry, puncture_face, fixed_u, fixed_v);
+  Eigen::VectorXcd fixed;
+  const std::vector<int> corners = pole_triangle(mesh, geometry, puncture_face, fixed);
 
   // Dirichlet problem: L_free z_free = -L_free,pinned z_pinned. Long thin parts crowd into spots
   // far smaller than the map's own scale, where one solve's error (relative to the whole map)
   // can exceed the faces: two steps of iterative refinement make each spot accurate relative to
   // its own size, down to the spacing of doubles.
-  Eigen::VectorXcd fixed(long(mesh.vert.size()));
-  fixed.real() = fixed_u;
-  fixed.imag() = fixed_v;
   const bool cap_last = solver == SolverKind::cholmod && !cap_to_eliminate_last.empty();
   std::shared_ptr<const LaplacianSolver> factored = factor_laplacian(
       *laplacian, solver, corners,
@@ -271,11 +263,8 @@ std::optional<Genus0Map> genus0_map_reweighted(const PreparedMesh &prepared, con
   const ReweightedSolve solve(*factor.solver, n, factor.corners, prepared.edges, factor.weights,
                               positive);
   if (!solve.usable()) return std::nullopt;
-  Eigen::VectorXd fixed_u, fixed_v;
-  pole_triangle(mesh, prepared.geometry, out.puncture_face, fixed_u, fixed_v);
-  Eigen::VectorXcd fixed(n);
-  fixed.real() = fixed_u;
-  fixed.imag() = fixed_v;
+  Eigen::VectorXcd fixed;
+  pole_triangle(mesh, prepared.geometry, out.puncture_face, fixed);
   const Eigen::VectorXcd z =
       harmonic_extension_by([&](const Eigen::MatrixXd &b) { return solve.solve_columns(b); },
                             cotan_laplacian(n, prepared.edges, positive), prepared.edges, positive,

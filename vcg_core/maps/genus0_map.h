@@ -59,21 +59,19 @@ bool values_crowd(const MeshEdges &edges, const Eigen::VectorXcd &z);
 // The harmonic extension of complex values given at `pinned` (the rest ignored) to every other
 // vertex: one factorization of the free vertices' Laplacian, two solves; where the values crowd
 // (values_crowd), steps of iterative refinement (the residual summed over edge differences, exact
-// there), two solves a step. `elimination_order` as in factor_laplacian; where `used_order` is
-// given, the order the factorization used goes there.
+// there), two solves a step. `elimination_order` as in factor_laplacian.
+Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian,
+                                    const MeshEdges &edges, const std::vector<double> &weights,
+                                    SolverKind solver, const std::vector<int> &pinned,
+                                    const Eigen::VectorXcd &fixed, int refinement_steps = 1,
+                                    const std::vector<int> &elimination_order = {});
+
 // The same with a solver at hand (V x k in, V x k out, 0 at the pinned vertices).
 using ColumnSolve = std::function<Eigen::MatrixXd(const Eigen::MatrixXd &)>;
 Eigen::VectorXcd harmonic_extension_by(const ColumnSolve &solve,
                                        const Eigen::SparseMatrix<double> &laplacian,
                                        const MeshEdges &edges, const std::vector<double> &weights,
                                        const Eigen::VectorXcd &fixed, int refinement_steps);
-
-Eigen::VectorXcd harmonic_extension(const Eigen::SparseMatrix<double> &laplacian,
-                                    const MeshEdges &edges, const std::vector<double> &weights,
-                                    SolverKind solver, const std::vector<int> &pinned,
-                                    const Eigen::VectorXcd &fixed, int refinement_steps = 1,
-                                    const std::vector<int> &elimination_order = {},
-                                    std::vector<int> *used_order = nullptr);
 
 // The puncture face taken when none is asked for: among the faces of about median area, the one
 // with the largest smallest angle (the pole's model 1 / w is accurate on a small, round face).
