@@ -9,6 +9,8 @@
 //      of cores) run over the cores and their sums are added in chunk order: the same result on
 //      any machine, from one pass over the items however many sums each item feeds.
 //      `parallel_select`: the indices i in [0, count) where test(i) holds, in increasing order.
+//      `parallel_for_with`: body(i, state) for every i, dynamically scheduled, `state` each
+//      thread's own, made by make_state() once per thread (a scratch copy to change and restore).
 #pragma once
 
 #include <algorithm>
@@ -38,6 +40,11 @@ void parallel_for(std::size_t count, const Body &body, std::size_t threshold = p
 // Items per chunk of chunked_sum.
 constexpr std::size_t sum_chunk = 8192;
 
+// Items per block where a chunk's items are stacked as matrix rows for one matrix product: small
+// enough (about 100 KiB at 3 rows of 20 columns each) for the heap to hand the same memory back,
+// where a chunk's worth would be mapped and cleared afresh by the system every time.
+constexpr std::size_t stacked_block = 256;
+
 template <class Sum, class Body>
 Sum chunked_sum(std::size_t count, const Sum &zero, const Body &body) {
   const std::size_t chunks = (count + sum_chunk - 1) / sum_chunk;
@@ -52,6 +59,23 @@ Sum chunked_sum(std::size_t count, const Sum &zero, const Body &body) {
   for (const Sum &part : partial)
     total += part;
   return total;
+}
+
+template <class MakeState, class Body>
+void parallel_for_with(std::size_t count, const MakeState &make_state, const Body &body) {
+#if defined(_OPENMP)
+#pragma omp parallel if (count >= 2)
+  {
+    auto state = make_state();
+#pragma omp for schedule(dynamic)
+    for (long i = 0; i < long(count); ++i)
+      body(std::size_t(i), state);
+  }
+#else
+  auto state = make_state();
+  for (std::size_t i = 0; i < count; ++i)
+    body(i, state);
+#endif
 }
 
 template <class Test> std::vector<int> parallel_select(std::size_t count, const Test &test) {

@@ -1,5 +1,7 @@
 #include "forms/holomorphic_forms.h"
 
+#include <cmath>
+
 #include <Eigen/Dense>
 
 #include "common/parallel_for.h"
@@ -8,59 +10,74 @@ namespace meromorph {
 
 namespace {
 
-// C from the forms' face vectors, `columns(f, plain)` putting face f's vector of every form side
-// by side (one pass for the inner products, one for the residual).
+// C from the forms' face vectors, `columns(f, in_frame)` putting face f's vector of every form
+// side by side, in the face's frame (e1, n x e1). There *h = (-y, x) for h = (x, y), so that
+// <h_j, h_k> = <x_j, x_k> + <y_j, y_k>, <*h_j, h_k> = <x_j, y_k> - <y_j, x_k> and
+// |*h_j| = |h_j|: one pass over the faces gathers all from the area-weighted Gram matrix of the
+// columns (x_1 .. x_n, y_1 .. y_n), a rank update per chunk of faces.
 template <class Columns>
 ConjugateFit conjugate_fit(long n, size_t face_count, const FaceGeometry &geometry,
                            const Columns &columns) {
-  // The face's vectors, and turned a quarter about the normal (*).
-  auto both = [&](size_t f, Eigen::Matrix3Xd &plain, Eigen::Matrix3Xd &starred) {
-    columns(f, plain);
-    for (long j = 0; j < n; ++j)
-      starred.col(j) = geometry.normals[f].cross(Eigen::Vector3d(plain.col(j)));
-  };
-  // G = <h_j, h_k> and S = <*h_j, h_k> (L2 over the faces), in one pass over the faces.
-  struct Inner {
-    Eigen::MatrixXd gram, starred;
-    Inner &operator+=(const Inner &other) {
-      gram += other.gram;
-      starred += other.starred;
-      return *this;
-    }
-  };
-  const Inner zero{Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd::Zero(n, n)};
-  const Inner inner = chunked_sum(face_count, zero, [&](size_t begin, size_t end) {
-    Inner sum = zero;
-    Eigen::Matrix3Xd plain(3, n), starred(3, n), weighted(3, n); // no allocation per face
-    for (size_t f = begin; f < end; ++f) {
-      both(f, plain, starred);
-      weighted = geometry.areas[f] * plain;
-      sum.gram.noalias() += weighted.transpose().lazyProduct(plain);
-      sum.starred.noalias() += starred.transpose().lazyProduct(weighted);
+  const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  const Eigen::MatrixXd lower = chunked_sum(face_count, zero, [&](size_t begin, size_t end) {
+    Eigen::MatrixXd sum = zero;
+    Eigen::MatrixXd rows(long(stacked_block), 2 * n); // common/parallel_for.h
+    Eigen::Matrix2Xd in_frame(2, n);                  // no allocation per face
+    for (size_t first = begin; first < end; first += stacked_block) {
+      const size_t last = std::min(end, first + stacked_block);
+      for (size_t f = first; f < last; ++f) {
+        columns(f, in_frame);
+        const double weight = std::sqrt(geometry.areas[f]);
+        rows.row(long(f - first)) << weight * in_frame.row(0), weight * in_frame.row(1);
+      }
+      sum.selfadjointView<Eigen::Lower>().rankUpdate(rows.topRows(long(last - first)).transpose());
     }
     return sum;
   });
+  const Eigen::MatrixXd inner = lower.selfadjointView<Eigen::Lower>();
+  const Eigen::MatrixXd xy = inner.bottomLeftCorner(n, n).transpose(); // <x_j, y_k>
+  const Eigen::MatrixXd gram = inner.topLeftCorner(n, n) + inner.bottomRightCorner(n, n);
+  const Eigen::MatrixXd starred = xy - xy.transpose(); // S = <*h_j, h_k>
   ConjugateFit fit;
-  fit.coefficients = inner.gram.ldlt().solve(inner.starred.transpose()).transpose(); // C = S G^-1
-  // |*h_j - sum_l C_jl h_l|^2 for every j, in one pass.
-  const Eigen::VectorXd no_error = Eigen::VectorXd::Zero(n);
-  const Eigen::VectorXd error_squared =
-      chunked_sum(face_count, no_error, [&](size_t begin, size_t end) {
-        Eigen::VectorXd sum = no_error;
-        Eigen::Matrix3Xd plain(3, n), starred(3, n), error(3, n); // no allocation per face
-        for (size_t f = begin; f < end; ++f) {
-          both(f, plain, starred);
-          error = starred;
-          error.noalias() -= plain.lazyProduct(fit.coefficients.transpose());
-          for (long j = 0; j < n; ++j)
-            sum[j] += geometry.areas[f] * error.col(j).squaredNorm();
-        }
-        return sum;
-      });
+  fit.coefficients = gram.ldlt().solve(starred.transpose()).transpose(); // C = S G^-1
+  // |*h_j - sum_l C_jl h_l|^2 = |h_j|^2 - 2 (C S^T)_jj + (C G C^T)_jj.
+  const Eigen::MatrixXd &c = fit.coefficients;
+  const Eigen::MatrixXd error = gram - 2.0 * c * starred.transpose() + c * gram * c.transpose();
   for (long j = 0; j < n; ++j)
     fit.relative_residual =
-        std::max(fit.relative_residual, std::sqrt(error_squared[j] / inner.gram(j, j)));
+        std::max(fit.relative_residual, std::sqrt(std::max(0.0, error(j, j)) / gram(j, j)));
   return fit;
+}
+
+// f dz + g dzbar on each face of `faces` (a Mesh or FaceCorners) for a complex form: with c the
+// complex face vector and (cx, cy) its components in the face's frame, f = (cx - i cy) / 2 and
+// g = (cx + i cy) / 2.
+template <class Faces>
+LocalCoefficients coefficients_of(const Faces &faces, size_t face_count, const MeshEdges &edges,
+                                  const FaceGeometry &geometry, const Eigen::VectorXcd &form) {
+  LocalCoefficients local;
+  local.f.resize(face_count);
+  local.g.resize(face_count);
+  const std::complex<double> i(0, 1);
+  parallel_for(face_count, [&](size_t f) {
+    const FaceVectorBasis basis = face_vector_basis(faces, geometry, f);
+    const Eigen::Vector3d &e1 = geometry.first_axes[f];
+    const Eigen::Vector3d e2 = geometry.normals[f].cross(e1);
+    const std::complex<double> u1 = double(edges.face_signs[f][0]) * form[edges.face_edges[f][0]];
+    const std::complex<double> u2 =
+        u1 + double(edges.face_signs[f][1]) * form[edges.face_edges[f][1]];
+    const std::complex<double> cx = u1 * basis.first.dot(e1) + u2 * basis.second.dot(e1);
+    const std::complex<double> cy = u1 * basis.first.dot(e2) + u2 * basis.second.dot(e2);
+    local.f[f] = (cx - i * cy) / 2.0;
+    local.g[f] = (cx + i * cy) / 2.0;
+  });
+  return local;
+}
+
+// A vector in the plane of face f, in the face's frame.
+Eigen::Vector2d in_face_frame(const FaceGeometry &geometry, size_t f, const Eigen::Vector3d &v) {
+  const Eigen::Vector3d &e1 = geometry.first_axes[f];
+  return {v.dot(e1), v.dot(geometry.normals[f].cross(e1))};
 }
 
 } // namespace
@@ -69,9 +86,10 @@ ConjugateFit conjugate_coefficients(const std::vector<Eigen::MatrixX3d> &harmoni
                                     const FaceGeometry &geometry) {
   const long n = long(harmonic_vectors.size());
   return conjugate_fit(n, size_t(harmonic_vectors.front().rows()), geometry,
-                       [&](size_t f, Eigen::Matrix3Xd &plain) {
+                       [&](size_t f, Eigen::Matrix2Xd &in_frame) {
                          for (long j = 0; j < n; ++j)
-                           plain.col(j) = harmonic_vectors[size_t(j)].row(long(f)).transpose();
+                           in_frame.col(j) = in_face_frame(
+                               geometry, f, harmonic_vectors[size_t(j)].row(long(f)).transpose());
                        });
 }
 
@@ -79,14 +97,16 @@ ConjugateFit conjugate_coefficients(const FaceCorners &faces, const MeshEdges &e
                                     const FaceGeometry &geometry,
                                     const std::vector<Eigen::VectorXd> &harmonic_forms) {
   const long n = long(harmonic_forms.size());
-  return conjugate_fit(n, faces.size(), geometry, [&](size_t f, Eigen::Matrix3Xd &plain) {
+  return conjugate_fit(n, faces.size(), geometry, [&](size_t f, Eigen::Matrix2Xd &in_frame) {
     const FaceVectorBasis basis = face_vector_basis(faces, geometry, f);
+    const Eigen::Vector2d first = in_face_frame(geometry, f, basis.first);
+    const Eigen::Vector2d second = in_face_frame(geometry, f, basis.second);
     const int e0 = edges.face_edges[f][0], e1 = edges.face_edges[f][1];
     const double s0 = edges.face_signs[f][0], s1 = edges.face_signs[f][1];
     for (long j = 0; j < n; ++j) {
       const Eigen::VectorXd &form = harmonic_forms[size_t(j)];
       const double u1 = s0 * form[e0], u2 = u1 + s1 * form[e1];
-      plain.col(j) = u1 * basis.first + u2 * basis.second;
+      in_frame.col(j) = u1 * first + u2 * second;
     }
   });
 }
@@ -96,17 +116,27 @@ LocalCoefficients local_coefficients(const FaceGeometry &geometry,
                                      const Eigen::MatrixX3d &imaginary_part) {
   const size_t face_count = geometry.areas.size();
   LocalCoefficients local;
-  local.f.reserve(face_count);
-  local.g.reserve(face_count);
-  for (size_t f = 0; f < face_count; ++f) {
+  local.f.resize(face_count);
+  local.g.resize(face_count);
+  parallel_for(face_count, [&](size_t f) {
     const Eigen::Vector3d &e1 = geometry.first_axes[f];
     const Eigen::Vector3d e2 = geometry.normals[f].cross(e1);
     const Eigen::Vector3d a = real_part.row(long(f)), b = imaginary_part.row(long(f));
     const double ax = a.dot(e1), ay = a.dot(e2), bx = b.dot(e1), by = b.dot(e2);
-    local.f.emplace_back((ax + by) / 2, (bx - ay) / 2);
-    local.g.emplace_back((ax - by) / 2, (bx + ay) / 2);
-  }
+    local.f[f] = {(ax + by) / 2, (bx - ay) / 2};
+    local.g[f] = {(ax - by) / 2, (bx + ay) / 2};
+  });
   return local;
+}
+
+LocalCoefficients local_coefficients(const Mesh &mesh, const MeshEdges &edges,
+                                     const FaceGeometry &geometry, const Eigen::VectorXcd &form) {
+  return coefficients_of(mesh, mesh.face.size(), edges, geometry, form);
+}
+
+LocalCoefficients local_coefficients(const FaceCorners &faces, const MeshEdges &edges,
+                                     const FaceGeometry &geometry, const Eigen::VectorXcd &form) {
+  return coefficients_of(faces, faces.size(), edges, geometry, form);
 }
 
 } // namespace meromorph

@@ -37,5 +37,10 @@ struct LocalCoefficients {
 LocalCoefficients local_coefficients(const FaceGeometry &geometry,
                                      const Eigen::MatrixX3d &real_part,
                                      const Eigen::MatrixX3d &imaginary_part);
+// The same straight from a complex form's edge values, face by face (no arrays of face vectors).
+LocalCoefficients local_coefficients(const Mesh &mesh, const MeshEdges &edges,
+                                     const FaceGeometry &geometry, const Eigen::VectorXcd &form);
+LocalCoefficients local_coefficients(const FaceCorners &faces, const MeshEdges &edges,
+                                     const FaceGeometry &geometry, const Eigen::VectorXcd &form);
 
 } // namespace meromorph

@@ -134,15 +134,10 @@ void measure_non_holomorphicity(const FaceCorners &faces, const MeshEdges &edges
                                 HolomorphicForms &out) {
   // phi_1 = sum_j P_j1 (h_j + i sum_l C_jl h_l): its real and imaginary parts as edge values.
   const Eigen::VectorXd first = basis.col(0), imaginary = out.conjugate.transpose() * first;
-  Eigen::VectorXd real_form = Eigen::VectorXd::Zero(out.harmonic.front().size());
-  Eigen::VectorXd imaginary_form = real_form;
-  for (size_t j = 0; j < out.harmonic.size(); ++j) {
-    real_form += first[long(j)] * out.harmonic[j];
-    imaginary_form += imaginary[long(j)] * out.harmonic[j];
-  }
-  const LocalCoefficients local =
-      local_coefficients(geometry, face_vectors(faces, edges, geometry, real_form),
-                         face_vectors(faces, edges, geometry, imaginary_form));
+  Eigen::VectorXcd form = Eigen::VectorXcd::Zero(out.harmonic.front().size());
+  for (size_t j = 0; j < out.harmonic.size(); ++j)
+    form += std::complex<double>(first[long(j)], imaginary[long(j)]) * out.harmonic[j];
+  const LocalCoefficients local = local_coefficients(faces, edges, geometry, form);
   double weighted = 0, total_area = 0;
   for (size_t f = 0; f < local.f.size(); ++f) {
     const double ratio = std::abs(local.g[f]) / std::abs(local.f[f]);

@@ -15,19 +15,25 @@ Eigen::MatrixXi wedge_matrix(const std::vector<Eigen::VectorXd> &closed_forms,
   const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(n, n);
   const Eigen::MatrixXd integral = chunked_sum(face_count, zero, [&](size_t begin, size_t end) {
     // sum over the sides of (a_s b_{s+1} - a_{s+1} b_s) / 6 = (P - P^T) / 6, P = A^T (A shifted
-    // by one side), summed over the chunk's faces first (no allocation per face).
+    // by one side): the faces of a block stacked (three rows each), one matrix product per block
+    // (blocks small enough to be reused from the heap, not mapped and cleared afresh).
     Eigen::MatrixXd products = zero;
-    Eigen::Matrix3Xd sides(3, n), next(3, n); // the forms' values on the sides, counter-clockwise
-    for (size_t f = begin; f < end; ++f) {
-      for (int side = 0; side < 3; ++side) {
-        const int e = edges.face_edges[f][side], sign = edges.face_signs[f][side];
-        for (long j = 0; j < n; ++j)
-          sides(side, j) = sign * closed_forms[size_t(j)][e];
+    Eigen::MatrixXd sides(3 * long(stacked_block), n), next(3 * long(stacked_block), n);
+    for (size_t first = begin; first < end; first += stacked_block) {
+      const size_t last = std::min(end, first + stacked_block);
+      const long rows = 3 * long(last - first);
+      for (size_t f = first; f < last; ++f) {
+        const long row = 3 * long(f - first);
+        for (int side = 0; side < 3; ++side) {
+          const int e = edges.face_edges[f][side], sign = edges.face_signs[f][side];
+          for (long j = 0; j < n; ++j) {
+            const double value = sign * closed_forms[size_t(j)][e];
+            sides(row + side, j) = value;
+            next(row + (side + 2) % 3, j) = value;
+          }
+        }
       }
-      next.row(0) = sides.row(1);
-      next.row(1) = sides.row(2);
-      next.row(2) = sides.row(0);
-      products.noalias() += sides.transpose().lazyProduct(next);
+      products.noalias() += sides.topRows(rows).transpose() * next.topRows(rows);
     }
     const Eigen::MatrixXd sum = (products - products.transpose()) / 6.0;
     return sum;

@@ -38,8 +38,9 @@ std::map<int, Complex> integrated_coordinate(const MeshEdges &edges, const Index
   return z;
 }
 
-// Vertices that touch a folded or flat face or wind less than once, in spots connected through
-// faces.
+// Vertices that touch a folded or flat face, in spots connected through faces. (Those are all
+// that can wind less than once: the corners of a star of faces all turned the right way add up
+// to a positive multiple of a full turn.)
 std::vector<std::vector<int>> trouble_spots(const FaceIncidence &in,
                                             const std::vector<Eigen::Vector3d> &sphere) {
   const int vertex_count = int(in.faces_of_vertex.size());
@@ -48,9 +49,6 @@ std::vector<std::vector<int>> trouble_spots(const FaceIncidence &in,
                                [&](size_t f) { return folded_or_flat(in, sphere, int(f)); }))
     for (int v : in.corners[size_t(f)])
       trouble[size_t(v)] = 1;
-  parallel_for(size_t(vertex_count), [&](size_t v) {
-    if (!trouble[v] && vertex_winding(in, sphere, int(v)) < 1) trouble[v] = 1;
-  });
   std::vector<std::vector<int>> spots;
   std::vector<char> done(vertex_count, 0);
   for (int seed = 0; seed < vertex_count; ++seed) {
@@ -165,8 +163,9 @@ int critical_points_in(const Spot &spot) {
 }
 
 // No critical point: a vertex value strays (next to needle-shaped faces, say); the spot's values
-// smoothed towards their neighbours', kept if that scores better. Returns whether it did.
-bool smooth_stray_values(Spot &spot) {
+// smoothed towards their neighbours'. Returns the new values if that scores better, else none;
+// the spot is left as it was.
+Moves smooth_stray_values(Spot &spot) {
   Moves original;
   for (int v : spot.vertices)
     original.push_back({v, spot.sphere[size_t(v)]});
@@ -179,9 +178,12 @@ bool smooth_stray_values(Spot &spot) {
           if (w != v) mean += spot.sphere[size_t(w)];
       spot.sphere[size_t(v)] = mean.normalized();
     }
-  if (spot.score(-1) < before) return true;
+  Moves smoothed;
+  if (spot.score(-1) < before)
+    for (int v : spot.vertices)
+      smoothed.push_back({v, spot.sphere[size_t(v)]});
   spot.restore(original);
-  return false;
+  return smoothed;
 }
 
 // Near a critical point p the map is Q(z) = c + k (z - p)^2 = A + B z + C z^2 in a chart of the
@@ -294,79 +296,109 @@ void try_branch_vertex(Spot &spot, const CriticalModel &model, const std::map<in
   spot.restore(original);
 }
 
+// One trouble spot repaired on `sphere` (left as it was): the values to change (none where
+// nothing improves on the spot as it is), and the vertices whose values that decision read.
+struct SpotRepair {
+  Moves moves;
+  std::vector<int> read;
+};
+
+SpotRepair repair_spot(const PreparedMesh &prepared,
+                       const std::vector<const Eigen::VectorXcd *> &coordinate_forms,
+                       std::vector<Eigen::Vector3d> &sphere, const std::vector<int> &vertices) {
+  constexpr int fit_rings = 2;       // around the spot, where the model is fitted
+  constexpr int max_shift_rings = 5; // around the chosen vertex, where the map is changed
+  const FaceIncidence &in = prepared.incidence;
+  SpotRepair out;
+  Spot spot{prepared.mesh,
+            in,
+            sphere,
+            vertices,
+            ring_distances(in, vertices, fit_rings + max_shift_rings + 1),
+            {}};
+  std::set<int> faces;
+  for (const auto &[v, ring] : spot.region)
+    faces.insert(in.faces_of_vertex[size_t(v)].begin(), in.faces_of_vertex[size_t(v)].end());
+  spot.region_faces.assign(faces.begin(), faces.end());
+  // Everything below reads values at the corners of these faces only (the region is wider than
+  // any change or fit).
+  for (int f : spot.region_faces)
+    out.read.insert(out.read.end(), in.corners[size_t(f)].begin(), in.corners[size_t(f)].end());
+
+  const int critical_points = critical_points_in(spot);
+  if (critical_points <= 0) {
+    out.moves = smooth_stray_values(spot);
+    return out;
+  }
+  // The coordinate: the integral of the form that is larger near the spot (far from its zeros).
+  const Eigen::VectorXcd *form = coordinate_forms.front();
+  double largest = -1;
+  for (const Eigen::VectorXcd *candidate : coordinate_forms) {
+    double size = 0;
+    for (const auto &[v, ring] : spot.region)
+      if (ring <= fit_rings)
+        for (int e : prepared.edges_at_vertex[size_t(v)])
+          size += std::abs((*candidate)[e]);
+    if (size > largest) {
+      largest = size;
+      form = candidate;
+    }
+  }
+  const std::map<int, Complex> z = integrated_coordinate(prepared.edges, prepared.edges_at_vertex,
+                                                         *form, vertices.front(), spot.region);
+  CriticalModel model;
+  if (!fit_critical_model(spot, z, critical_points, fit_rings, model)) return out;
+
+  // Candidates: the 6 vertices nearest p, then, if none of them winds twice without folding a
+  // face (a corner of 90 degrees or more at a branch vertex turns its face over), the next 6,
+  // each with the shift fading over 1 to max_shift_rings rings; the fold-free one that distorts
+  // angles least wins (farther candidates distort more, so they come second).
+  BestChange best{spot.score(-1), {}};
+  for (const Complex p : model.critical_points) {
+    std::vector<std::pair<double, int>> by_distance;
+    for (int v : model.fitted)
+      by_distance.push_back({std::abs(z.at(v) - p), v});
+    std::sort(by_distance.begin(), by_distance.end());
+    for (const size_t first : {size_t(0), size_t(6)}) {
+      if (first > 0 && std::get<0>(best.score) == 0 && std::get<2>(best.score) == 0) break;
+      for (int shift_rings = 1; shift_rings <= max_shift_rings; ++shift_rings)
+        for (size_t i = first; i < std::min<size_t>(first + 6, by_distance.size()); ++i)
+          try_branch_vertex(spot, model, z, p, by_distance[i].second, shift_rings, best);
+    }
+  }
+  out.moves = std::move(best.moves);
+  return out;
+}
+
 } // namespace
 
 int snap_branch_points(const PreparedMesh &prepared,
                        const std::vector<const Eigen::VectorXcd *> &coordinate_forms,
                        std::vector<PlaneValue> &plane_values) {
-  constexpr int fit_rings = 2;       // around the spot, where the model is fitted
-  constexpr int max_shift_rings = 5; // around the chosen vertex, where the map is changed
-  const FaceIncidence &in = prepared.incidence;
   std::vector<Eigen::Vector3d> sphere = to_sphere(plane_values);
-
+  std::vector<std::vector<int>> spots;
+  for (std::vector<int> &vertices : trouble_spots(prepared.incidence, sphere))
+    if (vertices.size() <= 64) spots.push_back(std::move(vertices)); // else not a lone point
+  // The spots are repaired one after the other. Each is first worked out over the cores on the
+  // map as it is now (a scratch copy per thread); one whose values an earlier repair has changed
+  // since is worked out again when its turn comes: the same result as in turn throughout.
+  std::vector<SpotRepair> repairs(spots.size());
+  parallel_for_with(
+      spots.size(), [&] { return sphere; },
+      [&](size_t i, std::vector<Eigen::Vector3d> &scratch) {
+        repairs[i] = repair_spot(prepared, coordinate_forms, scratch, spots[i]);
+      });
+  std::vector<char> changed(sphere.size(), 0);
   int repaired = 0;
-  for (const std::vector<int> &vertices : trouble_spots(in, sphere)) {
-    if (vertices.size() > 64) continue; // not a lone critical point: leave it as measured
-    Spot spot{prepared.mesh,
-              in,
-              sphere,
-              vertices,
-              ring_distances(in, vertices, fit_rings + max_shift_rings + 1),
-              {}};
-    std::set<int> faces;
-    for (const auto &[v, ring] : spot.region)
-      faces.insert(in.faces_of_vertex[size_t(v)].begin(), in.faces_of_vertex[size_t(v)].end());
-    spot.region_faces.assign(faces.begin(), faces.end());
-
-    const int critical_points = critical_points_in(spot);
-    if (critical_points <= 0) {
-      if (smooth_stray_values(spot)) {
-        for (int v : spot.vertices)
-          plane_values[size_t(v)] = to_plane_value(sphere[size_t(v)]);
-        ++repaired;
-      }
-      continue;
-    }
-    // The coordinate: the integral of the form that is larger near the spot (far from its zeros).
-    const Eigen::VectorXcd *form = coordinate_forms.front();
-    double largest = -1;
-    for (const Eigen::VectorXcd *candidate : coordinate_forms) {
-      double size = 0;
-      for (const auto &[v, ring] : spot.region)
-        if (ring <= fit_rings)
-          for (int e : prepared.edges_at_vertex[size_t(v)])
-            size += std::abs((*candidate)[e]);
-      if (size > largest) {
-        largest = size;
-        form = candidate;
-      }
-    }
-    const std::map<int, Complex> z = integrated_coordinate(prepared.edges, prepared.edges_at_vertex,
-                                                           *form, vertices.front(), spot.region);
-    CriticalModel model;
-    if (!fit_critical_model(spot, z, critical_points, fit_rings, model)) continue;
-
-    // Candidates: the 6 vertices nearest p, then, if none of them winds twice without folding a
-    // face (a corner of 90 degrees or more at a branch vertex turns its face over), the next 6,
-    // each with the shift fading over 1 to max_shift_rings rings; the fold-free one that distorts
-    // angles least wins (farther candidates distort more, so they come second).
-    BestChange best{spot.score(-1), {}};
-    for (const Complex p : model.critical_points) {
-      std::vector<std::pair<double, int>> by_distance;
-      for (int v : model.fitted)
-        by_distance.push_back({std::abs(z.at(v) - p), v});
-      std::sort(by_distance.begin(), by_distance.end());
-      for (const size_t first : {size_t(0), size_t(6)}) {
-        if (first > 0 && std::get<0>(best.score) == 0 && std::get<2>(best.score) == 0) break;
-        for (int shift_rings = 1; shift_rings <= max_shift_rings; ++shift_rings)
-          for (size_t i = first; i < std::min<size_t>(first + 6, by_distance.size()); ++i)
-            try_branch_vertex(spot, model, z, p, by_distance[i].second, shift_rings, best);
-      }
-    }
-    if (best.moves.empty()) continue;
-    for (const auto &[w, point] : best.moves) {
+  for (size_t i = 0; i < spots.size(); ++i) {
+    SpotRepair &repair = repairs[i];
+    if (std::any_of(repair.read.begin(), repair.read.end(), [&](int v) { return changed[v]; }))
+      repair = repair_spot(prepared, coordinate_forms, sphere, spots[i]);
+    if (repair.moves.empty()) continue;
+    for (const auto &[w, point] : repair.moves) {
       sphere[size_t(w)] = point;
       plane_values[size_t(w)] = to_plane_value(point);
+      changed[size_t(w)] = 1;
     }
     ++repaired;
   }

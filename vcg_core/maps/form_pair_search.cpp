@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "common/errors.h"
+#include "common/parallel_for.h"
 #include "maps/branch_snapping.h"
 #include "maps/form_ratio_map.h"
 #include "sphere/branch_points.h"
@@ -38,6 +39,7 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
     std::vector<PlaneValue> values;
     MobiusCentering centring;
     int snapped;
+    Branching measured;
     int crowded = 0; // faces whose image spans more than a chord of 1 (a quarter of the sphere)
   };
   std::optional<Attempt> best;
@@ -58,14 +60,17 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
       if (!repaired) break;
     }
     const std::vector<Eigen::Vector3d> sphere = to_sphere(result.values);
-    const Branching measured = analyse_branching(mesh, sphere, euler);
+    result.measured = analyse_branching(mesh, sphere, euler);
+    const Branching &measured = result.measured;
     result.generic = measured.riemann_hurwitz_ok && measured.degree == 2 * forms.genus - 2;
     result.deficit = std::abs(euler - (2 * measured.degree - measured.ramification));
-    for (const std::array<int, 3> &corners : prepared.incidence.corners) {
-      const Eigen::Vector3d &a = sphere[corners[0]], &b = sphere[corners[1]],
-                            &c = sphere[corners[2]];
-      result.crowded += std::max({(a - b).norm(), (b - c).norm(), (c - a).norm()}) > 1.0;
-    }
+    result.crowded = int(parallel_select(prepared.incidence.corners.size(), [&](size_t f) {
+                           const auto &corners = prepared.incidence.corners[f];
+                           const Eigen::Vector3d &a = sphere[corners[0]], &b = sphere[corners[1]],
+                                                 &c = sphere[corners[2]];
+                           return std::max({(a - b).squaredNorm(), (b - c).squaredNorm(),
+                                            (c - a).squaredNorm()}) > 1.0;
+                         }).size());
     auto rank = [](const Attempt &a) { return std::make_tuple(!a.generic, a.deficit, a.crowded); };
     if (!best || rank(result) < rank(*best)) {
       best = std::move(result);
@@ -82,6 +87,7 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   out.values = std::move(best->values);
   out.centring = best->centring;
   out.snapped_branch_points = best->snapped;
+  out.branching = std::move(best->measured);
   return out;
 }
 

@@ -6,7 +6,8 @@
 // Out: for each pair, f = (omega1 + omega2) / (omega1 - omega2) per vertex (form_ratio_map.h),
 //      centred, its critical points snapped onto vertices (branch_snapping.h, up to four passes),
 //      ranked by whether it is generic (degree 2g - 2 and Riemann-Hurwitz), its Riemann-Hurwitz
-//      deficit and its crowded faces (an image chord above 1); the best is kept. The next pair is
+//      deficit and its crowded faces (an image chord above 1); the best is kept, with its
+//      branching as measured for the ranking. The next pair is
 //      tried only where the best is not generic, or crowds (not for genus 2, where every generic
 //      pair gives the same map up to a Moebius transformation; three pairs at most for that).
 //      Throws ArgumentError for a pair that is not two different form indices.
@@ -19,6 +20,7 @@
 #include "forms/holomorphic_pipeline.h"
 #include "maps/form_pairs.h"
 #include "mesh/prepared_mesh.h"
+#include "sphere/branch_points.h"
 #include "sphere/mobius_centering.h"
 #include "sphere/sphere_geometry.h"
 
@@ -28,6 +30,7 @@ struct PairSearch {
   std::vector<PlaneValue> values;
   MobiusCentering centring;
   int snapped_branch_points = 0;
+  Branching branching; // of `values`, as the ranking measured it
   FormPair coefficients;
   int attempts = 0;
 };

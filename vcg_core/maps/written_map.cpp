@@ -20,11 +20,12 @@ int folded_face_count(const FaceIncidence &in, const std::vector<Eigen::Vector3d
 } // namespace
 
 void finish_on_sphere(const PreparedMesh &prepared, bool mobius, const Genus1Map *torus_map,
-                      int euler, std::vector<PlaneValue> values, WrittenSphere &out,
-                      const Progress &progress, StageClock &clock) {
+                      int euler, std::vector<PlaneValue> values, const Branching *measured,
+                      WrittenSphere &out, const Progress &progress, StageClock &clock) {
   const Mesh &mesh = prepared.mesh;
   const std::vector<double> &areas = prepared.vertex_areas;
-  if (mobius && euler >= 0) { // genus 0 and 1
+  const bool centred_here = mobius && euler >= 0;
+  if (centred_here) { // genus 0 and 1
     progress.report(0.7, "Moebius normalisation");
     out.mobius = center_on_sphere(values, areas);
     out.mobius_applied = true;
@@ -43,7 +44,9 @@ void finish_on_sphere(const PreparedMesh &prepared, bool mobius, const Genus1Map
 
   progress.report(0.8, "branch points and layers");
   // Everything below is measured on the map as written: vertex values, linear on each face.
-  out.branching = analyse_branching(mesh, out.sphere, euler);
+  out.branching = measured && !centred_here && !torus_map
+                      ? *measured
+                      : analyse_branching(mesh, out.sphere, euler);
   out.untangled_vertices = untangle_folds(prepared, out.sphere, out.branching.branch_vertices);
   if (mobius && (out.untangled_vertices || out.snapped_branch_points)) {
     // The vertices moved above shift the centroid a little: centre once more.
@@ -70,7 +73,7 @@ WrittenSphere written_genus1_map(const PreparedMesh &prepared, const Holomorphic
     const Genus1Map map = genus1_map(prepared, forms.normalized[0], Complex(1, 0),
                                      forms.riemann_matrix(0, 0), origins[k]);
     WrittenSphere written;
-    finish_on_sphere(prepared, mobius, &map, 0, map.values, written, progress, clock);
+    finish_on_sphere(prepared, mobius, &map, 0, map.values, nullptr, written, progress, clock);
     written.origin_vertex = map.origin_vertex;
     written.flat = map.flat;
     const bool valid = written.branching.degree == 2 && written.branching.riemann_hurwitz_ok &&

@@ -38,9 +38,11 @@ struct WrittenSphere {
   std::vector<Complex> flat;                   // genus 1: z per vertex (genus1_map.h)
 };
 
+// `measured`: the branching of `values` as given, where the caller measured it (genus >= 2; used
+// only where the values are neither centred nor placed here), or null.
 void finish_on_sphere(const PreparedMesh &prepared, bool mobius, const Genus1Map *torus_map,
-                      int euler, std::vector<PlaneValue> values, WrittenSphere &out,
-                      const Progress &progress, StageClock &clock);
+                      int euler, std::vector<PlaneValue> values, const Branching *measured,
+                      WrittenSphere &out, const Progress &progress, StageClock &clock);
 
 WrittenSphere written_genus1_map(const PreparedMesh &prepared, const HolomorphicForms &forms,
                                  const std::vector<int> &origins, bool mobius,

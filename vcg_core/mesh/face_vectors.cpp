@@ -108,4 +108,8 @@ FaceVectorBasis face_vector_basis(const FaceCorners &faces, const FaceGeometry &
   return basis_of(faces, geometry, f);
 }
 
+FaceVectorBasis face_vector_basis(const Mesh &mesh, const FaceGeometry &geometry, size_t f) {
+  return basis_of(mesh, geometry, f);
+}
+
 } // namespace meromorph

@@ -52,5 +52,6 @@ struct FaceVectorBasis {
   Eigen::Vector3d first, second;
 };
 FaceVectorBasis face_vector_basis(const FaceCorners &faces, const FaceGeometry &geometry, size_t f);
+FaceVectorBasis face_vector_basis(const Mesh &mesh, const FaceGeometry &geometry, size_t f);
 
 } // namespace meromorph
