@@ -26,6 +26,7 @@ TEST(WeierstrassP, MatchesTheLatticeSumAndItsDifferentialEquation) {
       {Complex(1, 0), Complex(0.5, 0.8660254)}, // hexagonal
       {Complex(1, 0), Complex(0.3, 1.7)},       // general
       {Complex(0.7, 0.2), Complex(-1.9, 2.6)},  // unreduced basis
+      {Complex(1, 0), Complex(0.2, 12)},        // long and thin (a thin torus's flat image)
   };
   for (const auto &[w1, w2] : lattices) {
     const WeierstrassP p(w1, w2);

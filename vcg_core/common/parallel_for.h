@@ -9,12 +9,15 @@
 //      of cores) run over the cores and their sums are added in chunk order: the same result on
 //      any machine, from one pass over the items however many sums each item feeds.
 //      `parallel_select`: the indices i in [0, count) where test(i) holds, in increasing order.
+//      `parallel_smallest`: the k smallest of key(i) over i in [0, count), as (key, i) pairs in
+//      increasing order (equal keys by index): each chunk's k smallest, merged.
 //      `parallel_for_with`: body(i, state) for every i, dynamically scheduled, `state` each
 //      thread's own, made by make_state() once per thread (a scratch copy to change and restore).
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace meromorph {
@@ -59,6 +62,36 @@ Sum chunked_sum(std::size_t count, const Sum &zero, const Body &body) {
   for (const Sum &part : partial)
     total += part;
   return total;
+}
+
+template <class Key>
+std::vector<std::pair<double, int>> parallel_smallest(std::size_t count, std::size_t k,
+                                                      const Key &key) {
+  using Items = std::vector<std::pair<double, int>>;
+  struct Smallest {
+    Items items;
+    std::size_t k;
+    Smallest &operator+=(const Smallest &other) {
+      Items merged(items.size() + other.items.size());
+      std::merge(items.begin(), items.end(), other.items.begin(), other.items.end(),
+                 merged.begin());
+      merged.resize(std::min(merged.size(), k));
+      items = std::move(merged);
+      return *this;
+    }
+  };
+  return chunked_sum(count, Smallest{{}, k},
+                     [&](std::size_t begin, std::size_t end) {
+                       Smallest chunk{Items(end - begin), k};
+                       for (std::size_t i = begin; i < end; ++i)
+                         chunk.items[i - begin] = {key(i), int(i)};
+                       const std::size_t kept = std::min(k, chunk.items.size());
+                       std::partial_sort(chunk.items.begin(), chunk.items.begin() + long(kept),
+                                         chunk.items.end());
+                       chunk.items.resize(kept);
+                       return chunk;
+                     })
+      .items;
 }
 
 template <class MakeState, class Body>

@@ -52,7 +52,7 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
       omega2 += pairs[attempt].second[k] * forms.normalized[k];
     }
     const Eigen::VectorXcd numerator = omega1 + omega2, denominator = omega1 - omega2;
-    Attempt result{false, 0, form_ratio_map(prepared, numerator, denominator), {}, 0};
+    Attempt result{false, 0, form_ratio_map(prepared, numerator, denominator), {}, 0, {}};
     if (mobius) result.centring = center_on_sphere(result.values, areas);
     for (int pass = 0; pass < 4; ++pass) {
       const int repaired = snap_branch_points(prepared, {&numerator, &denominator}, result.values);

@@ -54,7 +54,7 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
       // of the map kept; the whole map again where that still folds.
       std::vector<char> region;
       region_around_folds(prepared, attempt.folded_faces, raise, region);
-      Genus0Map local = genus0_map_again_in(prepared, solver, attempt, raise, region);
+      Genus0Map local = genus0_map_again_in(prepared, attempt, raise, region);
       if (local.folded_faces.empty()) {
         // The factor stays good for the south-pole step, which repairs folds the same way.
         local.cap_last = std::move(attempt.cap_last);

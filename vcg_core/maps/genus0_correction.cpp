@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "common/parallel_for.h"
 #include "forms/leading_block_solve.h"
+#include "forms/region_extension.h"
 #include "maps/genus0_map.h"
 #include "mesh/cotan_laplacian.h"
 
@@ -132,8 +134,10 @@ Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
   for (const PlaneValue &value : pinned_map)
     if (value.infinite) return out;
   const size_t folded_before = folded_plane_faces(in, pinned_map).size();
-  auto accept = [&](const std::vector<PlaneValue> &candidate) {
-    if (folded_plane_faces(in, candidate).size() > folded_before) return false;
+  // A candidate is taken if it folds no more faces than the pinned map (`folded`: its count,
+  // where already known).
+  auto accept = [&](const std::vector<PlaneValue> &candidate, std::optional<size_t> folded = {}) {
+    if ((folded ? *folded : folded_plane_faces(in, candidate).size()) > folded_before) return false;
     out.values = candidate;
     ++out.steps_taken;
     return true;
@@ -213,23 +217,24 @@ Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
         region[size_t(v)] = 1;
   grow_by_rings(prepared, region, local_rings);
   const std::vector<int> folded = folded_plane_faces(in, candidate);
+  std::optional<size_t> folded_count = folded.size();
   if (folded.size() > folded_before) {
     std::vector<char> around_folds;
     region_around_folds(prepared, folded, raise, around_folds);
     for (size_t v = 0; v < n; ++v)
       region[v] |= around_folds[v];
   }
-  std::vector<int> kept;
+  std::vector<char> free(n, 0);
   for (size_t v = 0; v < n; ++v)
-    if (!region[v] || is_pinned[v]) kept.push_back(int(v));
-  if (kept.size() < n) {
+    free[v] = region[v] && !is_pinned[v];
+  if (std::find(free.begin(), free.end(), 1) != free.end()) {
     int raised = 0;
     const std::vector<double> region_weights =
         raise.empty() ? weights : positive_weights(weights, raise, raised);
-    candidate = mapped_back(harmonic_extension(cotan_laplacian(int(n), edges, region_weights),
-                                               edges, region_weights, solver, kept, zeta, 1));
+    candidate = mapped_back(harmonic_extension_in_region(prepared, region_weights, free, zeta));
+    folded_count.reset();
   }
-  if (!accept(candidate)) accept(by_new_factorization());
+  if (!accept(candidate, folded_count)) accept(by_new_factorization());
   return out;
 }
 

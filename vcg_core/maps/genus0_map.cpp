@@ -5,6 +5,7 @@
 
 #include "common/errors.h"
 #include "common/parallel_for.h"
+#include "forms/region_extension.h"
 #include "forms/reweighted_solve.h"
 #include "mesh/cotan_laplacian.h"
 #include "mesh/face_vectors.h"
@@ -275,27 +276,21 @@ std::optional<Genus0Map> genus0_map_reweighted(const PreparedMesh &prepared, con
   return out;
 }
 
-Genus0Map genus0_map_again_in(const PreparedMesh &prepared, SolverKind solver,
-                              const Genus0Map &first, const std::vector<char> &raise,
-                              const std::vector<char> &region) {
-  const MeshEdges &edges = prepared.edges;
+Genus0Map genus0_map_again_in(const PreparedMesh &prepared, const Genus0Map &first,
+                              const std::vector<char> &raise, const std::vector<char> &region) {
   const int n = int(prepared.mesh.vert.size());
   Genus0Map out;
   out.puncture_face = first.puncture_face;
   out.elimination_order = first.elimination_order;
   const std::vector<double> positive =
       positive_weights(prepared.weights, raise, out.raised_weights);
-  const Eigen::SparseMatrix<double> laplacian = cotan_laplacian(n, edges, positive);
-  std::vector<int> pinned;
-  for (int v = 0; v < n; ++v)
-    if (!region[size_t(v)]) pinned.push_back(v);
+  std::vector<char> free = region;
   for (int v : prepared.incidence.corners[size_t(first.puncture_face)])
-    if (region[size_t(v)]) pinned.push_back(v);
-  std::sort(pinned.begin(), pinned.end());
-  Eigen::VectorXcd fixed = Eigen::VectorXcd::Zero(n);
-  for (int v : pinned)
-    fixed[v] = first.values[size_t(v)].w;
-  const Eigen::VectorXcd z = harmonic_extension(laplacian, edges, positive, solver, pinned, fixed);
+    free[size_t(v)] = 0;
+  Eigen::VectorXcd given(n);
+  for (int v = 0; v < n; ++v)
+    given[v] = first.values[size_t(v)].w;
+  const Eigen::VectorXcd z = harmonic_extension_in_region(prepared, positive, free, given);
   out.values.reserve(size_t(n));
   for (int i = 0; i < n; ++i)
     out.values.push_back({z[i], false});

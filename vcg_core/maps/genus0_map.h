@@ -113,9 +113,9 @@ std::optional<Genus0Map> genus0_map_reweighted(const PreparedMesh &prepared, con
 
 // `first` with the vertices of `region` (one flag per vertex) solved again with the weights of
 // `raise` given the floor, every other vertex and the puncture face's corners kept where `first`
-// put them: a Dirichlet problem on the region alone, so its factorization is the region's size.
-Genus0Map genus0_map_again_in(const PreparedMesh &prepared, SolverKind solver,
-                              const Genus0Map &first, const std::vector<char> &raise,
-                              const std::vector<char> &region);
+// put them: a Dirichlet problem on the region alone (region_extension.h), assembled and factored
+// at the region's size.
+Genus0Map genus0_map_again_in(const PreparedMesh &prepared, const Genus0Map &first,
+                              const std::vector<char> &raise, const std::vector<char> &region);
 
 } // namespace meromorph

@@ -140,17 +140,22 @@ void reshape_ring(const FaceIncidence &in, const Genus1Map &map, int c, Shifted 
 std::vector<double> widest_flat_corners(const PreparedMesh &prepared, const Eigen::VectorXcd &psi) {
   const Mesh &mesh = prepared.mesh;
   const MeshEdges &edges = prepared.edges;
-  std::vector<double> widest(mesh.vert.size(), 0.0);
-  for (size_t f = 0; f < mesh.face.size(); ++f) {
+  const FaceIncidence &in = prepared.incidence;
+  std::vector<std::array<double, 3>> corners(mesh.face.size());
+  parallel_for(mesh.face.size(), [&](size_t f) {
     Complex side[3]; // side k: from corner k to corner k + 1
     for (int k = 0; k < 3; ++k)
       side[k] = double(edges.face_signs[f][k]) * psi[edges.face_edges[f][k]];
-    for (int k = 0; k < 3; ++k) {
-      const double angle = std::abs(std::arg(-side[(k + 2) % 3] / side[k]));
-      const int v = index_of(mesh, mesh.face[f].cV(k));
-      widest[size_t(v)] = std::max(widest[size_t(v)], angle);
-    }
-  }
+    for (int k = 0; k < 3; ++k)
+      corners[f][size_t(k)] = std::abs(std::arg(-side[(k + 2) % 3] / side[k]));
+  });
+  std::vector<double> widest(mesh.vert.size(), 0.0);
+  parallel_for(mesh.vert.size(), [&](size_t v) {
+    for (int f : in.faces_of_vertex[v])
+      for (size_t k = 0; k < 3; ++k)
+        if (size_t(in.corners[size_t(f)][k]) == v)
+          widest[v] = std::max(widest[v], corners[size_t(f)][k]);
+  });
   return widest;
 }
 
@@ -255,13 +260,11 @@ Genus1Placement place_half_period_branch_points(const PreparedMesh &prepared, co
   reshape_origin_ring(in, map, centring, sphere, values);
   const auto half_periods = map.p_function.half_periods();
   for (int k = 0; k < 3; ++k) {
-    std::vector<std::pair<double, int>> by_distance(map.flat.size());
-    parallel_for(map.flat.size(), [&](size_t v) {
-      by_distance[v] = {map.p_function.lattice_distance(map.flat[v] - half_periods[size_t(k)]),
-                        int(v)};
-    });
-    const size_t count = std::min<size_t>(candidates_per_half_period, by_distance.size());
-    std::partial_sort(by_distance.begin(), by_distance.begin() + long(count), by_distance.end());
+    const std::vector<std::pair<double, int>> by_distance =
+        parallel_smallest(map.flat.size(), candidates_per_half_period, [&](size_t v) {
+          return map.p_function.lattice_distance(map.flat[v] - half_periods[size_t(k)]);
+        });
+    const size_t count = by_distance.size();
 
     // Score: (folded or flat faces, winds other than twice at c, other vertices that branch).
     std::tuple<int, int, int> best_score{1 << 30, 1 << 30, 1 << 30};

@@ -80,21 +80,20 @@ std::vector<int> origin_candidates(const PreparedMesh &prepared, const Eigen::Ve
     return std::array<double, 2>{u.real() - b * tau.real(), b};
   };
   std::vector<std::array<double, 2>> lattice(vertex_count);
-  for (size_t v = 0; v < vertex_count; ++v)
-    lattice[v] = lattice_coordinates(flat[v]);
-  std::vector<std::pair<double, int>> scored, distance(vertex_count);
+  parallel_for(vertex_count, [&](size_t v) { lattice[v] = lattice_coordinates(flat[v]); });
+  std::vector<std::pair<double, int>> scored;
   for (int origin : candidates) {
     double score = widest[size_t(origin)];
     for (const Complex &half : p_function.half_periods()) {
       const std::array<double, 2> target = lattice_coordinates(flat[size_t(origin)] + half);
-      parallel_for(vertex_count, [&](size_t v) { // squared distances: only their order counts
+      // Squared distances: only their order counts.
+      const auto nearest = parallel_smallest(vertex_count, 8, [&](size_t v) {
         const double da = lattice[v][0] - target[0], db = lattice[v][1] - target[1];
-        distance[v] = {std::norm(da - std::round(da) + (db - std::round(db)) * tau), int(v)};
+        return std::norm(da - std::round(da) + (db - std::round(db)) * tau);
       });
-      std::nth_element(distance.begin(), distance.begin() + 7, distance.end());
       double spot = std::numeric_limits<double>::infinity();
-      for (int k = 0; k < 8; ++k)
-        spot = std::min(spot, widest[size_t(distance[size_t(k)].second)]);
+      for (const auto &[distance, v] : nearest)
+        spot = std::min(spot, widest[size_t(v)]);
       score = std::max(score, spot);
     }
     scored.push_back({settled(score), origin});

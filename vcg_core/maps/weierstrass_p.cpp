@@ -106,8 +106,27 @@ bool WeierstrassP::is_lattice_point(Complex z, double tolerance) const {
 WeierstrassP::Complex WeierstrassP::value(Complex z) const {
   const Complex u = reduce(z);
   if (std::abs(u) < 1e-300) return {std::numeric_limits<double>::infinity(), 0.0};
-  const Thetas t = thetas(M_PI * u, tau_);
-  const Complex ratio = theta3_0_ * theta4_0_ * t.t2 / t.t1;
+  // theta1(v) / theta2(v) from the series' terms q^((n+1/2)^2) E^(+-(2n+1)), E = e^(i v), each
+  // from the one before by a factor q^(2n+2) E^(+-2): no transcendental function per term, and
+  // no power of E on its own (which can overflow where the terms do not). The common factor
+  // q^(1/4) of both series cancels in the ratio.
+  const Complex v = M_PI * u;
+  const Complex e = std::exp(I * v), e_inverse = 1.0 / e;
+  const Complex e2 = e * e, e_inverse2 = e_inverse * e_inverse, q2 = q_ * q_;
+  Complex up = e, down = e_inverse; // q^((n+1/2)^2 - 1/4) E^(2n+1) and E^-(2n+1)
+  Complex q2_power = q2;            // q^(2n+2)
+  Complex odd = 0, even = 0;        // sum (-1)^n (up - down), sum (up + down)
+  for (int n = 0; n < 60; ++n) {
+    const double sign = (n % 2) ? -1.0 : 1.0;
+    odd += sign * (up - down);
+    even += up + down;
+    if (n > 2 && std::abs(up) + std::abs(down) < 1e-18 * (std::abs(odd) + std::abs(even))) break;
+    up *= q2_power * e2;
+    down *= q2_power * e_inverse2;
+    q2_power *= q2;
+  }
+  // theta2 / theta1 = even / (-i odd)
+  const Complex ratio = theta3_0_ * theta4_0_ * even / (-I * odd);
   return e1_ + (M_PI / w1_) * (M_PI / w1_) * ratio * ratio;
 }
 

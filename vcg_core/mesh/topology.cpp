@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "common/parallel_for.h"
 #include "mesh/mesh_edges.h"
 #include "mesh/validation.h"
 
@@ -38,13 +39,14 @@ namespace {
 
 // Per live half-edge h = 3 f + k its partner: itself on a border, the other face's half-edge on
 // an edge of two faces; empty when some edge has more than two faces. Deleted faces' half-edges
-// get -1.
+// get -1. The half-edges of each low vertex are paired over the cores.
 std::vector<int> half_edge_partners(const Mesh &mesh) {
   const size_t half_edges = 3 * mesh.face.size();
   const HalfEdgesByLowVertex grouped = half_edges_by_low_vertex(mesh);
   const std::vector<int> &start = grouped.start, &by_low = grouped.by_low, &high = grouped.high;
   std::vector<int> partner(half_edges, -1);
-  for (size_t v = 0; v < mesh.vert.size(); ++v)
+  std::vector<char> non_manifold(mesh.vert.size(), 0);
+  parallel_for(mesh.vert.size(), [&](size_t v) {
     for (int i = start[v]; i < start[v + 1]; ++i) {
       const int h = by_low[size_t(i)];
       if (partner[size_t(h)] >= 0) continue;
@@ -55,10 +57,15 @@ std::vector<int> half_edge_partners(const Mesh &mesh) {
         ++count;
         found = other;
       }
-      if (count > 2) return {}; // a non-manifold edge
+      if (count > 2) { // a non-manifold edge
+        non_manifold[v] = 1;
+        return;
+      }
       partner[size_t(h)] = count == 2 ? found : h;
       if (count == 2) partner[size_t(found)] = h;
     }
+  });
+  if (std::find(non_manifold.begin(), non_manifold.end(), 1) != non_manifold.end()) return {};
   return partner;
 }
 
@@ -88,26 +95,38 @@ bool is_closed_oriented_connected_manifold(const Mesh &mesh) {
   const std::vector<int> twin = half_edge_partners(mesh);
   if (twin.empty()) return false;
   auto vertex_at = [&](size_t h) { return mesh.face[h / 3].cV(int(h % 3)); };
+  const int mismatched = chunked_sum(twin.size(), 0, [&](size_t begin, size_t end) {
+    int count = 0;
+    for (size_t h = begin; h < end; ++h) {
+      const size_t t = size_t(twin[h]);
+      count += t == h || vertex_at(t) != vertex_at(3 * (h / 3) + (h % 3 + 1) % 3);
+    }
+    return count;
+  });
+  if (mismatched) return false;
   std::vector<int> out_of(mesh.vert.size(), 0); // half-edges leaving each vertex
+  std::vector<int> first_out(mesh.vert.size(), -1);
   for (size_t h = 0; h < twin.size(); ++h) {
-    const size_t t = size_t(twin[h]);
-    if (t == h || vertex_at(t) != vertex_at(3 * (h / 3) + (h % 3 + 1) % 3)) return false;
-    ++out_of[size_t(index_of(mesh, vertex_at(h)))];
+    const size_t v = size_t(index_of(mesh, vertex_at(h)));
+    ++out_of[v];
+    if (first_out[v] < 0) first_out[v] = int(h);
   }
   // One fan around every vertex: turning from a half-edge out of a vertex to the twin of the
-  // half-edge that enters it in the same face goes round all the half-edges out of it.
-  std::vector<char> turned(twin.size(), 0);
-  for (size_t first = 0; first < twin.size(); ++first) {
-    if (turned[first]) continue;
+  // half-edge that enters it in the same face goes round all the half-edges out of it (each
+  // vertex's turns visit only its own half-edges: over the cores).
+  std::vector<char> pinched(mesh.vert.size(), 0);
+  parallel_for(mesh.vert.size(), [&](size_t v) {
+    if (first_out[v] < 0) return;
+    const size_t first = size_t(first_out[v]);
     int seen = 0;
     size_t h = first;
     do {
-      turned[h] = 1;
       ++seen;
       h = size_t(twin[3 * (h / 3) + (h % 3 + 2) % 3]);
-    } while (h != first);
-    if (seen != out_of[size_t(index_of(mesh, vertex_at(first)))]) return false;
-  }
+    } while (h != first && seen <= out_of[v]);
+    pinched[v] = seen != out_of[v];
+  });
+  if (std::find(pinched.begin(), pinched.end(), 1) != pinched.end()) return false;
   // One component: faces reached across their sides from face 0.
   std::vector<char> reached(face_count, 0);
   std::vector<int> stack = {0};
