@@ -15,6 +15,8 @@
 // the sizes (least squares). Prints Markdown tables.
 //
 // Usage: bench_meshes SHARED_MESHES_DIR [SIZES LARGEST_VERTICES [REPEATS]]
+//        bench_meshes --mesh MESH_FILE [REPEATS]: the same row for one mesh of one's own (one
+//        closed surface; its genus from its Euler characteristic).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -199,15 +201,72 @@ std::vector<int> steps_for(double base_vertices, int sizes, double largest) {
   return steps;
 }
 
+// Each job `repeats` times, one after the other in turns; the run with the least total of each.
+// Both empty where a run failed.
+void best_of(const std::string &path, int genus, int repeats, Figures &floor, Figures &param) {
+  floor = param = {};
+  for (int run = 0; run < repeats; ++run) {
+    const Figures floor_run = in_child([&] { return floor_job(path, genus); });
+    const Figures param_run = in_child([&] { return param_job(path); });
+    if (floor_run.empty() || param_run.empty()) {
+      floor = param = {};
+      return;
+    }
+    if (floor.empty() || floor_run.at("floor") < floor.at("floor")) floor = floor_run;
+    if (param.empty() || param_run.at("total") < param.at("total")) param = param_run;
+  }
+}
+
+void print_header() {
+  std::printf("| mesh | vertices | genus |");
+  for (const std::string &stage : stages)
+    std::printf(" %s |", stage.c_str());
+  std::printf(" param | floor | ratio | factorization | degree | peak memory | longest silence "
+              "|\n|---|---|---|");
+  for (size_t i = 0; i < stages.size() + 7; ++i)
+    std::printf("---|");
+  std::printf("\n");
+}
+
+void print_row(const std::string &name, int genus, const Figures &floor, Figures &param) {
+  std::printf("| %s | %.0f | %d |", name.c_str(), param["vertices"], genus);
+  for (const std::string &stage : stages)
+    std::printf(" %.0f |", param[stage]);
+  std::printf(" %.0f ms | %.0f ms | %.1f | %.0f ms | %.0f%s | %.0f MB | %.0f ms |\n",
+              param["total"], floor.at("floor"), param["total"] / floor.at("floor"),
+              floor.at("factorization"), param["degree"], param["valid"] ? "" : " (invalid)",
+              param["peak_mb"], param["silence"]);
+}
+
+// One mesh of the user's: its genus from its Euler characteristic (one closed surface).
+int mesh_file_row(const std::string &path, int repeats) {
+  Mesh mesh;
+  read_mesh(path, mesh);
+  const MeshEdges edges = build_mesh_edges(mesh);
+  const int genus = (2 - (mesh.VN() - edges.edge_count() + mesh.FN())) / 2;
+  Figures floor, param;
+  best_of(path, genus, repeats, floor, param);
+  print_header();
+  if (floor.empty() || param.empty()) {
+    std::printf("| %s | %d | failed |\n", path.c_str(), mesh.VN());
+    return 1;
+  }
+  print_row(std::filesystem::path(path).filename().string(), genus, floor, param);
+  return 0;
+}
+
 } // namespace
 
 int main(int argc, char **argv) {
-  if (argc < 2) {
+  if (argc < 2 || (std::string(argv[1]) == "--mesh" && argc < 3)) {
     std::fprintf(stderr,
-                 "usage: bench_meshes SHARED_MESHES_DIR [SIZES LARGEST_VERTICES [REPEATS]]\n");
+                 "usage: bench_meshes SHARED_MESHES_DIR [SIZES LARGEST_VERTICES [REPEATS]]\n"
+                 "       bench_meshes --mesh MESH_FILE [REPEATS]\n");
     return 2;
   }
   tune_process_memory(argv); // as the CLI does: the jobs run as `param` runs them
+  if (std::string(argv[1]) == "--mesh")
+    return mesh_file_row(argv[2], argc > 3 ? std::max(1, std::atoi(argv[3])) : 3);
   const std::string shared = argv[1];
   const int sizes = argc > 2 ? std::max(1, std::atoi(argv[2])) : 3;
   const double largest = argc > 3 ? std::atof(argv[3]) : 1e6;
@@ -222,14 +281,7 @@ int main(int argc, char **argv) {
                             ("meromorph-bench-" + std::to_string(getpid()) + ".ply"))
                                .string();
 
-  std::printf("| mesh | vertices | genus |");
-  for (const std::string &stage : stages)
-    std::printf(" %s |", stage.c_str());
-  std::printf(" param | floor | ratio | factorization | degree | peak memory | longest silence "
-              "|\n|---|---|---|");
-  for (size_t i = 0; i < stages.size() + 7; ++i)
-    std::printf("---|");
-  std::printf("\n");
+  print_header();
   std::map<int, std::vector<Figures>> by_genus;
   for (const Source &source : sources) {
     Mesh base;
@@ -248,29 +300,13 @@ int main(int argc, char **argv) {
         continue;
       }
       Figures floor, param;
-      for (int run = 0; run < repeats; ++run) {
-        const Figures floor_run = in_child([&] { return floor_job(path, source.genus); });
-        const Figures param_run = in_child([&] { return param_job(path); });
-        if (floor_run.empty() || param_run.empty()) {
-          floor = param = {};
-          break;
-        }
-        if (floor.empty() || floor_run.at("floor") < floor.at("floor")) floor = floor_run;
-        if (param.empty() || param_run.at("total") < param.at("total")) param = param_run;
-      }
+      best_of(path, source.genus, repeats, floor, param);
+      const std::string name = source.name + " x" + std::to_string(1 << (2 * steps));
       if (floor.empty() || param.empty()) {
-        std::printf("| %s x%d | %.0f | failed |\n", source.name.c_str(), 1 << (2 * steps),
-                    made.at("vertices"));
+        std::printf("| %s | %.0f | failed |\n", name.c_str(), made.at("vertices"));
         continue;
       }
-      std::printf("| %s x%d | %.0f | %d |", source.name.c_str(), 1 << (2 * steps),
-                  param["vertices"], source.genus);
-      for (const std::string &stage : stages)
-        std::printf(" %.0f |", param[stage]);
-      std::printf(" %.0f ms | %.0f ms | %.1f | %.0f ms | %.0f%s | %.0f MB | %.0f ms |\n",
-                  param["total"], floor.at("floor"), param["total"] / floor.at("floor"),
-                  floor.at("factorization"), param["degree"], param["valid"] ? "" : " (invalid)",
-                  param["peak_mb"], param["silence"]);
+      print_row(name, source.genus, floor, param);
       param["floor"] = floor.at("floor");
       param["floor_factorization"] = floor.at("factorization");
       by_genus[source.genus].push_back(param);

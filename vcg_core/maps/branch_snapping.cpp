@@ -122,13 +122,44 @@ struct Spot {
   std::map<int, int> region; // ring distance from the spot, out to where the map may change
   std::vector<int> region_faces;
 
+  // The faces' shares of the score at the spot's values as found (`region_faces`' order), their
+  // sum, and the vertices moved since (once per move not yet restored): a score counts afresh
+  // only the faces around moved vertices.
+  std::vector<Score> found_shares;
+  Score found_total{0, 0, 0, 0.0};
+  std::vector<int> moved;
+
+  Score face_share(int f) const {
+    const bool folded = folded_face(in, sphere, f);
+    return {folded, !folded && folded_or_flat(in, sphere, f), 0,
+            face_angle_error_degrees(mesh, sphere, f)};
+  }
+  void measure_as_found() {
+    found_shares.resize(region_faces.size());
+    for (size_t i = 0; i < region_faces.size(); ++i)
+      found_shares[i] = face_share(region_faces[i]);
+    found_total = {0, 0, 0, 0.0};
+    for (const Score &share : found_shares)
+      add(found_total, share, 1);
+  }
+  static void add(Score &total, const Score &share, int sign) {
+    std::get<0>(total) += sign * std::get<0>(share);
+    std::get<1>(total) += sign * std::get<1>(share);
+    std::get<3>(total) += sign * std::get<3>(share);
+  }
   Score score(int branch_vertex) const {
-    Score score{0, 0, branch_vertex < 0 || vertex_winding(in, sphere, branch_vertex) != 2, 0.0};
-    for (int f : region_faces) {
-      const bool folded = folded_face(in, sphere, f);
-      std::get<0>(score) += folded;
-      std::get<1>(score) += !folded && folded_or_flat(in, sphere, f);
-      std::get<3>(score) += face_angle_error_degrees(mesh, sphere, f);
+    Score score = found_total;
+    std::get<2>(score) = branch_vertex < 0 || vertex_winding(in, sphere, branch_vertex) != 2;
+    std::vector<int> changed; // the faces around moved vertices (all in the region)
+    for (int v : moved)
+      changed.insert(changed.end(), in.faces_of_vertex[size_t(v)].begin(),
+                     in.faces_of_vertex[size_t(v)].end());
+    std::sort(changed.begin(), changed.end());
+    changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
+    for (int f : changed) {
+      const auto at = std::lower_bound(region_faces.begin(), region_faces.end(), f);
+      add(score, found_shares[size_t(at - region_faces.begin())], -1);
+      add(score, face_share(f), 1);
     }
     return score;
   }
@@ -137,12 +168,15 @@ struct Spot {
     for (const auto &[w, point] : moves) {
       saved.push_back({w, sphere[size_t(w)]});
       sphere[size_t(w)] = point;
+      moved.push_back(w);
     }
     return score(branch_vertex);
   }
   void restore(const Moves &saved) {
-    for (auto at = saved.rbegin(); at != saved.rend(); ++at)
+    for (auto at = saved.rbegin(); at != saved.rend(); ++at) {
       sphere[size_t(at->first)] = at->second;
+      moved.erase(std::find(moved.rbegin(), moved.rend(), at->first).base() - 1);
+    }
   }
 };
 
@@ -178,6 +212,7 @@ Moves smooth_stray_values(Spot &spot) {
           if (w != v) mean += spot.sphere[size_t(w)];
       spot.sphere[size_t(v)] = mean.normalized();
     }
+  spot.moved.insert(spot.moved.end(), spot.vertices.begin(), spot.vertices.end());
   Moves smoothed;
   if (spot.score(-1) < before)
     for (int v : spot.vertices)
@@ -251,13 +286,16 @@ struct BestChange {
 // takes c); then the same with v's one-ring re-placed around c (double_star), for stars whose
 // corners would reach 180 degrees or more when doubled; and the rings beyond re-embedded between
 // the new star and the rest, where the moved one-ring folds the faces next to it. Each scored;
-// the spot is left as it was.
+// the spot is left as it was. `rings_around_v`: the ring distances from v, out to the widest
+// shift.
 void try_branch_vertex(Spot &spot, const CriticalModel &model, const std::map<int, Complex> &z,
-                       Complex p, int v, int shift_rings, BestChange &best) {
+                       Complex p, int v, const std::map<int, int> &rings_around_v, int shift_rings,
+                       BestChange &best) {
   const Complex c = model(p);
   const Complex shift = p - z.at(v);
   Moves change, original;
-  for (const auto &[w, ring] : ring_distances(spot.in, {v}, shift_rings - 1)) {
+  for (const auto &[w, ring] : rings_around_v) {
+    if (ring > shift_rings - 1) continue;
     const double t = 1.0 - double(ring) / shift_rings;
     const Complex value = w == v ? c
                                  : chart_at(model.centre, spot.sphere[size_t(w)]) +
@@ -315,11 +353,15 @@ SpotRepair repair_spot(const PreparedMesh &prepared,
             sphere,
             vertices,
             ring_distances(in, vertices, fit_rings + max_shift_rings + 1),
+            {},
+            {},
+            {0, 0, 0, 0.0},
             {}};
   std::set<int> faces;
   for (const auto &[v, ring] : spot.region)
     faces.insert(in.faces_of_vertex[size_t(v)].begin(), in.faces_of_vertex[size_t(v)].end());
   spot.region_faces.assign(faces.begin(), faces.end());
+  spot.measure_as_found();
   // Everything below reads values at the corners of these faces only (the region is wider than
   // any change or fit).
   for (int f : spot.region_faces)
@@ -354,6 +396,13 @@ SpotRepair repair_spot(const PreparedMesh &prepared,
   // each with the shift fading over 1 to max_shift_rings rings; the fold-free one that distorts
   // angles least wins (farther candidates distort more, so they come second).
   BestChange best{spot.score(-1), {}};
+  std::map<int, std::map<int, int>> rings_of_candidate; // each candidate's, to the widest shift
+  auto rings_around = [&](int v) -> const std::map<int, int> & {
+    auto at = rings_of_candidate.find(v);
+    if (at == rings_of_candidate.end())
+      at = rings_of_candidate.emplace(v, ring_distances(in, {v}, max_shift_rings - 1)).first;
+    return at->second;
+  };
   for (const Complex p : model.critical_points) {
     std::vector<std::pair<double, int>> by_distance;
     for (int v : model.fitted)
@@ -363,7 +412,8 @@ SpotRepair repair_spot(const PreparedMesh &prepared,
       if (first > 0 && std::get<0>(best.score) == 0 && std::get<2>(best.score) == 0) break;
       for (int shift_rings = 1; shift_rings <= max_shift_rings; ++shift_rings)
         for (size_t i = first; i < std::min<size_t>(first + 6, by_distance.size()); ++i)
-          try_branch_vertex(spot, model, z, p, by_distance[i].second, shift_rings, best);
+          try_branch_vertex(spot, model, z, p, by_distance[i].second,
+                            rings_around(by_distance[i].second), shift_rings, best);
     }
   }
   out.moves = std::move(best.moves);
