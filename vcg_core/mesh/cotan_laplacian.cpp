@@ -7,16 +7,22 @@
 namespace meromorph {
 
 std::vector<double> cotan_weights(const Mesh &mesh, const MeshEdges &edges) {
+  // Per edge over the cores: half the cotangent of the corner facing it in each of its faces
+  // (the angle at corner k+2 is opposite side k, from corner k to k+1), the faces in the order
+  // the edge lists them.
   std::vector<double> weights(edges.edge_count(), 0.0);
-  for (size_t f = 0; f < mesh.face.size(); ++f) {
-    const MeshFace &face = mesh.face[f];
-    for (int k = 0; k < 3; ++k) {
-      // The angle at corner k+2 is opposite side k (corners k, k+1).
-      const Point3 &apex = face.cP((k + 2) % 3);
-      const Point3 u = face.cP(k) - apex, v = face.cP((k + 1) % 3) - apex;
-      weights[edges.face_edges[f][k]] += 0.5 * (u * v) / (u ^ v).Norm();
+  parallel_for(weights.size(), [&](size_t e) {
+    for (int f : edges.faces[e]) {
+      if (f < 0) continue;
+      const MeshFace &face = mesh.face[size_t(f)];
+      for (int k = 0; k < 3; ++k) {
+        if (edges.face_edges[size_t(f)][size_t(k)] != int(e)) continue;
+        const Point3 &apex = face.cP((k + 2) % 3);
+        const Point3 u = face.cP(k) - apex, v = face.cP((k + 1) % 3) - apex;
+        weights[e] += 0.5 * (u * v) / (u ^ v).Norm();
+      }
     }
-  }
+  });
   return weights;
 }
 

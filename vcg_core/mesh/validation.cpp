@@ -94,9 +94,12 @@ bool has_zero_area(const Point3 &p0, const Point3 &p1, const Point3 &p2) {
   if (largest == 0) return true;
   int exponent = 0;
   std::frexp(largest, &exponent);
+  // A power of two multiplies exactly; ldexp itself only where that power is out of range.
+  const double scale = std::ldexp(1.0, -exponent);
+  const bool in_range = std::abs(exponent) < 1000;
   for (Point3 &e : edge)
     for (int i = 0; i < 3; ++i)
-      e[i] = std::ldexp(e[i], -exponent);
+      e[i] = in_range ? e[i] * scale : std::ldexp(e[i], -exponent);
   const double twice_area = (edge[0] ^ edge[1]).Norm();
   const double longest =
       std::max({edge[0].SquaredNorm(), edge[1].SquaredNorm(), edge[2].SquaredNorm()});
@@ -139,8 +142,11 @@ void check_faces(const Mesh &mesh, Validation &out, bool doubled_faces_possible)
   Finding tiny(FindingKind::beyond_double_precision);
   // Sides at unit scale: halved (against overflow), then scaled by the unit scale's power of two.
   const int unit_exponent = unit_scale_of(mesh).exponent + 1;
+  const double unit_factor = std::ldexp(1.0, unit_exponent); // exact where in range
+  const bool factor_in_range = std::abs(unit_exponent) < 1000;
   auto unit_length = [&](const Point3 &a, const Point3 &b) {
     const Point3 half = b * 0.5 - a * 0.5;
+    if (factor_in_range) return (half * unit_factor).Norm();
     return Point3(std::ldexp(half[0], unit_exponent), std::ldexp(half[1], unit_exponent),
                   std::ldexp(half[2], unit_exponent))
         .Norm();
