@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include <Eigen/Geometry>
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
 
 namespace meromorph {
 namespace {
@@ -21,8 +23,18 @@ double tan_half_angle(const Mesh &mesh, const std::array<int, 3> &face, int i) {
 
 bool floater_embedding(const Mesh &mesh, const FaceIncidence &incidence,
                        const std::vector<int> &free, std::map<int, Eigen::Vector2d> &chart) {
-  std::map<int, std::map<int, double>> weight;
-  for (int v : free)
+  // The free vertices numbered densely; the weights to each one's neighbours.
+  std::vector<int> sorted_free = free;
+  std::sort(sorted_free.begin(), sorted_free.end());
+  sorted_free.erase(std::unique(sorted_free.begin(), sorted_free.end()), sorted_free.end());
+  auto number = [&](int v) {
+    const auto at = std::lower_bound(sorted_free.begin(), sorted_free.end(), v);
+    return at != sorted_free.end() && *at == v ? long(at - sorted_free.begin()) : -1L;
+  };
+  const long m = long(sorted_free.size());
+  std::vector<std::map<int, double>> weight(sorted_free.size());
+  for (long i = 0; i < m; ++i) {
+    const int v = sorted_free[size_t(i)];
     for (int g : incidence.faces_of_vertex[size_t(v)]) {
       const auto &t = incidence.corners[size_t(g)];
       const int k = t[0] == v ? 0 : t[1] == v ? 1 : 2;
@@ -31,24 +43,35 @@ bool floater_embedding(const Mesh &mesh, const FaceIncidence &incidence,
       const double to_ahead = (mesh.vert[size_t(v)].cP() - mesh.vert[size_t(ahead)].cP()).Norm(),
                    to_behind = (mesh.vert[size_t(v)].cP() - mesh.vert[size_t(behind)].cP()).Norm();
       if (!(to_ahead > 0 && to_behind > 0 && std::isfinite(w))) return false;
-      weight[v][ahead] += w / to_ahead;
-      weight[v][behind] += w / to_behind;
+      weight[size_t(i)][ahead] += w / to_ahead;
+      weight[size_t(i)][behind] += w / to_behind;
     }
-  for (int sweep = 0; sweep < 1000; ++sweep) {
-    double change = 0;
-    for (auto &[v, neighbours] : weight) {
-      Eigen::Vector2d sum = Eigen::Vector2d::Zero();
-      double total = 0;
-      for (const auto &[w, value] : neighbours) {
-        sum += value * chart[w];
-        total += value;
-      }
-      const Eigen::Vector2d moved = sum / total;
-      change = std::max(change, (moved - chart[v]).norm());
-      chart[v] = moved;
-    }
-    if (change < 1e-15) break;
   }
+  if (m == 0) return true;
+  // total_i x_i - sum over free j of w_ij x_j = sum over fixed j of w_ij chart_j, solved at once
+  // (the system is small: a region of a few rings).
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::MatrixX2d right = Eigen::MatrixX2d::Zero(m, 2);
+  for (long i = 0; i < m; ++i) {
+    double total = 0;
+    for (const auto &[w, value] : weight[size_t(i)]) {
+      total += value;
+      const long j = number(w);
+      if (j >= 0)
+        entries.emplace_back(i, j, -value);
+      else
+        right.row(i) += value * chart[w].transpose(); // a fixed neighbour (0 if it has none)
+    }
+    entries.emplace_back(i, i, total);
+  }
+  Eigen::SparseMatrix<double> system(m, m);
+  system.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> solver(system);
+  if (solver.info() != Eigen::Success) return false;
+  const Eigen::MatrixX2d placed = solver.solve(right);
+  if (solver.info() != Eigen::Success || !placed.allFinite()) return false;
+  for (long i = 0; i < m; ++i)
+    chart[sorted_free[size_t(i)]] = placed.row(i).transpose();
   return true;
 }
 

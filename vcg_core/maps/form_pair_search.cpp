@@ -42,16 +42,37 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
     Branching measured;
     int crowded = 0; // faces whose image spans more than a chord of 1 (a quarter of the sphere)
   };
-  std::optional<Attempt> best;
-  for (size_t attempt = 0; attempt < pairs.size(); ++attempt) {
-    progress.report(0.6 + 0.1 * double(attempt) / double(pairs.size()), "meromorphic function");
+  // The pair's numerator omega1 + omega2 and denominator omega1 - omega2.
+  auto forms_of = [&](const FormPair &pair) {
     Eigen::VectorXcd omega1 = Eigen::VectorXcd::Zero(prepared.edges.edge_count());
     Eigen::VectorXcd omega2 = omega1;
     for (int k = 0; k < forms.genus; ++k) {
-      omega1 += pairs[attempt].first[k] * forms.normalized[k];
-      omega2 += pairs[attempt].second[k] * forms.normalized[k];
+      omega1 += pair.first[k] * forms.normalized[k];
+      omega2 += pair.second[k] * forms.normalized[k];
     }
-    const Eigen::VectorXcd numerator = omega1 + omega2, denominator = omega1 - omega2;
+    return std::array<Eigen::VectorXcd, 2>{omega1 + omega2, omega1 - omega2};
+  };
+  // Genus 3 and up: where the first pair's guessed map crowds (guessed_crowding: before any
+  // solve or snapping), the pair whose guess crowds least (the first such) is tried first, the
+  // others after it in the list's order.
+  if (pairs.size() > 1 && forms.genus > 2) {
+    const auto [first_numerator, first_denominator] = forms_of(pairs[0]);
+    int least = guessed_crowding(prepared, first_numerator, first_denominator);
+    size_t least_at = 0;
+    for (size_t k = 1; k < pairs.size() && least > 0; ++k) {
+      const auto [numerator, denominator] = forms_of(pairs[k]);
+      const int crowding = guessed_crowding(prepared, numerator, denominator);
+      if (crowding < least) {
+        least = crowding;
+        least_at = k;
+      }
+    }
+    std::rotate(pairs.begin(), pairs.begin() + long(least_at), pairs.begin() + long(least_at) + 1);
+  }
+  std::optional<Attempt> best;
+  for (size_t attempt = 0; attempt < pairs.size(); ++attempt) {
+    progress.report(0.6 + 0.1 * double(attempt) / double(pairs.size()), "meromorphic function");
+    const auto [numerator, denominator] = forms_of(pairs[attempt]);
     Attempt result{false, 0, form_ratio_map(prepared, numerator, denominator), {}, 0, {}};
     if (mobius) result.centring = center_on_sphere(result.values, areas);
     for (int pass = 0; pass < 4; ++pass) {

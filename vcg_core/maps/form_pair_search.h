@@ -10,6 +10,8 @@
 //      branching as measured for the ranking. The next pair is
 //      tried only where the best is not generic, or crowds (not for genus 2, where every generic
 //      pair gives the same map up to a Moebius transformation; three pairs at most for that).
+//      For genus 3 and up, where the first pair's guessed map crowds (form_ratio_map.h's
+//      guessed_crowding, before any solve), the pair whose guess crowds least goes first.
 //      Throws ArgumentError for a pair that is not two different form indices.
 #pragma once
 

@@ -209,9 +209,11 @@ struct ChartGuess {
   std::vector<Complex> f, g;
 };
 
-ChartGuess chart_guess(const PreparedMesh &prepared, const std::vector<Complex> &top,
-                       const std::vector<Complex> &bottom) {
-  const int n = int(prepared.mesh.vert.size());
+// Per vertex the area-weighted mean on the sphere of its faces' samples F = top / bottom (unit
+// vectors): each face's sample first, then each vertex's sum over its faces in face order.
+std::vector<Eigen::Vector3d> mean_samples(const PreparedMesh &prepared,
+                                          const std::vector<Complex> &top,
+                                          const std::vector<Complex> &bottom) {
   const size_t face_count = prepared.mesh.face.size();
   const FaceGeometry &geometry = prepared.geometry;
   const FaceIncidence &in = prepared.incidence;
@@ -221,6 +223,20 @@ ChartGuess chart_guess(const PreparedMesh &prepared, const std::vector<Complex> 
     sample[f] =
         geometry.areas[f] * to_sphere(PlaneValue{pole ? Complex() : top[f] / bottom[f], pole});
   });
+  std::vector<Eigen::Vector3d> mean(prepared.mesh.vert.size());
+  parallel_for(mean.size(), [&](size_t v) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (int f : in.faces_of_vertex[v])
+      sum += sample[size_t(f)];
+    mean[v] = sum.normalized();
+  });
+  return mean;
+}
+
+ChartGuess chart_guess(const PreparedMesh &prepared, const std::vector<Complex> &top,
+                       const std::vector<Complex> &bottom) {
+  const int n = int(prepared.mesh.vert.size());
+  const std::vector<Eigen::Vector3d> mean = mean_samples(prepared, top, bottom);
   ChartGuess out{std::vector<char>(size_t(n)), std::vector<char>(size_t(n)),
                  std::vector<double>(size_t(n)), std::vector<Complex>(size_t(n)),
                  std::vector<Complex>(size_t(n))};
@@ -228,10 +244,7 @@ ChartGuess chart_guess(const PreparedMesh &prepared, const std::vector<Complex> 
   std::vector<double> &size = out.size;
   std::vector<Complex> &guess_f = out.f, &guess_g = out.g;
   parallel_for(size_t(n), [&](size_t v) {
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for (int f : in.faces_of_vertex[v])
-      mean += sample[size_t(f)];
-    const PlaneValue guess = to_plane_value(mean.normalized());
+    const PlaneValue guess = to_plane_value(mean[v]);
     size[v] = guess.infinite ? HUGE_VAL : std::abs(guess.w);
     near_zero[v] = size[v] < chart_bound;
     near_pole[v] = size[v] > 1.0 / chart_bound;
@@ -298,6 +311,23 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
       solve_chart(mesh, edges, in, geometry, near_zero, ratio_f, known_f, guess.f);
   const std::vector<Complex> g = pole_chart.get();
   return blended_values(guess, f, g);
+}
+
+int guessed_crowding(const PreparedMesh &prepared, const Eigen::VectorXcd &numerator,
+                     const Eigen::VectorXcd &denominator) {
+  const std::vector<Complex> top =
+      local_coefficients(prepared.mesh, prepared.edges, prepared.geometry, numerator).f;
+  const std::vector<Complex> bottom =
+      local_coefficients(prepared.mesh, prepared.edges, prepared.geometry, denominator).f;
+  const std::vector<Eigen::Vector3d> guess = mean_samples(prepared, top, bottom);
+  const FaceIncidence &in = prepared.incidence;
+  return int(parallel_select(in.corners.size(), [&](size_t f) {
+               const Eigen::Vector3d &a = guess[size_t(in.corners[f][0])],
+                                     &b = guess[size_t(in.corners[f][1])],
+                                     &c = guess[size_t(in.corners[f][2])];
+               return std::max({(a - b).squaredNorm(), (b - c).squaredNorm(),
+                                (c - a).squaredNorm()}) > 1.0;
+             }).size());
 }
 
 } // namespace meromorph

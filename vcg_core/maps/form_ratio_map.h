@@ -30,4 +30,10 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
                                        const Eigen::VectorXcd &numerator,
                                        const Eigen::VectorXcd &denominator);
 
+// A forecast of the map's crowding before anything is solved: the faces whose first guess (each
+// vertex at the mean on the sphere of its faces' samples, as the charts start from) spans more
+// than a chord of 1 (a quarter of the sphere), where a zero and a pole of F fall close together.
+int guessed_crowding(const PreparedMesh &prepared, const Eigen::VectorXcd &numerator,
+                     const Eigen::VectorXcd &denominator);
+
 } // namespace meromorph

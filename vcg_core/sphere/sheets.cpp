@@ -174,8 +174,12 @@ CutEdges cut_edges(const Mesh &mesh, const MeshEdges &edges, const std::vector<V
     for (int k = 0; k < 3; ++k)
       if (at_branch_vertex[index_of(mesh, mesh.face[f].cV(k))]) return true;
     const Vector &a = corner(int(f), 0), &b = corner(int(f), 1), &c = corner(int(f), 2);
+    // A node inside the face is within its longest side of a (twice that, to be safe on the
+    // sphere): the rest are passed over with one subtraction and one product.
+    const double reach =
+        4 * std::max({(a - b).squaredNorm(), (b - c).squaredNorm(), (c - a).squaredNorm()});
     for (const Vector &node : nodes)
-      if (inside(node, a, b, c)) return true;
+      if ((node - a).squaredNorm() <= reach && inside(node, a, b, c)) return true;
     return folded_image(a, b, c);
   });
   for (int f : set_apart)
