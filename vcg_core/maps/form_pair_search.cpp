@@ -42,28 +42,37 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
     Branching measured;
     int crowded = 0; // faces whose image spans more than a chord of 1 (a quarter of the sphere)
   };
-  // The pair's numerator omega1 + omega2 and denominator omega1 - omega2.
+  // The pair's numerator omega1 + omega2 and denominator omega1 - omega2, edge by edge over the
+  // cores.
   auto forms_of = [&](const FormPair &pair) {
-    Eigen::VectorXcd omega1 = Eigen::VectorXcd::Zero(prepared.edges.edge_count());
-    Eigen::VectorXcd omega2 = omega1;
-    for (int k = 0; k < forms.genus; ++k) {
-      omega1 += pair.first[k] * forms.normalized[k];
-      omega2 += pair.second[k] * forms.normalized[k];
-    }
-    return std::array<Eigen::VectorXcd, 2>{omega1 + omega2, omega1 - omega2};
+    const Eigen::VectorXcd top = pair.first + pair.second, bottom = pair.first - pair.second;
+    std::array<Eigen::VectorXcd, 2> out{Eigen::VectorXcd(prepared.edges.edge_count()),
+                                        Eigen::VectorXcd(prepared.edges.edge_count())};
+    parallel_for(size_t(prepared.edges.edge_count()), [&](size_t e) {
+      Complex numerator = 0, denominator = 0;
+      for (int k = 0; k < forms.genus; ++k) {
+        numerator += top[k] * forms.normalized[size_t(k)][long(e)];
+        denominator += bottom[k] * forms.normalized[size_t(k)][long(e)];
+      }
+      out[0][long(e)] = numerator;
+      out[1][long(e)] = denominator;
+    });
+    return out;
   };
   // Genus 3 and up: where the first pair's guessed map crowds (guessed_crowding: before any
   // solve or snapping), the pair whose guess crowds least (the first such) is tried first, the
   // others after it in the list's order.
   if (pairs.size() > 1 && forms.genus > 2) {
-    const auto [first_numerator, first_denominator] = forms_of(pairs[0]);
-    int least = guessed_crowding(prepared, first_numerator, first_denominator);
+    auto crowding = [&](const FormPair &pair) {
+      const auto [numerator, denominator] = forms_of(pair);
+      return guessed_crowding(prepared, numerator, denominator);
+    };
+    int least = crowding(pairs[0]);
     size_t least_at = 0;
     for (size_t k = 1; k < pairs.size() && least > 0; ++k) {
-      const auto [numerator, denominator] = forms_of(pairs[k]);
-      const int crowding = guessed_crowding(prepared, numerator, denominator);
-      if (crowding < least) {
-        least = crowding;
+      const int guessed = crowding(pairs[k]);
+      if (guessed < least) {
+        least = guessed;
         least_at = k;
       }
     }
