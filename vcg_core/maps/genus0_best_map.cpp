@@ -84,12 +84,15 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
     return map;
   };
   Genus0Map map = solve_and_correct(pole_face_asked);
+  std::optional<CentredValues> centred_map;
   if (pole_face_asked < 0) {
     // Parts far from the pole crowd into a tiny spot, where rounding can fold or collapse
     // faces. Then solve again with the pole at the face that the centred map puts on the north
     // pole: the new map is nearly centred, so nothing is crowded.
-    std::vector<PlaneValue> centred = map.values;
-    const bool centred_ok = center_on_sphere(centred, areas).centroid_after.norm() < 1e-9;
+    centred_map = CentredValues{map.values, {}};
+    std::vector<PlaneValue> &centred = centred_map->values;
+    centred_map->centring = center_on_sphere(centred, areas);
+    const bool centred_ok = centred_map->centring.centroid_after.norm() < 1e-9;
     const int collapsed = collapsed_faces(prepared.incidence, centred);
     if (!centred_ok || collapsed > 0 || !folded_plane_faces(prepared.incidence, centred).empty()) {
       // Any face the centred map puts near the north pole will do; the best-shaped of those
@@ -111,13 +114,16 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
         // Where long thin parts shrink below what doubles resolve, a pole in the wrong place
         // loses more of them: keep the first solution if the second collapses more faces.
         Genus0Map again = solve_and_correct(pole_face);
-        std::vector<PlaneValue> centred_again = again.values;
-        center_on_sphere(centred_again, areas);
-        if (collapsed_faces(prepared.incidence, centred_again) <= collapsed) map = std::move(again);
+        CentredValues centred_again{again.values, {}};
+        centred_again.centring = center_on_sphere(centred_again.values, areas);
+        if (collapsed_faces(prepared.incidence, centred_again.values) <= collapsed) {
+          map = std::move(again);
+          centred_map = std::move(centred_again);
+        }
       }
     }
   }
-  return {map.values, map.puncture_face, map.raised_weights};
+  return {map.values, map.puncture_face, map.raised_weights, std::move(centred_map)};
 }
 
 } // namespace meromorph

@@ -15,11 +15,14 @@
 //      and kept if it collapses no more faces.
 #pragma once
 
+#include <optional>
+
 #include <vector>
 
 #include "forms/laplacian_solver.h"
 #include "mesh/mesh_edges.h"
 #include "mesh/prepared_mesh.h"
+#include "sphere/mobius_centering.h"
 #include "sphere/sphere_geometry.h"
 
 namespace meromorph {
@@ -27,6 +30,8 @@ namespace meromorph {
 struct Genus0Result {
   std::vector<PlaneValue> values;
   int puncture_face = -1, raised_weights = 0;
+  // `values` centred (mobius_centering.h), where choosing the pole centred them already.
+  std::optional<CentredValues> centred;
 };
 
 Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, int pole_face);

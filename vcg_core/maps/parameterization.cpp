@@ -100,8 +100,8 @@ Parameterization parameterize(Mesh &mesh, const ParameterizeOptions &options,
     out.method = "genus 0: harmonic map with a simple pole (strictly positive weights), inverse "
                  "stereographic projection";
     clock.done("meromorphic");
-    finish_on_sphere(prepared, options.mobius, nullptr, out.euler, map.values, nullptr, written,
-                     progress, clock);
+    finish_on_sphere(prepared, options.mobius, nullptr, out.euler, map.values, nullptr,
+                     map.centred ? &*map.centred : nullptr, written, progress, clock);
   } else if (out.genus == 1) {
     out.modulus = forms.modulus;
     out.riemann_matrix = forms.riemann_matrix;
@@ -130,7 +130,7 @@ Parameterization parameterize(Mesh &mesh, const ParameterizeOptions &options,
     written.mobius_applied = options.mobius;
     written.snapped_branch_points = search.snapped_branch_points;
     finish_on_sphere(prepared, options.mobius, nullptr, out.euler, std::move(search.values),
-                     &search.branching, written, progress, clock);
+                     &search.branching, nullptr, written, progress, clock);
   }
   Branching branching;
   adopt(std::move(written), out, branching);

@@ -21,13 +21,19 @@ int folded_face_count(const FaceIncidence &in, const std::vector<Eigen::Vector3d
 
 void finish_on_sphere(const PreparedMesh &prepared, bool mobius, const Genus1Map *torus_map,
                       int euler, std::vector<PlaneValue> values, const Branching *measured,
-                      WrittenSphere &out, const Progress &progress, StageClock &clock) {
+                      const CentredValues *centred, WrittenSphere &out, const Progress &progress,
+                      StageClock &clock) {
   const Mesh &mesh = prepared.mesh;
   const std::vector<double> &areas = prepared.vertex_areas;
   const bool centred_here = mobius && euler >= 0;
   if (centred_here) { // genus 0 and 1
     progress.report(0.7, "Moebius normalisation");
-    out.mobius = center_on_sphere(values, areas);
+    if (centred) {
+      values = centred->values;
+      out.mobius = centred->centring;
+    } else {
+      out.mobius = center_on_sphere(values, areas);
+    }
     out.mobius_applied = true;
     clock.done("mobius");
   }
@@ -73,7 +79,8 @@ WrittenSphere written_genus1_map(const PreparedMesh &prepared, const Holomorphic
     const Genus1Map map = genus1_map(prepared, forms.normalized[0], Complex(1, 0),
                                      forms.riemann_matrix(0, 0), origins[k]);
     WrittenSphere written;
-    finish_on_sphere(prepared, mobius, &map, 0, map.values, nullptr, written, progress, clock);
+    finish_on_sphere(prepared, mobius, &map, 0, map.values, nullptr, nullptr, written, progress,
+                     clock);
     written.origin_vertex = map.origin_vertex;
     written.flat = map.flat;
     const bool valid = written.branching.degree == 2 && written.branching.riemann_hurwitz_ok &&

@@ -39,10 +39,12 @@ struct WrittenSphere {
 };
 
 // `measured`: the branching of `values` as given, where the caller measured it (genus >= 2; used
-// only where the values are neither centred nor placed here), or null.
+// only where the values are neither centred nor placed here), or null. `centred`: `values`
+// centred, where the caller centred them already (genus 0), or null.
 void finish_on_sphere(const PreparedMesh &prepared, bool mobius, const Genus1Map *torus_map,
                       int euler, std::vector<PlaneValue> values, const Branching *measured,
-                      WrittenSphere &out, const Progress &progress, StageClock &clock);
+                      const CentredValues *centred, WrittenSphere &out, const Progress &progress,
+                      StageClock &clock);
 
 WrittenSphere written_genus1_map(const PreparedMesh &prepared, const HolomorphicForms &forms,
                                  const std::vector<int> &origins, bool mobius,

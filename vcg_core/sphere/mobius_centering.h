@@ -29,6 +29,13 @@ struct MobiusCentering {
 MobiusCentering center_on_sphere(std::vector<PlaneValue> &values,
                                  const std::vector<double> &weights);
 
+// Values as center_on_sphere left them, with what it did: for a caller that centred a map
+// already (to judge it) to hand on instead of centring it again.
+struct CentredValues {
+  std::vector<PlaneValue> values;
+  MobiusCentering centring;
+};
+
 // The hyperbolic translation of the ball by c (|c| < 1) on a unit vector x, and the same as a
 // transformation of the extended plane (stereographic coordinates).
 Eigen::Vector3d ball_translate(const Eigen::Vector3d &x, const Eigen::Vector3d &c);
