@@ -94,13 +94,7 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
     const Branching &measured = result.measured;
     result.generic = measured.riemann_hurwitz_ok && measured.degree == 2 * forms.genus - 2;
     result.deficit = std::abs(euler - (2 * measured.degree - measured.ramification));
-    result.crowded = int(parallel_select(prepared.incidence.corners.size(), [&](size_t f) {
-                           const auto &corners = prepared.incidence.corners[f];
-                           const Eigen::Vector3d &a = sphere[corners[0]], &b = sphere[corners[1]],
-                                                 &c = sphere[corners[2]];
-                           return std::max({(a - b).squaredNorm(), (b - c).squaredNorm(),
-                                            (c - a).squaredNorm()}) > 1.0;
-                         }).size());
+    result.crowded = crowded_faces(prepared.incidence, sphere);
     auto rank = [](const Attempt &a) { return std::make_tuple(!a.generic, a.deficit, a.crowded); };
     if (!best || rank(result) < rank(*best)) {
       best = std::move(result);

@@ -319,12 +319,14 @@ int guessed_crowding(const PreparedMesh &prepared, const Eigen::VectorXcd &numer
       local_coefficients(prepared.mesh, prepared.edges, prepared.geometry, numerator).f;
   const std::vector<Complex> bottom =
       local_coefficients(prepared.mesh, prepared.edges, prepared.geometry, denominator).f;
-  const std::vector<Eigen::Vector3d> guess = mean_samples(prepared, top, bottom);
-  const FaceIncidence &in = prepared.incidence;
+  return crowded_faces(prepared.incidence, mean_samples(prepared, top, bottom));
+}
+
+int crowded_faces(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere) {
   return int(parallel_select(in.corners.size(), [&](size_t f) {
-               const Eigen::Vector3d &a = guess[size_t(in.corners[f][0])],
-                                     &b = guess[size_t(in.corners[f][1])],
-                                     &c = guess[size_t(in.corners[f][2])];
+               const Eigen::Vector3d &a = sphere[size_t(in.corners[f][0])],
+                                     &b = sphere[size_t(in.corners[f][1])],
+                                     &c = sphere[size_t(in.corners[f][2])];
                return std::max({(a - b).squaredNorm(), (b - c).squaredNorm(),
                                 (c - a).squaredNorm()}) > 1.0;
              }).size());

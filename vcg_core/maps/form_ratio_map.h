@@ -36,4 +36,7 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
 int guessed_crowding(const PreparedMesh &prepared, const Eigen::VectorXcd &numerator,
                      const Eigen::VectorXcd &denominator);
 
+// The faces whose image (points on the unit sphere per vertex) spans a chord above 1.
+int crowded_faces(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere);
+
 } // namespace meromorph
