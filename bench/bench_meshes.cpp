@@ -264,7 +264,8 @@ int main(int argc, char **argv) {
                  "       bench_meshes --mesh MESH_FILE [REPEATS]\n");
     return 2;
   }
-  tune_process_memory(argv); // as the CLI does: the jobs run as `param` runs them
+  // As the CLI does (the jobs run as `param` runs them), with room for the largest meshes.
+  tune_process_memory(heap_bytes_for_files({}, size_t(8) << 30));
   if (std::string(argv[1]) == "--mesh")
     return mesh_file_row(argv[2], argc > 3 ? std::max(1, std::atoi(argv[3])) : 3);
   const std::string shared = argv[1];

@@ -12,7 +12,7 @@
 int main(int argc, char **argv) {
   using namespace meromorph;
   using cli::ExitCode;
-  tune_process_memory(argv);
+  tune_process_memory(heap_bytes_for_files({argv + 1, argv + argc}));
   CLI::App app{"meromorph: conformal maps of closed surfaces of any genus onto the sphere.\n"
                "Exit codes: 0 done, 1 internal failure or cancelled, 2 bad arguments, 3 the input "
                "cannot be parameterized (or the map is not valid), 4 an output cannot be written.",

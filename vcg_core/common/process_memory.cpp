@@ -1,32 +1,79 @@
 #include "common/process_memory.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <cstdlib> // defines __GLIBC__ where glibc is the C library
+#include <filesystem>
 #include <string>
+#include <system_error>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
+#include <sys/mman.h>
 #include <unistd.h>
 #endif
 
 namespace meromorph {
+namespace {
 
-void tune_process_memory(char **argv) {
+constexpr size_t bytes_per_file_byte = 100;
+
+size_t physical_memory() {
 #if defined(__GLIBC__)
-  const char *given = std::getenv("GLIBC_TUNABLES");
-  std::string tunables = given ? given : "";
-  if (tunables.find("glibc.malloc.hugetlb") == std::string::npos) {
-    tunables += std::string(tunables.empty() ? "" : ":") + "glibc.malloc.hugetlb=1";
-    if (setenv("GLIBC_TUNABLES", tunables.c_str(), 1) == 0) execv("/proc/self/exe", argv);
-    // The restart failed: the process goes on as it is.
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+  if (pages > 0 && page > 0) return size_t(pages) * size_t(page);
+#endif
+  return 0;
+}
+
+} // namespace
+
+size_t heap_bytes_for_files(const std::vector<std::string> &paths, size_t at_least) {
+  size_t largest = 0;
+  for (const std::string &path : paths) {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error)) continue;
+    const auto size = std::filesystem::file_size(path, error);
+    if (!error) largest = std::max(largest, size_t(size));
   }
-  mallopt(M_MMAP_THRESHOLD, 1 << 30); // arrays below 1 GiB come from the heap, reused when freed
-  mallopt(M_TRIM_THRESHOLD, 1 << 30); // the heap's free top is kept up to 1 GiB
-  mallopt(M_TOP_PAD, 256 << 20);      // and grown 256 MiB at a time
-  // One heap for every thread: the job runs on a worker thread (common/progress.h), whose own
-  // arena would take its large arrays from fresh mappings instead of the memory freed here.
-  mallopt(M_ARENA_MAX, 1);
+  size_t bytes = std::max(at_least, largest * bytes_per_file_byte);
+  if (const size_t memory = physical_memory()) bytes = std::min(bytes, memory / 2);
+  return bytes;
+}
+
+void tune_process_memory(size_t expected_bytes) {
+#if defined(__GLIBC__)
+  mallopt(M_MMAP_THRESHOLD, 1 << 30); // arrays below 1 GiB come from the heap
+  mallopt(M_ARENA_MAX, 1); // one heap for every thread (a worker thread's own arena would take
+                           // its large arrays from fresh mappings, not the memory freed here)
+  const char *given = std::getenv("GLIBC_TUNABLES");
+  const bool user_chose =
+      given && std::string(given).find("glibc.malloc.hugetlb") != std::string::npos;
+  mallopt(M_TRIM_THRESHOLD, -1); // the heap's free top is never handed back: the job reuses it
+  mallopt(M_TOP_PAD, 256 << 20); // and grows it 256 MiB at a time
+  if (user_chose || expected_bytes == 0) return;
+  // The heap grown by the reservation, at most 1 GiB at a time (mallopt takes an int): requests
+  // just above its free top with that much padding, each freed again (kept: no trimming).
+  char *const before = static_cast<char *>(sbrk(0));
+  if (before == reinterpret_cast<char *>(-1)) return;
+  const size_t step = size_t(1) << 30;
+  mallopt(M_MMAP_MAX, 0); // the requests above the mapping threshold too come from the heap
+  for (size_t grown = 0; grown < expected_bytes;) {
+    mallopt(M_TOP_PAD, int(std::min(step, expected_bytes - grown)));
+    void *grow = malloc(mallinfo2().keepcost + 4096);
+    free(grow);
+    char *const now = static_cast<char *>(sbrk(0));
+    if (grow == nullptr || now <= before + grown) break; // the heap could not grow (limits)
+    grown = size_t(now - before);
+  }
+  mallopt(M_MMAP_MAX, 65536); // glibc's default
+  mallopt(M_TOP_PAD, 256 << 20);
+  const uintptr_t page = uintptr_t(sysconf(_SC_PAGESIZE));
+  const uintptr_t start = (reinterpret_cast<uintptr_t>(before) + page - 1) / page * page;
+  const uintptr_t end = reinterpret_cast<uintptr_t>(sbrk(0)) / page * page;
+  if (end > start) madvise(reinterpret_cast<void *>(start), end - start, MADV_HUGEPAGE);
 #else
-  (void)argv;
+  (void)expected_bytes;
 #endif
 }
 
