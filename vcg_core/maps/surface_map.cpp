@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 
+#include "common/blas_threads.h"
 #include "common/errors.h"
 #include "common/wording.h"
 #include "maps/parts_map.h"
@@ -163,6 +164,7 @@ Parameterization parameterize_surface_here(Mesh &input, const ParameterizeOption
 Parameterization parameterize_surface(Mesh &input, const ParameterizeOptions &options,
                                       const Progress &progress) {
   // The job runs on a worker thread; the callback is called on this one, steadily.
+  const BlasThreads blas_threads(long(input.vert.size())); // common/blas_threads.h
   Parameterization out;
   run_reporting(progress, [&](const Progress &relay) {
     out = parameterize_surface_here(input, options, relay);

@@ -1,0 +1,60 @@
+#include "common/blas_threads.h"
+
+#include <mutex>
+
+#include <dlfcn.h>
+
+namespace meromorph {
+namespace {
+
+std::mutex guard_mutex;
+int serial_guards = 0, threads_before = 0;
+
+// OpenBLAS's thread setting, looked up in the BLAS that CHOLMOD loaded (no link-time dependency:
+// with another BLAS there is nothing to set). Null where OpenBLAS is not loaded.
+struct OpenBlasThreads {
+  void (*set)(int) = nullptr;
+  int (*get)() = nullptr;
+  void (*stop_idle)() = nullptr; // ends the idle threads; OpenBLAS starts them again when needed
+};
+
+const OpenBlasThreads &open_blas() {
+  static const OpenBlasThreads found = [] {
+    OpenBlasThreads threads;
+    for (const char *library : {"libblas.so.3", "libopenblas.so.0"}) {
+      void *handle = dlopen(library, RTLD_LAZY | RTLD_NOLOAD);
+      if (!handle) continue;
+      threads.set = reinterpret_cast<void (*)(int)>(dlsym(handle, "openblas_set_num_threads"));
+      threads.get = reinterpret_cast<int (*)()>(dlsym(handle, "openblas_get_num_threads"));
+      threads.stop_idle = reinterpret_cast<void (*)()>(dlsym(handle, "blas_thread_shutdown_"));
+      dlclose(handle); // still loaded: CHOLMOD needs it
+      if (threads.set && threads.get) return threads;
+      threads = {};
+    }
+    return threads;
+  }();
+  return found;
+}
+
+} // namespace
+
+BlasThreads::BlasThreads(long unknowns) : serial_(unknowns < parallel_blas_unknowns) {
+  const OpenBlasThreads &blas = open_blas();
+  if (!blas.set || !serial_) return;
+  const std::lock_guard<std::mutex> lock(guard_mutex);
+  if (serial_guards++ == 0) {
+    threads_before = blas.get();
+    blas.set(1);
+    // Its threads idle from the load (or the last call) spin for about 0.1 s before they sleep.
+    if (blas.stop_idle) blas.stop_idle();
+  }
+}
+
+BlasThreads::~BlasThreads() {
+  const OpenBlasThreads &blas = open_blas();
+  if (!blas.set || !serial_) return;
+  const std::lock_guard<std::mutex> lock(guard_mutex);
+  if (--serial_guards == 0) blas.set(threads_before);
+}
+
+} // namespace meromorph
