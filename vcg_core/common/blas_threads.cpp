@@ -1,5 +1,6 @@
 #include "common/blas_threads.h"
 
+#include <atomic>
 #include <mutex>
 
 #include <dlfcn.h>
@@ -9,6 +10,7 @@ namespace {
 
 std::mutex guard_mutex;
 int serial_guards = 0, threads_before = 0;
+std::atomic<bool> process_owned{false};
 
 // OpenBLAS's thread setting, looked up in the BLAS that CHOLMOD loaded (no link-time dependency:
 // with another BLAS there is nothing to set). Null where OpenBLAS is not loaded.
@@ -38,6 +40,10 @@ const OpenBlasThreads &open_blas() {
 
 } // namespace
 
+void own_blas_threads() {
+  process_owned = true;
+}
+
 BlasThreads::BlasThreads(long unknowns) : serial_(unknowns < parallel_blas_unknowns) {
   const OpenBlasThreads &blas = open_blas();
   if (!blas.set || !serial_) return;
@@ -46,7 +52,7 @@ BlasThreads::BlasThreads(long unknowns) : serial_(unknowns < parallel_blas_unkno
     threads_before = blas.get();
     blas.set(1);
     // Its threads idle from the load (or the last call) spin for about 0.1 s before they sleep.
-    if (blas.stop_idle) blas.stop_idle();
+    if (blas.stop_idle && process_owned) blas.stop_idle();
   }
 }
 

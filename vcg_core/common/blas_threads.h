@@ -3,7 +3,9 @@
 // In:  the number of unknowns (or vertices) of the work. Out: while one or more of these live (in
 //      any thread), OpenBLAS (where it is the BLAS loaded) runs on one thread if every living
 //      guard's work has fewer than `parallel_blas_unknowns` unknowns; the previous setting comes
-//      back when the last one goes. Where another BLAS is loaded, nothing changes.
+//      back when the last one goes; in a program that owns its process (`own_blas_threads`,
+//      called by tune_process_memory), OpenBLAS's idle threads are ended then as well (it starts
+//      them again when they are needed). Where another BLAS is loaded, nothing changes.
 // Why, measured on the two-core machine: OpenBLAS's second thread gains about 10% in the dense
 // products of an 800k-unknown factorization but loses below a few hundred thousand: its first use
 // maps and clears its own buffers, and after every call it spins (sched_yield) for a while on the
@@ -15,6 +17,10 @@
 namespace meromorph {
 
 constexpr long parallel_blas_unknowns = 300000;
+
+// For the programs that own their process (the CLI, the bench): a host program (MeshLab,
+// Blender) may be running BLAS on another thread, whose threads must not be ended under it.
+void own_blas_threads();
 
 class BlasThreads {
 public:

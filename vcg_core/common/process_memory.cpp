@@ -7,6 +7,8 @@
 #include <string>
 #include <system_error>
 
+#include "common/blas_threads.h"
+
 #if defined(__GLIBC__)
 #include <malloc.h>
 #include <sys/mman.h>
@@ -42,6 +44,7 @@ size_t heap_bytes_for_files(const std::vector<std::string> &paths, size_t at_lea
 }
 
 void tune_process_memory(size_t expected_bytes) {
+  own_blas_threads(); // (common/blas_threads.h: this process is ours)
 #if defined(__GLIBC__)
   mallopt(M_MMAP_THRESHOLD, 1 << 30); // arrays below 1 GiB come from the heap
   mallopt(M_ARENA_MAX, 1); // one heap for every thread (a worker thread's own arena would take

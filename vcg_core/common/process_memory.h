@@ -5,6 +5,7 @@
 //      for reuse instead of handing it back at every free, uses one heap for all threads (the job
 //      runs on a worker thread), and the heap's first `expected_bytes` are reserved (address
 //      space only: nothing is touched) and asked for transparent huge pages (madvise).
+//      OpenBLAS's idle threads may be ended at a job's start (common/blas_threads.h).
 // Why: the stages allocate and free arrays of the mesh's size one after another; on a virtual
 // machine every 4 KiB page touched for the first time costs a page fault. Measured on a
 // 200k-vertex genus-2 `param`: 13.8 s as it was, 7.2 s keeping freed memory (474k -> 240k page
