@@ -478,10 +478,9 @@ void torus_forms(TorusForms &out, int segments = 48) {
   out.prepared = std::make_unique<PreparedMesh>(prepare_mesh(out.mesh));
   const int n = int(out.mesh.vert.size());
   out.homology = tree_cotree(n, out.prepared->edges);
-  const auto solver =
-      factor_laplacian(cotan_laplacian(n, out.prepared->edges, out.prepared->weights));
-  out.harmonic = harmonic_forms(out.homology.dual_forms, n, out.prepared->edges,
-                                out.prepared->weights, *solver);
+  out.harmonic = harmonic_forms(
+      out.homology.dual_forms, n, out.prepared->edges, out.prepared->weights,
+      factor_laplacian(cotan_laplacian(n, out.prepared->edges, out.prepared->weights)));
 }
 
 TEST(HarmonicForms, CoClosedClosedAndWithTheSamePeriods) {

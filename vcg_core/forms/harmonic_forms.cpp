@@ -18,16 +18,20 @@ Eigen::VectorXd weighted_divergence(int vertex_count, const MeshEdges &edges,
 std::vector<Eigen::VectorXd>
 harmonic_forms(const std::vector<Eigen::SparseVector<double>> &closed_forms, int vertex_count,
                const MeshEdges &edges, const std::vector<double> &weights,
-               const LaplacianSolver &solver) {
+               std::unique_ptr<LaplacianSolver> solver) {
   // One pass over the factor for all the forms' potentials.
-  Eigen::MatrixXd divergences = Eigen::MatrixXd::Zero(vertex_count, long(closed_forms.size()));
-  for (size_t k = 0; k < closed_forms.size(); ++k)
-    for (Eigen::SparseVector<double>::InnerIterator it(closed_forms[k]); it; ++it) {
-      const long e = it.index();
-      divergences(edges.vertices[size_t(e)][1], long(k)) += weights[size_t(e)] * it.value();
-      divergences(edges.vertices[size_t(e)][0], long(k)) -= weights[size_t(e)] * it.value();
-    }
-  const Eigen::MatrixXd potentials = solver.solve_columns(divergences);
+  Eigen::MatrixXd potentials;
+  {
+    Eigen::MatrixXd divergences = Eigen::MatrixXd::Zero(vertex_count, long(closed_forms.size()));
+    for (size_t k = 0; k < closed_forms.size(); ++k)
+      for (Eigen::SparseVector<double>::InnerIterator it(closed_forms[k]); it; ++it) {
+        const long e = it.index();
+        divergences(edges.vertices[size_t(e)][1], long(k)) += weights[size_t(e)] * it.value();
+        divergences(edges.vertices[size_t(e)][0], long(k)) -= weights[size_t(e)] * it.value();
+      }
+    potentials = solver->solve_columns(divergences);
+  }
+  solver.reset();
   std::vector<Eigen::VectorXd> harmonic;
   for (size_t k = 0; k < closed_forms.size(); ++k) {
     Eigen::VectorXd h = closed_forms[k]; // dense from here

@@ -207,8 +207,9 @@ HolomorphicForms compute_holomorphic_forms(const PreparedMesh &prepared, SolverK
   clock.done("factorization");
 
   progress.report(0.6, "harmonic forms");
-  out.harmonic = harmonic_forms(out.homology.dual_forms, vertex_count, edges, weights, *factored);
-  factored.reset(); // the factor is the largest array here; nothing below solves
+  // The factor, the largest array here, is released inside once solved: nothing below solves.
+  out.harmonic =
+      harmonic_forms(out.homology.dual_forms, vertex_count, edges, weights, std::move(factored));
   clock.done("harmonic");
 
   progress.report(0.8, "holomorphic forms and periods");
