@@ -114,20 +114,22 @@ struct LowerTriangle {
   }
 };
 
-// CHOLMOD's supernodal LL^T, ordered by AMD alone or by the order given. By default CHOLMOD
-// tries AMD and, where the fill looks high, METIS too and keeps the better; on these Laplacians
-// the METIS attempt costs more than its lower fill saves (measured: eight x1024, 786k vertices:
-// factorization 10.5 s -> 5.8 s, peak memory +9%). CHOLMOD keeps workspace in its common
-// object: solves are not to be called from two threads at once.
-//
-// Below `parallel_blas_unknowns` the supernodes are amalgamated more than CHOLMOD's default
+// Below `relaxed_supernode_unknowns` the supernodes are amalgamated more than CHOLMOD's default
 // (nrelax 4, 16, 48): a mesh Laplacian's elimination tree has thousands of supernodes of a few
 // columns, and there the fixed cost of each supernode (its BLAS calls, its parallel regions)
 // outweighs its arithmetic. Measured on the two-core machine, AMD order, factorization alone,
 // least of six: maxplanck x4 (50k unknowns) 101 -> 56 ms, x16 (200k) 506 -> 319 ms, the factor
 // holding 60% more entries (stored zeros: 135 -> 216 MB at 200k). Above it the default stays:
-// the supernodes are larger, and the memory is what the large meshes are short of.
+// the supernodes are larger, and the memory is what the large meshes are short of (relaxing up
+// to 700k gained 5% at 334k for 130 MB more).
+constexpr int relaxed_supernode_unknowns = 300000;
 constexpr size_t relaxed_supernodes[3] = {16, 64, 192};
+
+// CHOLMOD's supernodal LL^T, ordered by AMD alone or by the order given. By default CHOLMOD
+// tries AMD and, where the fill looks high, METIS too and keeps the better; on these Laplacians
+// the METIS attempt costs more than its lower fill saves (measured: eight x1024, 786k vertices:
+// factorization 10.5 s -> 5.8 s, peak memory +9%). CHOLMOD keeps workspace in its common
+// object: solves are not to be called from two threads at once.
 class CholmodSolver : public LaplacianSolver {
 public:
   CholmodSolver(FreeVertices free, LowerTriangle lower, const std::vector<int> &order)
@@ -137,7 +139,7 @@ public:
     common_.nmethods = 1;
     common_.method[0].ordering = order.empty() ? CHOLMOD_AMD : CHOLMOD_GIVEN;
     common_.supernodal = CHOLMOD_SUPERNODAL;
-    if (free_.count() < parallel_blas_unknowns)
+    if (free_.count() < relaxed_supernode_unknowns)
       for (int k = 0; k < 3; ++k)
         common_.nrelax[k] = relaxed_supernodes[k];
     // A given order is kept as it is: a postorder could move vertices meant to be eliminated

@@ -16,7 +16,6 @@
 #pragma once
 
 #include <optional>
-
 #include <vector>
 
 #include "forms/laplacian_solver.h"
