@@ -11,7 +11,8 @@ sudo_if_needed() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
 
 packages=(
   build-essential cmake ninja-build pkg-config git
-  libeigen3-dev libsuitesparse-dev libopenblas0-pthread libopenblas-dev
+  libeigen3-dev libsuitesparse-dev libopenblas0-pthread libopenblas-dev libmetis-dev
+  libgfortran-12-dev
   libgtest-dev googletest
   qtbase5-dev libqt5opengl5-dev libglew-dev
   meshlab xvfb xauth

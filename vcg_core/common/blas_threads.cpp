@@ -23,16 +23,21 @@ struct OpenBlasThreads {
 const OpenBlasThreads &open_blas() {
   static const OpenBlasThreads found = [] {
     OpenBlasThreads threads;
-    for (const char *library : {"libblas.so.3", "libopenblas.so.0"}) {
-      void *handle = dlopen(library, RTLD_LAZY | RTLD_NOLOAD);
-      if (!handle) continue;
+    const auto look_up = [&threads](void *handle) {
       threads.set = reinterpret_cast<void (*)(int)>(dlsym(handle, "openblas_set_num_threads"));
       threads.get = reinterpret_cast<int (*)()>(dlsym(handle, "openblas_get_num_threads"));
       threads.stop_idle = reinterpret_cast<void (*)()>(dlsym(handle, "blas_thread_shutdown_"));
+      if (!threads.set || !threads.get) threads = {};
+      return threads.set != nullptr;
+    };
+    for (const char *library : {"libblas.so.3", "libopenblas.so.0"}) {
+      void *handle = dlopen(library, RTLD_LAZY | RTLD_NOLOAD);
+      if (!handle) continue;
+      const bool found = look_up(handle);
       dlclose(handle); // still loaded: CHOLMOD needs it
-      if (threads.set && threads.get) return threads;
-      threads = {};
+      if (found) return threads;
     }
+    look_up(RTLD_DEFAULT); // linked into the program itself (the command-line tool), exported
     return threads;
   }();
   return found;
