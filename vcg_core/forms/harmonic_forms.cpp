@@ -29,7 +29,7 @@ harmonic_forms(const std::vector<Eigen::SparseVector<double>> &closed_forms, int
         divergences(edges.vertices[size_t(e)][1], long(k)) += weights[size_t(e)] * it.value();
         divergences(edges.vertices[size_t(e)][0], long(k)) -= weights[size_t(e)] * it.value();
       }
-    potentials = solver->solve_columns(divergences);
+    potentials = solver->solve_columns_releasing(std::move(divergences));
   }
   solver.reset();
   std::vector<Eigen::VectorXd> harmonic;

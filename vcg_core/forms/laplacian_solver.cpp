@@ -1,11 +1,14 @@
 #include "forms/laplacian_solver.h"
 
+#include <algorithm>
+
 #include <cholmod.h>
 
 #include <Eigen/SparseCholesky>
 
 #include "common/errors.h"
 #include "common/factorization_threads.h"
+#include "common/parallel_for.h"
 
 namespace meromorph {
 
@@ -21,6 +24,11 @@ const char *solver_name(SolverKind kind) {
 
 Eigen::VectorXd LaplacianSolver::solve(const Eigen::VectorXd &right_hand_side) const {
   return solve_columns(right_hand_side);
+}
+
+Eigen::MatrixXd LaplacianSolver::solve_columns_releasing(Eigen::MatrixXd &&right_hand_sides) const {
+  const Eigen::MatrixXd b = std::move(right_hand_sides);
+  return solve_columns(b);
 }
 
 Eigen::MatrixXd LaplacianSolver::solve_columns_without_last(const Eigen::MatrixXd &, int) const {
@@ -114,6 +122,20 @@ struct LowerTriangle {
   }
 };
 
+// values[k] = old values[source[k]] for every k (`back`: the inverse, values[source[k]] = old
+// values[k]); `source` is a permutation of the indices. Through one scratch column (independent
+// loads over the cores, where following the permutation's cycles in place would wait on every
+// load in turn).
+void permute_column(double *values, const std::vector<int> &source, bool back,
+                    std::vector<double> &scratch) {
+  scratch.resize(source.size());
+  if (back)
+    parallel_for(source.size(), [&](size_t k) { scratch[size_t(source[k])] = values[k]; });
+  else
+    parallel_for(source.size(), [&](size_t k) { scratch[k] = values[source[k]]; });
+  std::copy(scratch.begin(), scratch.end(), values);
+}
+
 // Below `relaxed_supernode_unknowns` the supernodes are amalgamated more than CHOLMOD's default
 // (nrelax 4, 16, 48): a mesh Laplacian's elimination tree has thousands of supernodes of a few
 // columns, and there the fixed cost of each supernode (its BLAS calls, its parallel regions)
@@ -165,6 +187,40 @@ public:
     cholmod_dense *solution = cholmod_solve(CHOLMOD_A, factor_, &right, &common_);
     if (!solution) throw not_factored();
     return scattered_and_freed(solution, b.rows());
+  }
+
+  // Each column of b permuted in place so that its first rows are y = P b (its free rows in the
+  // factor's order, the pinned ones after them), y = L^-T L^-1 y solved in place there
+  // (CHOLMOD's supernodal solves, the column stride left at b's), the rows put back in place and
+  // the pinned ones set to 0: no array besides b and one column.
+  Eigen::MatrixXd solve_columns_releasing(Eigen::MatrixXd &&b) const override {
+    if (!factor_->is_super) return LaplacianSolver::solve_columns_releasing(std::move(b));
+    Eigen::MatrixXd x = std::move(b);
+    const int *permutation = static_cast<const int *>(factor_->Perm);
+    const long rows = x.rows(), count = free_.count();
+    std::vector<int> source(static_cast<size_t>(rows)); // row k of y is row source[k] of b
+    for (long k = 0; k < count; ++k)
+      source[size_t(k)] = free_.vertex[size_t(permutation[k])];
+    long next = count;
+    for (long v = 0; v < rows; ++v)
+      if (free_.number[size_t(v)] < 0) source[size_t(next++)] = int(v);
+    std::vector<double> scratch;
+    for (long c = 0; c < x.cols(); ++c)
+      permute_column(x.col(c).data(), source, false, scratch);
+    cholmod_dense view = dense_view(x);
+    view.nrow = size_t(count); // the pinned rows below stay out of the solve
+    cholmod_dense *workspace = cholmod_allocate_dense(size_t(x.cols()), factor_->maxesize,
+                                                      size_t(x.cols()), CHOLMOD_REAL, &common_);
+    const bool solved = workspace && cholmod_super_lsolve(factor_, &view, workspace, &common_) &&
+                        cholmod_super_ltsolve(factor_, &view, workspace, &common_);
+    cholmod_free_dense(&workspace, &common_);
+    if (!solved) throw not_factored();
+    for (long c = 0; c < x.cols(); ++c) {
+      permute_column(x.col(c).data(), source, true, scratch);
+      for (long k = count; k < rows; ++k)
+        x(source[size_t(k)], c) = 0;
+    }
+    return x;
   }
 
   // L L^T = P A P^T: with the trailing rows of y = L^-1 P b set to 0, x = P^T L^-T y solves the

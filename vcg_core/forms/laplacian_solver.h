@@ -35,6 +35,10 @@ public:
   Eigen::VectorXd solve(const Eigen::VectorXd &right_hand_side) const;
   // Column by column: V x k in, V x k out.
   virtual Eigen::MatrixXd solve_columns(const Eigen::MatrixXd &right_hand_sides) const = 0;
+  // The same, the right-hand sides released as soon as they are read: with many columns on a
+  // large mesh, two V x k arrays at a time instead of five (CHOLMOD's supernodal solves in place
+  // on the permuted columns).
+  virtual Eigen::MatrixXd solve_columns_releasing(Eigen::MatrixXd &&right_hand_sides) const;
   // The free vertices in the order the factorization eliminated them.
   virtual std::vector<int> elimination_order() const = 0;
   // The system of the free vertices eliminated first alone, the last `last_count` of
