@@ -115,14 +115,11 @@ void normalized_forms(const Eigen::MatrixXd &basis, HolomorphicForms &out) {
   parallel_for( // the forms over the cores
       size_t(g),
       [&](size_t m) {
-        Eigen::VectorXd real = Eigen::VectorXd::Zero(edge_count), imag = real;
+        Eigen::VectorXcd psi = Eigen::VectorXcd::Zero(edge_count);
         for (int l = 0; l < n; ++l) {
-          real += d(long(m), l).real() * out.harmonic[size_t(l)];
-          imag += d(long(m), l).imag() * out.harmonic[size_t(l)];
+          psi.real() += d(long(m), l).real() * out.harmonic[size_t(l)];
+          psi.imag() += d(long(m), l).imag() * out.harmonic[size_t(l)];
         }
-        Eigen::VectorXcd psi(edge_count);
-        psi.real() = real;
-        psi.imag() = imag;
         out.normalized[m] = out.intrinsic->integrate_along_mesh_edges(psi);
       },
       2);
@@ -213,17 +210,20 @@ HolomorphicForms compute_holomorphic_forms(const PreparedMesh &prepared, SolverK
   clock.done("harmonic");
 
   progress.report(0.8, "holomorphic forms and periods");
-  // Laid out only now: the factor, the largest array, is gone.
-  const FaceCorners faces = out.intrinsic->laid_out_flat();
-  const FaceGeometry geometry = face_geometry(faces);
   measure_residuals(vertex_count, edges, weights, out);
-  const ConjugateFit fit = conjugate_coefficients(faces, edges, geometry, out.harmonic);
-  out.conjugate = fit.coefficients;
-  out.conjugate_residual = fit.relative_residual;
-
-  const Eigen::MatrixXd basis = canonical_periods(edges, out);
+  Eigen::MatrixXd basis;
+  {
+    // Laid out only now, the factor (the largest array) gone, and freed before the normalized
+    // forms are laid out on the edges.
+    const FaceCorners faces = out.intrinsic->laid_out_flat();
+    const FaceGeometry geometry = face_geometry(faces);
+    const ConjugateFit fit = conjugate_coefficients(faces, edges, geometry, out.harmonic);
+    out.conjugate = fit.coefficients;
+    out.conjugate_residual = fit.relative_residual;
+    basis = canonical_periods(edges, out);
+    measure_non_holomorphicity(faces, edges, geometry, basis, out);
+  }
   normalized_forms(basis, out);
-  measure_non_holomorphicity(faces, edges, geometry, basis, out);
   clock.done("holomorphic");
   progress.report(1.0, "done");
   return out;
