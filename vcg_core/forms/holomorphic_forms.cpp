@@ -61,8 +61,9 @@ LocalCoefficients coefficients_of(const Faces &faces, size_t face_count, const M
   const std::complex<double> i(0, 1);
   parallel_for(face_count, [&](size_t f) {
     const FaceVectorBasis basis = face_vector_basis(faces, geometry, f);
-    const Eigen::Vector3d &e1 = geometry.first_axes[f];
-    const Eigen::Vector3d e2 = geometry.normals[f].cross(e1);
+    const FaceFrame frame = geometry.frame(f);
+    const Eigen::Vector3d &e1 = frame.first_axis;
+    const Eigen::Vector3d e2 = frame.normal.cross(e1);
     const std::complex<double> u1 = double(edges.face_signs[f][0]) * form[edges.face_edges[f][0]];
     const std::complex<double> u2 =
         u1 + double(edges.face_signs[f][1]) * form[edges.face_edges[f][1]];
@@ -74,10 +75,10 @@ LocalCoefficients coefficients_of(const Faces &faces, size_t face_count, const M
   return local;
 }
 
-// A vector in the plane of face f, in the face's frame.
-Eigen::Vector2d in_face_frame(const FaceGeometry &geometry, size_t f, const Eigen::Vector3d &v) {
-  const Eigen::Vector3d &e1 = geometry.first_axes[f];
-  return {v.dot(e1), v.dot(geometry.normals[f].cross(e1))};
+// A vector in the plane of a face, in the face's frame.
+Eigen::Vector2d in_face_frame(const FaceFrame &frame, const Eigen::Vector3d &v) {
+  const Eigen::Vector3d &e1 = frame.first_axis;
+  return {v.dot(e1), v.dot(frame.normal.cross(e1))};
 }
 
 } // namespace
@@ -87,9 +88,10 @@ ConjugateFit conjugate_coefficients(const std::vector<Eigen::MatrixX3d> &harmoni
   const long n = long(harmonic_vectors.size());
   return conjugate_fit(n, size_t(harmonic_vectors.front().rows()), geometry,
                        [&](size_t f, Eigen::Matrix2Xd &in_frame) {
+                         const FaceFrame frame = geometry.frame(f);
                          for (long j = 0; j < n; ++j)
                            in_frame.col(j) = in_face_frame(
-                               geometry, f, harmonic_vectors[size_t(j)].row(long(f)).transpose());
+                               frame, harmonic_vectors[size_t(j)].row(long(f)).transpose());
                        });
 }
 
@@ -99,8 +101,9 @@ ConjugateFit conjugate_coefficients(const FaceCorners &faces, const MeshEdges &e
   const long n = long(harmonic_forms.size());
   return conjugate_fit(n, faces.size(), geometry, [&](size_t f, Eigen::Matrix2Xd &in_frame) {
     const FaceVectorBasis basis = face_vector_basis(faces, geometry, f);
-    const Eigen::Vector2d first = in_face_frame(geometry, f, basis.first);
-    const Eigen::Vector2d second = in_face_frame(geometry, f, basis.second);
+    const FaceFrame frame = geometry.frame(f);
+    const Eigen::Vector2d first = in_face_frame(frame, basis.first);
+    const Eigen::Vector2d second = in_face_frame(frame, basis.second);
     const int e0 = edges.face_edges[f][0], e1 = edges.face_edges[f][1];
     const double s0 = edges.face_signs[f][0], s1 = edges.face_signs[f][1];
     for (long j = 0; j < n; ++j) {
@@ -119,8 +122,9 @@ LocalCoefficients local_coefficients(const FaceGeometry &geometry,
   local.f.resize(face_count);
   local.g.resize(face_count);
   parallel_for(face_count, [&](size_t f) {
-    const Eigen::Vector3d &e1 = geometry.first_axes[f];
-    const Eigen::Vector3d e2 = geometry.normals[f].cross(e1);
+    const FaceFrame frame = geometry.frame(f);
+    const Eigen::Vector3d &e1 = frame.first_axis;
+    const Eigen::Vector3d e2 = frame.normal.cross(e1);
     const Eigen::Vector3d a = real_part.row(long(f)), b = imaginary_part.row(long(f));
     const double ax = a.dot(e1), ay = a.dot(e2), bx = b.dot(e1), by = b.dot(e2);
     local.f[f] = {(ax + by) / 2, (bx - ay) / 2};

@@ -70,7 +70,7 @@ std::vector<int> pole_triangle(const Mesh &mesh, const FaceGeometry &geometry, i
   }
   const Eigen::Vector3d centroid = (p[0] + p[1] + p[2]) / 3.0;
   const Eigen::Vector3d e1 = (p[1] - p[0]).normalized();
-  const Eigen::Vector3d e2 = geometry.normals[puncture_face].cross(e1);
+  const Eigen::Vector3d e2 = geometry.normal(size_t(puncture_face)).cross(e1);
   const double size = std::sqrt(geometry.areas[puncture_face]);
   fixed = Eigen::VectorXcd::Zero(long(mesh.vert.size()));
   for (int k = 0; k < 3; ++k) {

@@ -16,27 +16,21 @@ Eigen::Vector3d corner(const FaceCorners &faces, size_t f, int k) {
   return faces[f][size_t(k)];
 }
 
-template <class Faces> FaceGeometry geometry_of(const Faces &faces, size_t face_count) {
-  FaceGeometry geometry;
-  geometry.normals.resize(face_count);
-  geometry.first_axes.resize(face_count);
-  geometry.areas.resize(face_count);
+template <class Faces> std::vector<double> areas_of(const Faces &faces, size_t face_count) {
+  std::vector<double> areas(face_count);
   parallel_for(face_count, [&](size_t f) {
     const Eigen::Vector3d p0 = corner(faces, f, 0), p1 = corner(faces, f, 1),
                           p2 = corner(faces, f, 2);
-    const Eigen::Vector3d cross = (p1 - p0).cross(p2 - p0);
-    geometry.areas[f] = 0.5 * cross.norm();
-    geometry.normals[f] = cross.normalized();
-    geometry.first_axes[f] = (p1 - p0).normalized();
+    areas[f] = 0.5 * (p1 - p0).cross(p2 - p0).norm();
   });
-  return geometry;
+  return areas;
 }
 
 template <class Faces>
 FaceVectorBasis basis_of(const Faces &faces, const FaceGeometry &geometry, size_t f) {
   const Eigen::Vector3d p0 = corner(faces, f, 0), p1 = corner(faces, f, 1),
                         p2 = corner(faces, f, 2);
-  const Eigen::Vector3d &n = geometry.normals[f];
+  const Eigen::Vector3d n = geometry.normal(f);
   // grad phi_i = n x (edge opposite corner i, counter-clockwise) / (2 area); the local potential
   // is u0 = 0, u1 = form along side 0, u2 = u1 + form along side 1.
   return {n.cross(p0 - p2) / (2.0 * geometry.areas[f]),
@@ -65,11 +59,31 @@ Eigen::MatrixX3d vectors_of(const Faces &faces, size_t face_count, const MeshEdg
 } // namespace
 
 FaceGeometry face_geometry(const Mesh &mesh) {
-  return geometry_of(mesh, mesh.face.size());
+  FaceGeometry geometry;
+  geometry.areas = areas_of(mesh, mesh.face.size());
+  geometry.mesh_ = &mesh;
+  return geometry;
 }
 
 FaceGeometry face_geometry(const FaceCorners &faces) {
-  return geometry_of(faces, faces.size());
+  FaceGeometry geometry;
+  geometry.areas = areas_of(faces, faces.size());
+  geometry.corners_ = &faces;
+  return geometry;
+}
+
+Eigen::Vector3d FaceGeometry::corner(size_t f, int k) const {
+  return mesh_ ? meromorph::corner(*mesh_, f, k) : meromorph::corner(*corners_, f, k);
+}
+
+Eigen::Vector3d FaceGeometry::normal(size_t f) const {
+  const Eigen::Vector3d p0 = corner(f, 0);
+  return (corner(f, 1) - p0).cross(corner(f, 2) - p0).normalized();
+}
+
+FaceFrame FaceGeometry::frame(size_t f) const {
+  const Eigen::Vector3d p0 = corner(f, 0), p1 = corner(f, 1);
+  return {(p1 - p0).cross(corner(f, 2) - p0).normalized(), (p1 - p0).normalized()};
 }
 
 double corner_angle(const MeshFace &face, int k) {
