@@ -4,8 +4,8 @@
 //      (unit_scale.h); it must outlive the structure.
 // Out: `PreparedMesh`: the mesh, its oriented edges with their cotangent weights, the faces at
 //      each vertex with every face's three vertices, the edges at each vertex, the face geometry
-//      (normals, areas) and the area each vertex stands for (a third of its faces'). Stages take
-//      it by const reference and build none of it again.
+//      (areas; frames on request) and the area each vertex stands for (a third of its faces').
+//      Stages take it by const reference and build none of it again.
 #pragma once
 
 #include <vector>
