@@ -148,15 +148,15 @@ void permute_column(double *values, const std::vector<int> &source, bool back,
 constexpr int relaxed_supernode_unknowns = 300000;
 constexpr size_t relaxed_supernodes[3] = {16, 64, 192};
 
-// From `nested_dissection_unknowns` on, the order is METIS's nested dissection
-// (forms/metis_order.h) instead of AMD: the factor holds 40% fewer entries, and the ordering's
-// cost (two cores) is about what the factorization saves. Measured, whole factorization stage
-// and peak memory of `param`: eight x1024 (786k unknowns) 5.0 -> 6.7 s, 1586 -> 1343 MB;
-// genus 2 at 1M 8.4 -> 8.5 s, 1910 -> 1841 MB; genus 5 at 2.7M 23.2 -> 24.0 s, the factor
-// 2.8 -> 1.8 GB, peak 5.19 -> 4.85 GiB. Below it AMD is faster (genus 5 x64, 334k: 1.3 -> 2.6 s).
-constexpr int nested_dissection_unknowns = 1000000;
+// From `nested_dissection_unknowns` on, where memory is what a two-core machine runs short of,
+// the order is METIS's nested dissection (forms/metis_order.h) instead of AMD: the factor holds
+// 40% fewer entries, at the cost of METIS's ordering (one core: METIS cannot run twice at once).
+// Measured, factorization stage and peak memory of `param`, genus 5 at 2.7M unknowns: AMD
+// 23.2 s, factor 2.8 GB; METIS 32.5 s, factor 1.8 GB, peak 4.51 GiB. At 1M (genus 2) METIS's
+// order made the stage 8.4 -> 11.0 s for 200 MB less peak: below 2M AMD stays.
+constexpr int nested_dissection_unknowns = 2000000;
 
-// CHOLMOD's supernodal LL^T, ordered by AMD alone (METIS's nested dissection from a million
+// CHOLMOD's supernodal LL^T, ordered by AMD alone (METIS's nested dissection from two million
 // unknowns, above) or by the order given. By default CHOLMOD tries AMD and, where the fill looks
 // high, METIS too (on one core) and keeps the better; on these Laplacians that attempt cost more
 // than its lower fill saved (measured: eight x1024, 786k vertices: factorization 10.5 s -> 5.8 s
@@ -208,14 +208,10 @@ public:
   Eigen::MatrixXd solve_columns_releasing(Eigen::MatrixXd &&b) const override {
     if (!factor_->is_super) return LaplacianSolver::solve_columns_releasing(std::move(b));
     Eigen::MatrixXd x = std::move(b);
-    const int *permutation = static_cast<const int *>(factor_->Perm);
     const long rows = x.rows(), count = free_.count();
-    std::vector<int> source(static_cast<size_t>(rows)); // row k of y is row source[k] of b
-    for (long k = 0; k < count; ++k)
-      source[size_t(k)] = free_.vertex[size_t(permutation[k])];
-    long next = count;
+    std::vector<int> source = elimination_order(); // row k of y is row source[k] of b
     for (long v = 0; v < rows; ++v)
-      if (free_.number[size_t(v)] < 0) source[size_t(next++)] = int(v);
+      if (free_.number[size_t(v)] < 0) source.push_back(int(v));
     std::vector<double> scratch;
     for (long c = 0; c < x.cols(); ++c)
       permute_column(x.col(c).data(), source, false, scratch);

@@ -7,7 +7,7 @@
 //      vertex 0 alone, which with b summing to zero solves the singular system; pinning a set of
 //      vertices gives Dirichlet problems: put -L_free,pinned x_pinned into b). The reduced matrix
 //      is symmetric positive definite. CHOLMOD's supernodal Cholesky (on OpenBLAS, fill-reducing
-//      ordering AMD, METIS's nested dissection from a million unknowns: forms/metis_order.h) is
+//      ordering AMD, METIS's nested dissection from two million unknowns: forms/metis_order.h) is
 //      the default; Eigen's SimplicialLDLT is there to check it against.
 //      Several right-hand sides at once (`solve_columns`) share one pass over the factor. The
 //      elimination order of a factorization can be handed to the next one on a subset of the
