@@ -120,8 +120,8 @@ bool IntrinsicDelaunay::flip_if_not_delaunay(int e) {
   }
   for (int face : {left, right})
     for (int k = 0; k < 3; ++k)
-      edges_.face_signs[size_t(face)][k] =
-          int(sign_along(edges_.face_edges[size_t(face)][k], corners_[size_t(face)][k]));
+      edges_.face_signs[size_t(face)][k] = static_cast<signed char>(
+          sign_along(edges_.face_edges[size_t(face)][k], corners_[size_t(face)][k]));
   return true;
 }
 

@@ -61,7 +61,8 @@ std::unique_ptr<LaplacianSolver> factor_laplacian(const Eigen::SparseMatrix<doub
 std::vector<int> elimination_order_with_last(const Eigen::SparseMatrix<double> &laplacian,
                                              const std::vector<int> &pinned,
                                              const std::vector<char> &eliminate_last);
-// The same, the Laplacian released before the factor is allocated (its lower triangle is copied).
+// The same, the Laplacian released before the factor is allocated (its upper triangle is copied,
+// and that copy released once CHOLMOD has permuted it).
 std::unique_ptr<LaplacianSolver> factor_laplacian(Eigen::SparseMatrix<double> &&laplacian,
                                                   SolverKind kind = SolverKind::cholmod,
                                                   const std::vector<int> &pinned = {0},

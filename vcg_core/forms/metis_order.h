@@ -1,7 +1,7 @@
 // A fill-reducing elimination order by nested dissection (METIS).
 //
-// In:  the pattern of a symmetric n x n matrix as its lower triangle compressed by columns
-//      (column_start[n + 1], rows; the diagonal may be there or not).
+// In:  the pattern of a symmetric n x n matrix as its lower or its upper triangle compressed by
+//      columns (column_start[n + 1], rows; the diagonal may be there or not).
 // Out: the order in which to eliminate the unknowns (order[k] = the k-th eliminated), for
 //      CHOLMOD as a given permutation: METIS's vertex separator of the whole graph, each half
 //      ordered by METIS's nested dissection, the separator last. The same order on every run.

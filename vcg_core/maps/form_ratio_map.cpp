@@ -121,26 +121,34 @@ ChartSystem chart_system(const Mesh &mesh, const MeshEdges &edges, const FaceInc
   return system;
 }
 
-// The matrix of `system` (both triangles); empty when an entry is not finite.
+// The matrix of `system` (both triangles), written in place: each column's room counted first (its
+// diagonal and one entry per edge of the system at its unknown), no list of entries and no
+// transposed copy (at 2.7M vertices those were 0.5 GB per chart); empty when an entry is not
+// finite.
 std::optional<Eigen::SparseMatrix<Complex>> hermitian_matrix(const MeshEdges &edges,
                                                              const ChartSystem &system) {
   auto finite = [](Complex z) { return std::isfinite(z.real()) && std::isfinite(z.imag()); };
-  std::vector<Eigen::Triplet<Complex>> entries;
-  entries.reserve(system.diagonal.size() + 2 * system.along_edge.size());
-  for (size_t i = 0; i < system.diagonal.size(); ++i) {
-    if (!finite(system.diagonal[i])) return std::nullopt;
-    entries.emplace_back(int(i), int(i), system.diagonal[i]);
-  }
+  Eigen::VectorXi per_column = Eigen::VectorXi::Ones(system.unknowns);
   for (size_t e = 0; e < system.along_edge.size(); ++e) {
     if (!system.edge_in_system[e]) continue;
     if (!finite(system.along_edge[e])) return std::nullopt;
-    const int from = system.id[size_t(edges.vertices[e][0])];
-    const int to = system.id[size_t(edges.vertices[e][1])];
-    entries.emplace_back(from, to, system.along_edge[e]);
-    entries.emplace_back(to, from, std::conj(system.along_edge[e]));
+    ++per_column[system.id[size_t(edges.vertices[e][0])]];
+    ++per_column[system.id[size_t(edges.vertices[e][1])]];
   }
   Eigen::SparseMatrix<Complex> hermitian(system.unknowns, system.unknowns);
-  hermitian.setFromTriplets(entries.begin(), entries.end());
+  hermitian.reserve(per_column);
+  for (size_t i = 0; i < system.diagonal.size(); ++i) {
+    if (!finite(system.diagonal[i])) return std::nullopt;
+    hermitian.insert(int(i), int(i)) = system.diagonal[i];
+  }
+  for (size_t e = 0; e < system.along_edge.size(); ++e) {
+    if (!system.edge_in_system[e]) continue;
+    const int from = system.id[size_t(edges.vertices[e][0])];
+    const int to = system.id[size_t(edges.vertices[e][1])];
+    hermitian.insert(from, to) = system.along_edge[e];
+    hermitian.insert(to, from) = std::conj(system.along_edge[e]);
+  }
+  hermitian.makeCompressed();
   return hermitian;
 }
 
@@ -290,8 +298,8 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
   const FaceGeometry &geometry = prepared.geometry;
   const FaceIncidence &in = prepared.incidence;
   // The forms' dz coefficients per face: their ratio is the function's sample there.
-  const std::vector<Complex> top = local_coefficients(mesh, edges, geometry, numerator).f;
-  const std::vector<Complex> bottom = local_coefficients(mesh, edges, geometry, denominator).f;
+  std::vector<Complex> top = local_coefficients(mesh, edges, geometry, numerator).f;
+  std::vector<Complex> bottom = local_coefficients(mesh, edges, geometry, denominator).f;
   const ChartGuess guess = chart_guess(prepared, top, bottom);
   const std::vector<char> &near_zero = guess.near_zero, &near_pole = guess.near_pole;
   std::vector<Complex> ratio_f(face_count), ratio_g(face_count);
@@ -302,6 +310,8 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
     known_f[f] = std::isfinite(ratio_f[f].real()) && std::isfinite(ratio_f[f].imag());
     known_g[f] = std::isfinite(ratio_g[f].real()) && std::isfinite(ratio_g[f].imag());
   });
+  std::vector<Complex>().swap(top); // not held beside the charts' systems
+  std::vector<Complex>().swap(bottom);
   // F where |F| < chart_bound, G = 1 / F where |F| > 1 / chart_bound, the two charts at once
   // (each solve runs on one core); blended between.
   std::future<std::vector<Complex>> pole_chart = std::async(std::launch::async, [&] {

@@ -79,13 +79,16 @@ Parameterization parameterize(Mesh &mesh, const ParameterizeOptions &options,
   Parameterization out;
   StageClock clock(out.timings_ms);
   progress.report(0.0, "edges and cotangent weights");
-  const PreparedMesh prepared = prepare_mesh(mesh); // every stage below reads it
+  // Every stage below reads it; the forms only its edges: the rest is prepared after them.
+  PreparedMesh prepared = prepare_mesh_edges(mesh);
   clock.done("prepare");
   HolomorphicForms forms =
       compute_holomorphic_forms(prepared, options.solver, progress.range(0.0, 0.6));
   release_intermediates(forms);
   out.timings_ms.insert(out.timings_ms.end(), forms.timings_ms.begin(), forms.timings_ms.end());
   clock.restart();
+  prepare_the_rest(prepared);
+  clock.done("prepare");
   out.notes = validation.notes;
   out.genus = forms.genus;
   out.euler = 2 - 2 * out.genus;

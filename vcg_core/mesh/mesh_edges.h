@@ -19,10 +19,10 @@
 namespace meromorph {
 
 struct MeshEdges {
-  std::vector<std::array<int, 2>> vertices;   // per edge: from, to
-  std::vector<std::array<int, 2>> faces;      // per edge: left, right
-  std::vector<std::array<int, 3>> face_edges; // per face: edge of side k (corner k -> k+1)
-  std::vector<std::array<int, 3>> face_signs; // per face: +1 / -1
+  std::vector<std::array<int, 2>> vertices;           // per edge: from, to
+  std::vector<std::array<int, 2>> faces;              // per edge: left, right
+  std::vector<std::array<int, 3>> face_edges;         // per face: edge of side k (corner k -> k+1)
+  std::vector<std::array<signed char, 3>> face_signs; // per face: +1 / -1 (one byte each)
 
   int edge_count() const { return int(vertices.size()); }
 };

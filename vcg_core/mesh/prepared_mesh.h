@@ -28,4 +28,10 @@ struct PreparedMesh {
 
 PreparedMesh prepare_mesh(const Mesh &mesh);
 
+// The same in two steps: the mesh and its edges (all the holomorphic forms read), then the rest.
+// A caller that computes the forms in between does not hold the rest beside the Laplacian's
+// factor (at 2.7M vertices 350 MB of the peak).
+PreparedMesh prepare_mesh_edges(const Mesh &mesh);
+void prepare_the_rest(PreparedMesh &prepared);
+
 } // namespace meromorph
