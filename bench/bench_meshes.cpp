@@ -81,6 +81,7 @@ Figures in_child(const std::function<Figures()> &job) {
   if (child == 0) {
     close(ends[0]);
     std::ostringstream text;
+    text.precision(17); // every digit (a vertex count of seven digits came back rounded to six)
     try {
       for (const auto &[name, value] : job())
         text << name << " " << value << "\n";
