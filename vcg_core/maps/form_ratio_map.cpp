@@ -123,8 +123,8 @@ ChartSystem chart_system(const Mesh &mesh, const MeshEdges &edges, const FaceInc
 
 // The matrix of `system` (both triangles), written in place: each column's room counted first (its
 // diagonal and one entry per edge of the system at its unknown), no list of entries and no
-// transposed copy (at 2.7M vertices those were 0.5 GB per chart); empty when an entry is not
-// finite.
+// transposed copy (at 2.7M vertices those were 0.4 GB of the peak, both charts together); empty
+// when an entry is not finite.
 std::optional<Eigen::SparseMatrix<Complex>> hermitian_matrix(const MeshEdges &edges,
                                                              const ChartSystem &system) {
   auto finite = [](Complex z) { return std::isfinite(z.real()) && std::isfinite(z.imag()); };
