@@ -641,6 +641,32 @@ TEST(HolomorphicForms, LocalCoefficientsOfDzAndDzBar) {
   EXPECT_NEAR(std::abs(dzbar.g[0]), 1.0, 1e-12);
 }
 
+// Two forms' dz coefficients in one pass are the ones computed form by form, to the bit; and the
+// mesh prepared in two steps (edges first, the rest after the forms) is the mesh prepared at once.
+TEST(HolomorphicForms, PairedDzCoefficientsAndTwoStepPreparationMatchTheSingleOnes) {
+  Mesh mesh;
+  make_genus_surface(mesh, 2, 12);
+  const PreparedMesh prepared = prepare_mesh(mesh);
+  const Eigen::VectorXcd first = Eigen::VectorXcd::Random(prepared.edges.edge_count());
+  const Eigen::VectorXcd second = Eigen::VectorXcd::Random(prepared.edges.edge_count());
+  const auto [top, bottom] =
+      dz_coefficients(mesh, prepared.edges, prepared.geometry, first, second);
+  EXPECT_EQ(top, local_coefficients(mesh, prepared.edges, prepared.geometry, first).f);
+  EXPECT_EQ(bottom, local_coefficients(mesh, prepared.edges, prepared.geometry, second).f);
+
+  PreparedMesh stepwise = prepare_mesh_edges(mesh);
+  EXPECT_TRUE(stepwise.incidence.corners.empty() && stepwise.weights.empty());
+  prepare_the_rest(stepwise);
+  EXPECT_EQ(stepwise.edges.vertices, prepared.edges.vertices);
+  EXPECT_EQ(stepwise.edges.face_signs, prepared.edges.face_signs);
+  EXPECT_EQ(stepwise.weights, prepared.weights);
+  EXPECT_EQ(stepwise.incidence.corners, prepared.incidence.corners);
+  EXPECT_EQ(stepwise.incidence.faces_of_vertex.items, prepared.incidence.faces_of_vertex.items);
+  EXPECT_EQ(stepwise.edges_at_vertex.items, prepared.edges_at_vertex.items);
+  EXPECT_EQ(stepwise.geometry.areas, prepared.geometry.areas);
+  EXPECT_EQ(stepwise.vertex_areas, prepared.vertex_areas);
+}
+
 TEST(Periods, ModulusReductionAndSymplecticBasis) {
   // 2.3 + 0.5i: less 2, then -1/tau (its modulus is below 1), then plus 1.
   const std::complex<double> reduced = reduce_modulus({2.3, 0.5});

@@ -1,5 +1,7 @@
 #include "forms/holomorphic_forms.h"
 
+#include <array>
+
 #include <cmath>
 
 #include <Eigen/Dense>
@@ -49,6 +51,30 @@ ConjugateFit conjugate_fit(long n, size_t face_count, const FaceGeometry &geomet
   return fit;
 }
 
+// Face f's two basis vectors (face_vector_basis) in the face's frame: a complex form's face vector
+// is u1 first + u2 second with u1, u2 its values along the face's first two sides.
+struct BasisInFrame {
+  double first_x, second_x, first_y, second_y;
+};
+
+template <class Faces>
+BasisInFrame basis_in_frame(const Faces &faces, const FaceGeometry &geometry, size_t f) {
+  const FaceVectorBasis basis = face_vector_basis(faces, geometry, f);
+  const FaceFrame frame = geometry.frame(f);
+  const Eigen::Vector3d &e1 = frame.first_axis;
+  const Eigen::Vector3d e2 = frame.normal.cross(e1);
+  return {basis.first.dot(e1), basis.second.dot(e1), basis.first.dot(e2), basis.second.dot(e2)};
+}
+
+// (cx, cy): the complex form's face vector on face f in the face's frame.
+std::array<std::complex<double>, 2> in_frame(const BasisInFrame &basis, const MeshEdges &edges,
+                                             size_t f, const Eigen::VectorXcd &form) {
+  const std::complex<double> u1 = double(edges.face_signs[f][0]) * form[edges.face_edges[f][0]];
+  const std::complex<double> u2 =
+      u1 + double(edges.face_signs[f][1]) * form[edges.face_edges[f][1]];
+  return {u1 * basis.first_x + u2 * basis.second_x, u1 * basis.first_y + u2 * basis.second_y};
+}
+
 // f dz + g dzbar on each face of `faces` (a Mesh or FaceCorners) for a complex form: with c the
 // complex face vector and (cx, cy) its components in the face's frame, f = (cx - i cy) / 2 and
 // g = (cx + i cy) / 2.
@@ -60,15 +86,7 @@ LocalCoefficients coefficients_of(const Faces &faces, size_t face_count, const M
   local.g.resize(face_count);
   const std::complex<double> i(0, 1);
   parallel_for(face_count, [&](size_t f) {
-    const FaceVectorBasis basis = face_vector_basis(faces, geometry, f);
-    const FaceFrame frame = geometry.frame(f);
-    const Eigen::Vector3d &e1 = frame.first_axis;
-    const Eigen::Vector3d e2 = frame.normal.cross(e1);
-    const std::complex<double> u1 = double(edges.face_signs[f][0]) * form[edges.face_edges[f][0]];
-    const std::complex<double> u2 =
-        u1 + double(edges.face_signs[f][1]) * form[edges.face_edges[f][1]];
-    const std::complex<double> cx = u1 * basis.first.dot(e1) + u2 * basis.second.dot(e1);
-    const std::complex<double> cy = u1 * basis.first.dot(e2) + u2 * basis.second.dot(e2);
+    const auto [cx, cy] = in_frame(basis_in_frame(faces, geometry, f), edges, f, form);
     local.f[f] = (cx - i * cy) / 2.0;
     local.g[f] = (cx + i * cy) / 2.0;
   });
@@ -141,6 +159,23 @@ LocalCoefficients local_coefficients(const Mesh &mesh, const MeshEdges &edges,
 LocalCoefficients local_coefficients(const FaceCorners &faces, const MeshEdges &edges,
                                      const FaceGeometry &geometry, const Eigen::VectorXcd &form) {
   return coefficients_of(faces, faces.size(), edges, geometry, form);
+}
+
+std::array<std::vector<std::complex<double>>, 2>
+dz_coefficients(const Mesh &mesh, const MeshEdges &edges, const FaceGeometry &geometry,
+                const Eigen::VectorXcd &first, const Eigen::VectorXcd &second) {
+  const size_t face_count = mesh.face.size();
+  std::array<std::vector<std::complex<double>>, 2> out{
+      std::vector<std::complex<double>>(face_count), std::vector<std::complex<double>>(face_count)};
+  const std::complex<double> i(0, 1);
+  parallel_for(face_count, [&](size_t f) {
+    const BasisInFrame basis = basis_in_frame(mesh, geometry, f);
+    const auto [x1, y1] = in_frame(basis, edges, f, first);
+    const auto [x2, y2] = in_frame(basis, edges, f, second);
+    out[0][f] = (x1 - i * y1) / 2.0;
+    out[1][f] = (x2 - i * y2) / 2.0;
+  });
+  return out;
 }
 
 } // namespace meromorph

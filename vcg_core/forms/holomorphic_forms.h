@@ -8,6 +8,8 @@
 //      f dz + g dzbar in an orthonormal frame (e1, n x e1): |g| / |f| is the non-holomorphicity.
 #pragma once
 
+#include <array>
+
 #include <complex>
 #include <vector>
 
@@ -42,5 +44,10 @@ LocalCoefficients local_coefficients(const Mesh &mesh, const MeshEdges &edges,
                                      const FaceGeometry &geometry, const Eigen::VectorXcd &form);
 LocalCoefficients local_coefficients(const FaceCorners &faces, const MeshEdges &edges,
                                      const FaceGeometry &geometry, const Eigen::VectorXcd &form);
+// The dz coefficients (f of f dz + g dzbar) of two complex forms on the mesh's faces, in one pass
+// (each face's frame and basis worked out once): the same values as local_coefficients(...).f.
+std::array<std::vector<std::complex<double>>, 2>
+dz_coefficients(const Mesh &mesh, const MeshEdges &edges, const FaceGeometry &geometry,
+                const Eigen::VectorXcd &first, const Eigen::VectorXcd &second);
 
 } // namespace meromorph

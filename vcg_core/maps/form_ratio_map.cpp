@@ -298,8 +298,7 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
   const FaceGeometry &geometry = prepared.geometry;
   const FaceIncidence &in = prepared.incidence;
   // The forms' dz coefficients per face: their ratio is the function's sample there.
-  std::vector<Complex> top = local_coefficients(mesh, edges, geometry, numerator).f;
-  std::vector<Complex> bottom = local_coefficients(mesh, edges, geometry, denominator).f;
+  auto [top, bottom] = dz_coefficients(mesh, edges, geometry, numerator, denominator);
   const ChartGuess guess = chart_guess(prepared, top, bottom);
   const std::vector<char> &near_zero = guess.near_zero, &near_pole = guess.near_pole;
   std::vector<Complex> ratio_f(face_count), ratio_g(face_count);
@@ -325,10 +324,8 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
 
 int guessed_crowding(const PreparedMesh &prepared, const Eigen::VectorXcd &numerator,
                      const Eigen::VectorXcd &denominator) {
-  const std::vector<Complex> top =
-      local_coefficients(prepared.mesh, prepared.edges, prepared.geometry, numerator).f;
-  const std::vector<Complex> bottom =
-      local_coefficients(prepared.mesh, prepared.edges, prepared.geometry, denominator).f;
+  const auto [top, bottom] =
+      dz_coefficients(prepared.mesh, prepared.edges, prepared.geometry, numerator, denominator);
   return crowded_faces(prepared.incidence, mean_samples(prepared, top, bottom));
 }
 
