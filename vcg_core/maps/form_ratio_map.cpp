@@ -298,7 +298,10 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
   const FaceGeometry &geometry = prepared.geometry;
   const FaceIncidence &in = prepared.incidence;
   // The forms' dz coefficients per face: their ratio is the function's sample there.
-  auto [top, bottom] = dz_coefficients(mesh, edges, geometry, numerator, denominator);
+  // (Named references, not a structured binding: C++17 lambdas cannot capture one.)
+  std::array<std::vector<Complex>, 2> coefficients =
+      dz_coefficients(mesh, edges, geometry, numerator, denominator);
+  std::vector<Complex> &top = coefficients[0], &bottom = coefficients[1];
   const ChartGuess guess = chart_guess(prepared, top, bottom);
   const std::vector<char> &near_zero = guess.near_zero, &near_pole = guess.near_pole;
   std::vector<Complex> ratio_f(face_count), ratio_g(face_count);
@@ -324,8 +327,9 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
 
 int guessed_crowding(const PreparedMesh &prepared, const Eigen::VectorXcd &numerator,
                      const Eigen::VectorXcd &denominator) {
-  const auto [top, bottom] =
+  const std::array<std::vector<Complex>, 2> coefficients =
       dz_coefficients(prepared.mesh, prepared.edges, prepared.geometry, numerator, denominator);
+  const std::vector<Complex> &top = coefficients[0], &bottom = coefficients[1];
   return crowded_faces(prepared.incidence, mean_samples(prepared, top, bottom));
 }
 
