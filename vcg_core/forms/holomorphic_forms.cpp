@@ -1,7 +1,6 @@
 #include "forms/holomorphic_forms.h"
 
 #include <array>
-
 #include <cmath>
 
 #include <Eigen/Dense>
