@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <numeric>
+#include <random>
 #include <set>
 #include <sstream>
 
@@ -50,6 +51,7 @@
 #include "shapes/test_surfaces.h"
 #include "sphere/branch_points.h"
 #include "sphere/map_quality.h"
+#include "sphere/plane_triangles.h"
 #include "sphere/sheets.h"
 #include "sphere/sphere_geometry.h"
 #include "sphere/texture_coordinates.h"
@@ -854,6 +856,52 @@ TEST(Genus0Correction, FoldedPlaneFacesByOrientationInTheirChart) {
   // The third face, outside the unit circle, is judged in 1 / z: (0.1, 0.1i, 0.05) turns
   // counter-clockwise there. The second is the first turned over.
   EXPECT_EQ(folded_plane_faces(in, values), std::vector<int>{1});
+}
+
+// The squared-moduli tests answer as the std::abs ones they replace, near the thresholds, far
+// out, far in, at zero and for NaN.
+TEST(PlaneTriangles, AnswerAsTheTestsWithStdAbs) {
+  std::mt19937_64 random(7);
+  std::uniform_real_distribution<double> unit(-1, 1), exponent(-170, 170);
+  auto value = [&] { // scales from 1e-170 to 1e170, some exactly 0 or on the unit circle
+    switch (random() % 8) {
+    case 0:
+      return Complex(0, 0);
+    case 1:
+      return std::polar(1.0, 3 * unit(random)) * (1 + 1e-16 * unit(random));
+    default:
+      return Complex(unit(random), unit(random)) * std::pow(10.0, exponent(random));
+    }
+  };
+  size_t checked = 0;
+  for (int trial = 0; trial < 200000; ++trial) {
+    const Complex w = value();
+    ASSERT_EQ(inside_unit_circle(w), std::abs(w) < 1) << w;
+    const double bound = random() % 4 == 0 ? std::abs(w) : std::abs(value());
+    ASSERT_EQ(shorter_than(w, bound), !(std::abs(w) >= bound)) << w << " " << bound;
+    Complex z[3] = {value(), value(), value()};
+    if (random() % 2) { // a triangle near the resolution: edges of about 1e-12 of its distance
+      const double ratio = 1e-12 * (1 + (random() % 3 == 0 ? 1e-15 : 1e-3) * unit(random));
+      z[1] = z[0] + std::polar(std::abs(z[0]) * ratio, 3 * unit(random));
+      z[2] = z[0] + (z[1] - z[0]) * std::polar(0.5 + 0.5 * unit(random), unit(random));
+    }
+    const double size = std::max(std::abs(z[1] - z[0]), std::abs(z[2] - z[0]));
+    const double distance = std::max({std::abs(z[0]), std::abs(z[1]), std::abs(z[2])});
+    const bool unresolved = size < 1e-12 * distance;
+    ASSERT_EQ(below_resolution(z), unresolved) << z[0] << z[1] << z[2];
+    ASSERT_EQ(folded_in_the_plane(z),
+              !unresolved && std::imag(std::conj(z[1] - z[0]) * (z[2] - z[0])) <= 0);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 200000u);
+  const double nan = std::nan("");
+  EXPECT_FALSE(inside_unit_circle(Complex(nan, 0)));
+  EXPECT_TRUE(shorter_than(Complex(nan, 0), 1.0));
+  EXPECT_TRUE(shorter_than(Complex(1, 0), nan));
+  EXPECT_FALSE(shorter_than(Complex(0, 0), -1.0));
+  const Complex point[3] = {Complex(1, 1), Complex(1, 1), Complex(1, 1)};
+  EXPECT_TRUE(below_resolution(point));
+  EXPECT_FALSE(folded_in_the_plane(point));
 }
 
 TEST(Genus0Map, RefinementOnlyWhereTheValuesCrowd) {

@@ -9,6 +9,7 @@
 #include "forms/region_extension.h"
 #include "maps/genus0_map.h"
 #include "mesh/cotan_laplacian.h"
+#include "sphere/plane_triangles.h"
 
 namespace meromorph {
 namespace {
@@ -97,7 +98,7 @@ std::vector<int> folded_plane_faces(const FaceIncidence &in,
     bool inside_unit_disk = true;
     for (int k = 0; k < 3; ++k) {
       corner[k] = values[size_t(in.corners[f][k])];
-      inside_unit_disk &= !corner[k].infinite && std::abs(corner[k].w) < 1;
+      inside_unit_disk &= !corner[k].infinite && inside_unit_circle(corner[k].w);
     }
     Complex z[3];
     bool chart_ok = true;
@@ -106,7 +107,7 @@ std::vector<int> folded_plane_faces(const FaceIncidence &in,
         z[k] = corner[k].w;
       else if (corner[k].infinite)
         z[k] = 0;
-      else if (std::abs(corner[k].w) == 0)
+      else if (corner[k].w == Complex(0, 0))
         chart_ok = false;
       else
         z[k] = 1.0 / corner[k].w;
@@ -114,10 +115,7 @@ std::vector<int> folded_plane_faces(const FaceIncidence &in,
     if (!chart_ok) // a face from 0 to beyond the unit circle: only the plane chart holds it
       for (int k = 0; k < 3; ++k)
         z[k] = corner[k].w;
-    const double size = std::max(std::abs(z[1] - z[0]), std::abs(z[2] - z[0]));
-    const double distance = std::max({std::abs(z[0]), std::abs(z[1]), std::abs(z[2])});
-    if (size < 1e-12 * distance) return false; // below what doubles resolve
-    return std::imag(std::conj(z[1] - z[0]) * (z[2] - z[0])) <= 0;
+    return folded_in_the_plane(z);
   });
 }
 

@@ -9,6 +9,7 @@
 #include "forms/reweighted_solve.h"
 #include "mesh/cotan_laplacian.h"
 #include "mesh/face_vectors.h"
+#include "sphere/plane_triangles.h"
 #include "sphere/sphere_geometry.h"
 
 namespace meromorph {
@@ -91,10 +92,7 @@ std::vector<int> folds_in_the_plane(const FaceIncidence &in, const std::vector<P
       z[k] = values[size_t(in.corners[f][k])].w;
     // A face smaller than about 1e-12 of its distance from 0 is below what doubles resolve: no
     // weight can unfold it (a better pole can; see parameterization.cpp).
-    const double size = std::max(std::abs(z[1] - z[0]), std::abs(z[2] - z[0]));
-    const double distance = std::max({std::abs(z[0]), std::abs(z[1]), std::abs(z[2])});
-    if (size < 1e-12 * distance) return false;
-    return std::imag(std::conj(z[1] - z[0]) * (z[2] - z[0])) <= 0;
+    return folded_in_the_plane(z);
   });
 }
 
@@ -158,7 +156,7 @@ bool values_crowd(const MeshEdges &edges, const Eigen::VectorXcd &z) {
   const int short_edges = chunked_sum(edges.vertices.size(), 0, [&](size_t begin, size_t end) {
     int count = 0;
     for (size_t e = begin; e < end; ++e)
-      count += !(std::abs(z[edges.vertices[e][0]] - z[edges.vertices[e][1]]) >= bound);
+      count += shorter_than(z[edges.vertices[e][0]] - z[edges.vertices[e][1]], bound);
     return count;
   });
   return short_edges > 0 || !(bound >= 0);
