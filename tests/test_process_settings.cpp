@@ -4,7 +4,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include <dlfcn.h>
 #include <gtest/gtest.h>
@@ -15,6 +18,7 @@
 
 #include "common/blas_threads.h"
 #include "common/factorization_threads.h"
+#include "common/parallel_for.h"
 #include "common/process_memory.h"
 
 namespace meromorph {
@@ -112,10 +116,42 @@ TEST(ProcessSettings, AProgramOwningItsProcessEndsOpenBlasIdleThreadsWhenASmallJ
     EXPECT_LT(threads_of_this_process(), with_workers);
     EXPECT_EQ(blas.get(), 1);
   }
-  EXPECT_EQ(blas.get(), 2); // and OpenBLAS starts them again when asked for two
+  EXPECT_EQ(blas.get(), 1); // left so: no threads started again only to idle until the exit
+  EXPECT_LT(threads_of_this_process(), with_workers);
+  {
+    const BlasThreads large(parallel_blas_unknowns); // a large job takes them back
+    EXPECT_EQ(blas.get(), 2);
+    {
+      const BlasThreads small_inside(1000);
+      EXPECT_EQ(blas.get(), 1);
+    }
+  }
+  {
+    const BlasThreads small(1000);
+    const BlasThreads large_beside(parallel_blas_unknowns); // a small job running keeps one
+    EXPECT_EQ(blas.get(), 1);
+  }
 }
 
 #if defined(_OPENMP) // (built with OpenMP wherever the compiler has it: vcg_core/CMakeLists.txt)
+// The serial work runs on this thread while the team starts; the loops after it find the team.
+TEST(ProcessSettings, SerialWorkRunsHereWhileTheOtherThreadsStart) {
+  const std::thread::id caller = std::this_thread::get_id();
+  std::thread::id ran_on;
+  int threads_meanwhile = 0;
+  while_threads_start([&] {
+    ran_on = std::this_thread::get_id();
+    threads_meanwhile = omp_get_num_threads();
+  });
+  EXPECT_EQ(ran_on, caller);
+  EXPECT_EQ(threads_meanwhile, omp_get_max_threads()); // (2 on the two-core machines)
+  EXPECT_THROW(while_threads_start([] { throw std::runtime_error("unreadable"); }),
+               std::runtime_error);
+  std::vector<int> doubled(10000);
+  parallel_for(doubled.size(), [&](size_t i) { doubled[i] = 2 * int(i); });
+  EXPECT_EQ(doubled[9999], 19998);
+}
+
 TEST(ProcessSettings, FactorizationsRunOpenMpTeamsOfOneAndGiveTheLevelsBack) {
   const int levels = omp_get_max_active_levels();
   ASSERT_GT(levels, 0);

@@ -81,5 +81,32 @@ TEST(Progress, ACancelStopsTheJobAtItsNextReportAndAJobsErrorReachesTheCaller) {
   EXPECT_EQ(ran_on, std::this_thread::get_id());
 }
 
+// A callback for any thread (the terminal's bar): the job runs on the caller's thread and its
+// reports reach the callback as they come, ranges and cancelling as with any other.
+TEST(Progress, ACallbackForAnyThreadIsCalledByTheJobItself) {
+  const std::thread::id caller = std::this_thread::get_id();
+  std::vector<double> seen;
+  bool on_caller = true;
+  const Progress progress = Progress::on_any_thread([&](double fraction, const std::string &) {
+    on_caller &= std::this_thread::get_id() == caller;
+    seen.push_back(fraction);
+    return seen.size() < 3;
+  });
+  EXPECT_TRUE(progress.any_thread());
+  EXPECT_TRUE(progress.range(0.5, 1.0).any_thread());
+  EXPECT_FALSE(Progress([](double, const std::string &) { return true; }).any_thread());
+  EXPECT_THROW(run_reporting(progress,
+                             [&](const Progress &relay) {
+                               EXPECT_EQ(std::this_thread::get_id(), caller);
+                               relay.report(0.5, "half");
+                               relay.range(0.5, 1.0).report(0.5, "three quarters");
+                               relay.report(1.0, "cancelled here");
+                               ADD_FAILURE() << "the third report should have thrown";
+                             }),
+               Cancelled);
+  EXPECT_TRUE(on_caller);
+  EXPECT_EQ(seen, (std::vector<double>{0.5, 0.75, 1.0}));
+}
+
 } // namespace
 } // namespace meromorph

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/errors.h"
+#include "common/parallel_for.h"
 #include "io/mesh_reader.h"
 #include "mesh/repair.h"
 
@@ -24,7 +25,8 @@ struct JobInput {
 inline JobInput read_job_input(const std::string &path, bool repair, Mesh &mesh) {
   const auto start = std::chrono::steady_clock::now();
   JobInput input;
-  input.source = read_mesh(path, mesh);
+  // (reading is serial: the other core's thread is started meanwhile, common/parallel_for.h)
+  while_threads_start([&] { input.source = read_mesh(path, mesh); });
   if (repair) input.repairs = repair_mesh(mesh);
   input.read_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -2,7 +2,8 @@
 //
 // In:  whether to stay quiet.
 // Out: a Progress whose reports draw "[#####     ]  50% stage" on stderr (only when stderr is a
-//      terminal or after the first second), and `finish` clears the line.
+//      terminal or after the first second), called by the job itself (Progress::on_any_thread);
+//      none when quiet. `finish` clears the line.
 #pragma once
 
 #include <chrono>
@@ -20,7 +21,9 @@ public:
   explicit TerminalProgress(bool quiet) : quiet_(quiet) {}
 
   Progress progress() {
-    return Progress([this](double fraction, const std::string &stage) {
+    if (quiet_) return Progress();
+    // Drawn when the job reports, from its own thread: the job needs no thread of its own.
+    return Progress::on_any_thread([this](double fraction, const std::string &stage) {
       draw(fraction, stage);
       return true;
     });

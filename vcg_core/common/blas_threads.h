@@ -4,8 +4,10 @@
 //      any thread), OpenBLAS (where it is the BLAS loaded) runs on one thread if every living
 //      guard's work has fewer than `parallel_blas_unknowns` unknowns; the previous setting comes
 //      back when the last one goes; in a program that owns its process (`own_blas_threads`,
-//      called by tune_process_memory), OpenBLAS's idle threads are ended then as well (it starts
-//      them again when they are needed). Where another BLAS is loaded, nothing changes.
+//      called by tune_process_memory), OpenBLAS's idle threads are ended then as well, and the
+//      setting stays at one until a guard of a larger job takes the threads back (setting it back
+//      would start them again, to spin through the writing of the outputs and be ended at exit).
+//      Where another BLAS is loaded, nothing changes.
 // Why, measured on the two-core machine: OpenBLAS's second thread gains about 10% in the dense
 // products of an 800k-unknown factorization but loses below a few hundred thousand: its first use
 // maps and clears its own buffers, and after every call it spins (sched_yield) for a while on the

@@ -13,12 +13,19 @@
 //      increasing order (equal keys by index): each chunk's k smallest, merged.
 //      `parallel_for_with`: body(i, state) for every i, dynamically scheduled, `state` each
 //      thread's own, made by make_state() once per thread (a scratch copy to change and restore).
+//      `while_threads_start`: work() runs on this thread while OpenMP starts the other threads of
+//      its team, which the loops after it then find running (its exception is thrown here).
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
+#include <exception>
 #include <utility>
 #include <vector>
+
+#if defined(_OPENMP)
+#include <omp.h>
+#endif
 
 namespace meromorph {
 
@@ -37,6 +44,26 @@ void parallel_for(std::size_t count, const Body &body, std::size_t threshold = p
   (void)threshold;
   for (std::size_t i = 0; i < count; ++i)
     body(i);
+#endif
+}
+
+// On the two-core machines a process's first thread besides its own starts 0.1 to 8 ms after it
+// is made (the idle core has to be woken): a first parallel loop waited that long for it. Made
+// while a serial step runs (reading the input), it is there when the loops need it.
+template <class Work> void while_threads_start(const Work &work) {
+#if defined(_OPENMP)
+  std::exception_ptr error;
+#pragma omp parallel
+  {
+    if (omp_get_thread_num() == 0) try {
+        work();
+      } catch (...) {
+        error = std::current_exception();
+      }
+  }
+  if (error) std::rethrow_exception(error);
+#else
+  work();
 #endif
 }
 

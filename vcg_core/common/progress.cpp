@@ -19,12 +19,16 @@ void Progress::report(double fraction, const std::string &stage) const {
 
 Progress Progress::range(double begin, double end) const {
   const double width = end_ - begin_;
-  return Progress(callback_, begin_ + width * begin, begin_ + width * end);
+  return Progress(callback_, begin_ + width * begin, begin_ + width * end, any_thread_);
+}
+
+Progress Progress::on_any_thread(Callback callback) {
+  return Progress(std::move(callback), 0.0, 1.0, true);
 }
 
 void run_reporting(const Progress &progress,
                    const std::function<void(const Progress &relay)> &job) {
-  if (!progress.reports()) {
+  if (!progress.reports() || progress.any_thread()) {
     job(progress);
     return;
   }
@@ -40,7 +44,6 @@ void run_reporting(const Progress &progress,
     relay.fraction = fraction;
     relay.stage = stage;
     relay.fresh = true;
-    relay.changed.notify_one();
     return !relay.cancelled;
   });
   std::future<void> done = std::async(std::launch::async, [&] {
@@ -59,9 +62,9 @@ void run_reporting(const Progress &progress,
   try {
     std::unique_lock<std::mutex> lock(relay.mutex);
     while (true) {
-      relay.changed.wait_for(lock, std::chrono::milliseconds(250),
-                             [&] { return relay.fresh || relay.finished; });
-      if (relay.finished && !relay.fresh) break; // a last report is handed on first
+      relay.changed.wait_for(lock, std::chrono::milliseconds(250), [&] { return relay.finished; });
+      if (relay.finished && !relay.fresh) break;         // a last report is handed on first
+      if (relay.stage.empty() && !relay.fresh) continue; // nothing reported yet
       const double fraction = relay.fraction;
       const std::string stage = relay.stage;
       relay.fresh = false;

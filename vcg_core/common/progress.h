@@ -28,21 +28,29 @@ public:
   // A progress object for a sub-stage that covers [begin, end] of this one.
   Progress range(double begin, double end) const;
 
+  // A callback that may be called on the job's own thread, only when the job reports (a terminal
+  // bar): run_reporting runs the job right there, with no thread of its own.
+  static Progress on_any_thread(Callback callback);
+
   bool reports() const { return bool(callback_); }
+  bool any_thread() const { return any_thread_; }
 
 private:
-  Progress(Callback callback, double begin, double end)
-      : callback_(std::move(callback)), begin_(begin), end_(end) {}
+  Progress(Callback callback, double begin, double end, bool any_thread)
+      : callback_(std::move(callback)), begin_(begin), end_(end), any_thread_(any_thread) {}
 
   Callback callback_;
   double begin_ = 0.0;
   double end_ = 1.0;
+  bool any_thread_ = false;
 };
 
-// `job(relay)` runs on another thread; its reports reach `progress` from this thread, the latest
-// one again every 0.25 s while nothing new comes; its exception, if any, is thrown here. When
-// the callback cancels, the job's next report throws Cancelled there and this call throws
-// Cancelled once the job has unwound. Without a callback the job simply runs here.
+// `job(relay)` runs on another thread; every 0.25 s the latest of its reports reaches `progress`
+// from this thread (new or not: the bar stays alive), and the last one when it ends; its
+// exception, if any, is thrown here. When the callback cancels, the job's next report throws
+// Cancelled there and this call throws Cancelled once the job has unwound. Without a callback,
+// or with one for any thread, the job simply runs here. (This thread is not woken by the job's
+// reports: on two cores a third busy thread beside the job's two stalled a 4k-vertex map.)
 void run_reporting(const Progress &progress, const std::function<void(const Progress &relay)> &job);
 
 } // namespace meromorph
