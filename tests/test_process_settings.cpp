@@ -1,6 +1,7 @@
 // The settings a job runs with: the heap reservation's estimate (common/process_memory.h), the
 // BLAS threads of small and large jobs (common/blas_threads.h) and the OpenMP teams of a
 // factorization (common/factorization_threads.h), read back from OpenBLAS and libgomp themselves.
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -47,6 +48,14 @@ TEST(ProcessSettings, HeapReservationIsAHundredTimesTheLargestInputWithinBounds)
   // Never more than half the machine's memory.
   EXPECT_EQ(heap_bytes_for_files({}, size_t(1) << 50), half_the_memory());
   std::filesystem::remove(file);
+}
+
+// The job's arrays start at a 2 MiB boundary, where transparent huge pages can back them whole.
+TEST(ProcessSettings, TheReservedHeapStartsAtAHugePageBoundary) {
+  tune_process_memory(64 * mebibyte);
+  const std::vector<char> array(16 * mebibyte, 1);
+  const uintptr_t offset = reinterpret_cast<uintptr_t>(array.data()) % (2 * mebibyte);
+  EXPECT_LT(offset, 64 * 1024u) << "(gtest's own small allocations may come first)";
 }
 
 // OpenBLAS's thread setting, from the BLAS that CHOLMOD loaded (Debian's libblas.so.3 is

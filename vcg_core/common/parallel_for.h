@@ -18,8 +18,10 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <exception>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -53,13 +55,22 @@ void parallel_for(std::size_t count, const Body &body, std::size_t threshold = p
 template <class Work> void while_threads_start(const Work &work) {
 #if defined(_OPENMP)
   std::exception_ptr error;
+  std::atomic<int> arrived{1};
 #pragma omp parallel
   {
-    if (omp_get_thread_num() == 0) try {
+    if (omp_get_thread_num() == 0) {
+      try {
         work();
       } catch (...) {
         error = std::current_exception();
       }
+      // A new thread waits on its maker's core until that core gives way (or the next tick):
+      // OpenMP's own wait spins without giving way.
+      while (arrived.load() < omp_get_num_threads())
+        std::this_thread::yield();
+    } else {
+      ++arrived;
+    }
   }
   if (error) std::rethrow_exception(error);
 #else
