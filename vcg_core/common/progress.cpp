@@ -8,6 +8,7 @@
 #include <mutex>
 
 #include "common/errors.h"
+#include "common/parallel_for.h"
 
 namespace meromorph {
 
@@ -48,6 +49,9 @@ void run_reporting(const Progress &progress,
   });
   std::future<void> done = std::async(std::launch::async, [&] {
     try {
+      // This new thread's OpenMP team started at once, giving way to its threads (their first
+      // parallel loop waited up to 12 ms for them otherwise: common/parallel_for.h).
+      while_threads_start([] {});
       job(relayed);
     } catch (...) {
       const std::lock_guard<std::mutex> lock(relay.mutex);
