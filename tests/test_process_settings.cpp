@@ -50,6 +50,7 @@ TEST(ProcessSettings, HeapReservationIsAHundredTimesTheLargestInputWithinBounds)
   std::filesystem::remove(file);
 }
 
+#if defined(MEROMORPH_GLIBC_MALLOC) // (tests/CMakeLists.txt: not under AddressSanitizer)
 // The job's arrays start at a 2 MiB boundary, where transparent huge pages can back them whole.
 TEST(ProcessSettings, TheReservedHeapStartsAtAHugePageBoundary) {
   tune_process_memory(64 * mebibyte);
@@ -57,6 +58,7 @@ TEST(ProcessSettings, TheReservedHeapStartsAtAHugePageBoundary) {
   const uintptr_t offset = reinterpret_cast<uintptr_t>(array.data()) % (2 * mebibyte);
   EXPECT_LT(offset, 64 * 1024u) << "(gtest's own small allocations may come first)";
 }
+#endif
 
 // OpenBLAS's thread setting, from the BLAS that CHOLMOD loaded (Debian's libblas.so.3 is
 // OpenBLAS where setup.sh installed it, as on CI).
