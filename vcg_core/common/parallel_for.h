@@ -49,9 +49,10 @@ void parallel_for(std::size_t count, const Body &body, std::size_t threshold = p
 #endif
 }
 
-// On the two-core machines a process's first thread besides its own starts 0.1 to 8 ms after it
-// is made (the idle core has to be woken): a first parallel loop waited that long for it. Made
-// while a serial step runs (reading the input), it is there when the loops need it.
+// On the two-core machines a new thread starts on the core of the thread that made it and waits
+// there until that core gives way or the next scheduler tick: a process's first parallel loop
+// waited 0.1 to 12 ms for its second thread. Made while a serial step runs (reading the input),
+// its maker giving way at the end, it is there when the loops need it.
 template <class Work> void while_threads_start(const Work &work) {
 #if defined(_OPENMP)
   std::exception_ptr error;

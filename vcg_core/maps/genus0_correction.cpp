@@ -183,7 +183,7 @@ Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
     std::vector<PlaneValue> candidate = out.values;
     for (size_t v = 0; v < n; ++v) {
       if (is_pinned[v]) continue;
-      if (std::abs(zeta[long(v)]) == 0)
+      if (zeta[long(v)] == Complex(0, 0)) // (as std::abs == 0, without hypot)
         candidate[v] = {Complex(0, 0), true};
       else
         candidate[v] = {south + 1.0 / zeta[long(v)], false};
