@@ -3,7 +3,7 @@
 // parts, taking out zero-area faces, the Laplacian solver, harmonic and conjugate forms, local
 // coefficients, periods, the one-ring order, Floater's embedding, fold untangling, generic form
 // pairs, the ratio map and the pair search, genus 1's flat corners and areas, parts and the
-// texture grid, map quality, sheets and texture coordinates.
+// texture grid, map quality, sheets and texture coordinates; the clusters' preconditioner.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -18,7 +18,10 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCholesky>
 
+#include "forms/cluster_jacobi.h"
 #include "forms/harmonic_forms.h"
 #include "forms/holomorphic_forms.h"
 #include "forms/holomorphic_pipeline.h"
@@ -325,6 +328,111 @@ TEST(LaplacianSolver, BothFactorizationsSolveThePinnedSystem) {
   for (int v = 0; v < n; ++v)
     if (std::find(pinned.begin(), pinned.end(), v) == pinned.end())
       EXPECT_NEAR(free[v], with_boundary[v], 1e-8) << v;
+}
+
+// A Hermitian positive definite system on a grid of side `side`: unit couplings rotated by a
+// phase to each right and upper neighbour, `stiff` between every third unknown and the next one
+// (a needle's short side), a diagonal that dominates: its unit couplings are below
+// cluster_coupling.
+Eigen::SparseMatrix<Complex> grid_system(int side, double stiff) {
+  const int n = side * side;
+  std::vector<Eigen::Triplet<Complex>> entries;
+  Eigen::VectorXd diagonal = Eigen::VectorXd::Constant(n, 5.0); // unit couplings below 0.15
+  auto couple = [&](int i, int j, double weight, double phase) {
+    const Complex value = -weight * std::polar(1.0, phase);
+    entries.emplace_back(i, j, value);
+    entries.emplace_back(j, i, std::conj(value));
+    diagonal[i] += weight;
+    diagonal[j] += weight;
+  };
+  for (int y = 0; y < side; ++y)
+    for (int x = 0; x < side; ++x) {
+      const int i = x + side * y;
+      if (x + 1 < side) couple(i, i + 1, x % 3 == 0 ? stiff : 1.0, 0.3);
+      if (y + 1 < side) couple(i, i + side, 1.0, -0.7);
+    }
+  for (int i = 0; i < n; ++i)
+    entries.emplace_back(i, i, diagonal[i]);
+  Eigen::SparseMatrix<Complex> a(n, n);
+  a.setFromTriplets(entries.begin(), entries.end());
+  a.makeCompressed();
+  return a;
+}
+
+CompressedColumns columns_of(const Eigen::SparseMatrix<Complex> &a) {
+  return {int(a.rows()), a.outerIndexPtr(), a.innerIndexPtr(), a.valuePtr()};
+}
+
+// Stiff pairs: the clusters' preconditioner converges in a fraction of Jacobi's steps, to the
+// direct solution; without them the system is not called stiff.
+TEST(ClusterJacobi, StiffPairsConvergeInAFractionOfJacobisSteps) {
+  const Eigen::SparseMatrix<Complex> stiff = grid_system(60, 1e4), plain = grid_system(60, 1.0);
+  EXPECT_TRUE(stiffly_coupled(columns_of(stiff)));
+  EXPECT_FALSE(stiffly_coupled(columns_of(plain)));
+  Eigen::VectorXcd right(stiff.rows());
+  for (long i = 0; i < right.size(); ++i)
+    right[i] = Complex(std::sin(0.1 * double(i)), std::cos(0.37 * double(i)));
+  const Eigen::SimplicialLLT<Eigen::SparseMatrix<Complex>> direct(stiff);
+  ASSERT_EQ(direct.info(), Eigen::Success);
+  const Eigen::VectorXcd expected = direct.solve(right);
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<Complex>, Eigen::Lower | Eigen::Upper> jacobi;
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<Complex>, Eigen::Lower | Eigen::Upper, ClusterJacobi>
+      clustered;
+  jacobi.setTolerance(1e-10);
+  clustered.setTolerance(1e-10);
+  jacobi.compute(stiff);
+  clustered.compute(stiff);
+  const Eigen::VectorXcd by_jacobi = jacobi.solve(right), by_clusters = clustered.solve(right);
+  ASSERT_EQ(jacobi.info(), Eigen::Success);
+  ASSERT_EQ(clustered.info(), Eigen::Success);
+  EXPECT_LT((by_clusters - expected).norm(), 1e-8 * expected.norm());
+  EXPECT_LT((by_jacobi - expected).norm(), 1e-8 * expected.norm());
+  EXPECT_LT(clustered.iterations() * 4, jacobi.iterations())
+      << clustered.iterations() << " against " << jacobi.iterations();
+  // Every third unknown and its right neighbour: 1200 pairs and 1200 alone.
+  EXPECT_EQ(clustered.preconditioner().cluster_count(), 2400);
+}
+
+// A matrix made of stiff clusters alone is its own preconditioner: one step solves it. Clusters
+// hold at most cluster_size unknowns (a chain of 20 comes in three).
+TEST(ClusterJacobi, ClustersOfAtMostEightAndABlockMatrixInOneStep) {
+  std::vector<Eigen::Triplet<Complex>> entries;
+  int n = 0;
+  for (int size : {2, 3, 5, 8, 1, 4}) {
+    for (int k = 0; k + 1 < size; ++k) {
+      entries.emplace_back(n + k, n + k + 1, Complex(-100, 3));
+      entries.emplace_back(n + k + 1, n + k, Complex(-100, -3));
+    }
+    for (int k = 0; k < size; ++k)
+      entries.emplace_back(n + k, n + k, 201.0 + k);
+    n += size;
+  }
+  Eigen::SparseMatrix<Complex> blocks(n, n);
+  blocks.setFromTriplets(entries.begin(), entries.end());
+  blocks.makeCompressed();
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<Complex>, Eigen::Lower | Eigen::Upper, ClusterJacobi>
+      clustered;
+  clustered.setTolerance(1e-12);
+  clustered.compute(blocks);
+  EXPECT_EQ(clustered.preconditioner().cluster_count(), 6);
+  const Eigen::VectorXcd right = Eigen::VectorXcd::LinSpaced(n, Complex(1, 2), Complex(-3, 1));
+  const Eigen::VectorXcd solved = clustered.solve(right);
+  EXPECT_LE(clustered.iterations(), 1);
+  EXPECT_LT((blocks * solved - right).norm(), 1e-10 * right.norm());
+  std::vector<Eigen::Triplet<Complex>> links;
+  for (int k = 0; k < 20; ++k) {
+    links.emplace_back(k, k, 300.0);
+    if (k + 1 < 20) {
+      links.emplace_back(k, k + 1, -100.0);
+      links.emplace_back(k + 1, k, -100.0);
+    }
+  }
+  Eigen::SparseMatrix<Complex> long_chain(20, 20);
+  long_chain.setFromTriplets(links.begin(), links.end());
+  long_chain.makeCompressed();
+  ClusterJacobi chained;
+  chained.compute(long_chain);
+  EXPECT_EQ(chained.cluster_count(), 3); // 8, 8 and 4, joined along the chain
 }
 
 // The elimination order of one factorization handed to the next on a subset (as the genus-0

@@ -12,6 +12,7 @@
 
 #include "common/factorization_threads.h"
 #include "common/parallel_for.h"
+#include "forms/cluster_jacobi.h"
 #include "forms/holomorphic_forms.h"
 #include "mesh/face_vectors.h"
 #include "mesh/mesh_edges.h"
@@ -152,10 +153,29 @@ std::optional<Eigen::SparseMatrix<Complex>> hermitian_matrix(const MeshEdges &ed
   return hermitian;
 }
 
+// Conjugate gradients on H x = r from `start`, preconditioned by `Preconditioner`; empty where they
+// do not converge within iterative_steps.
+template <class Preconditioner>
+std::optional<Eigen::VectorXcd> conjugate_gradients(const Eigen::SparseMatrix<Complex> &hermitian,
+                                                    const Eigen::VectorXcd &right,
+                                                    const Eigen::VectorXcd &start) {
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<Complex>, Eigen::Lower | Eigen::Upper,
+                           Preconditioner>
+      iterated;
+  iterated.setTolerance(iterative_tolerance);
+  iterated.setMaxIterations(iterative_steps);
+  iterated.compute(hermitian);
+  Eigen::VectorXcd solution = iterated.solveWithGuess(right, start);
+  if (iterated.info() == Eigen::Success && solution.allFinite()) return solution;
+  return std::nullopt;
+}
+
 // The Hermitian positive definite system H x = r. Its data term makes it a screened problem
 // whose condition does not grow with the mesh: conjugate gradients from `start` (the chart's
 // first guess) converge in a number of steps independent of its size, each a product with H.
-// Where they do not converge (needles make H stiff), CHOLMOD factors it (supernodal, complex:
+// Needles and the close vertices of raw marching cubes couple pairs of unknowns stiffly: then
+// the steps are preconditioned over clusters of them (forms/cluster_jacobi.h), else by the
+// diagonal. Where they do not converge, CHOLMOD factors it (supernodal, complex:
 // it reads the lower triangle). Empty when it cannot be solved.
 std::optional<Eigen::VectorXcd> solve_hermitian(const MeshEdges &edges, ChartSystem &system,
                                                 const Eigen::VectorXcd &start) {
@@ -168,15 +188,14 @@ std::optional<Eigen::VectorXcd> solve_hermitian(const MeshEdges &edges, ChartSys
   system.diagonal = {};
   system.along_edge = {};
   const Eigen::SparseMatrix<Complex> &hermitian = *matrix;
-  {
-    Eigen::ConjugateGradient<Eigen::SparseMatrix<Complex>, Eigen::Lower | Eigen::Upper> iterated;
-    iterated.setTolerance(iterative_tolerance);
-    iterated.setMaxIterations(iterative_steps);
-    iterated.compute(hermitian);
-    Eigen::VectorXcd solution = iterated.solveWithGuess(
-        system.right, start.allFinite() ? start : Eigen::VectorXcd::Zero(n));
-    if (iterated.info() == Eigen::Success && solution.allFinite()) return solution;
-  }
+  const Eigen::VectorXcd guess = start.allFinite() ? start : Eigen::VectorXcd::Zero(n);
+  std::optional<Eigen::VectorXcd> iterated =
+      stiffly_coupled(
+          {n, hermitian.outerIndexPtr(), hermitian.innerIndexPtr(), hermitian.valuePtr()})
+          ? conjugate_gradients<ClusterJacobi>(hermitian, system.right, guess)
+          : conjugate_gradients<Eigen::DiagonalPreconditioner<Complex>>(hermitian, system.right,
+                                                                        guess);
+  if (iterated) return iterated;
   const FactorizationThreads threads(hermitian.rows()); // common/factorization_threads.h
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<Complex>, Eigen::Lower> factored(hermitian);
   if (factored.info() != Eigen::Success) return std::nullopt;
