@@ -78,12 +78,21 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
     }
     std::rotate(pairs.begin(), pairs.begin() + long(least_at), pairs.begin() + long(least_at) + 1);
   }
-  std::optional<Attempt> best;
-  for (size_t attempt = 0; attempt < pairs.size(); ++attempt) {
-    progress.report(0.6 + 0.1 * double(attempt) / double(pairs.size()), "meromorphic function");
-    const auto [numerator, denominator] = forms_of(pairs[attempt]);
+  // A pair's map solved and centred: its crowding is judged before any snapping (snapping moves
+  // a few values around critical points: on the test and bench meshes the crowded faces were the
+  // same before and after, or two apart).
+  auto solve = [&](size_t k) {
+    progress.report(0.6 + 0.1 * double(k) / double(pairs.size()), "meromorphic function");
+    const auto [numerator, denominator] = forms_of(pairs[k]);
     Attempt result{false, 0, form_ratio_map(prepared, numerator, denominator), {}, 0, {}};
     if (mobius) result.centring = center_on_sphere(result.values, areas);
+    result.crowded = crowded_faces(prepared.incidence, to_sphere(result.values));
+    out.attempts = int(k) + 1;
+    return result;
+  };
+  // Its critical points snapped, its branching measured, the ranking's figures.
+  auto finish = [&](size_t k, Attempt &result) {
+    const auto [numerator, denominator] = forms_of(pairs[k]);
     for (int pass = 0; pass < 4; ++pass) {
       const int repaired = snap_branch_points(prepared, {&numerator, &denominator}, result.values);
       result.snapped += repaired;
@@ -95,18 +104,51 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
     result.generic = measured.riemann_hurwitz_ok && measured.degree == 2 * forms.genus - 2;
     result.deficit = std::abs(euler - (2 * measured.degree - measured.ramification));
     result.crowded = crowded_faces(prepared.incidence, sphere);
+  };
+  std::optional<Attempt> best;
+  auto offer = [&](size_t k, Attempt &&result) {
     auto rank = [](const Attempt &a) { return std::make_tuple(!a.generic, a.deficit, a.crowded); };
     if (!best || rank(result) < rank(*best)) {
       best = std::move(result);
-      out.coefficients = pairs[attempt];
+      out.coefficients = pairs[k];
     }
-    out.attempts = int(attempt) + 1;
-    // Where a zero and a pole of the ratio fall within a face or two, a face's image spans a
-    // good part of the sphere (and its texture with it); another generic pair puts them
-    // elsewhere. For genus 2 every generic pair gives the same map up to a Moebius
-    // transformation: no other pair helps there. Three pairs at most for that: on surfaces
-    // whose handles crowd everywhere, every pair does.
-    if (best->generic && (best->crowded == 0 || forms.genus == 2 || attempt >= 2)) break;
+  };
+  // Where a zero and a pole of the ratio fall within a face or two, a face's image spans a good
+  // part of the sphere (and its texture with it); another generic pair puts them elsewhere. For
+  // genus 2 every generic pair gives the same map up to a Moebius transformation: no other pair
+  // helps there. Genus 3 and up: up to three pairs are solved (on surfaces whose handles crowd
+  // everywhere, every pair does), the first that does not crowd finished at once; then they are
+  // finished from the least crowded on, and the first generic one is kept (only it is snapped
+  // where it is the least crowded).
+  const size_t first_round = std::min<size_t>(pairs.size(), forms.genus == 2 ? 1 : 3);
+  std::vector<std::pair<size_t, Attempt>> solved;
+  for (size_t k = 0; k < first_round; ++k) {
+    Attempt result = solve(k);
+    if (result.crowded == 0) {
+      finish(k, result);
+      if (result.generic) {
+        offer(k, std::move(result));
+        solved.clear();
+        break;
+      }
+      offer(k, std::move(result));
+      continue;
+    }
+    solved.emplace_back(k, std::move(result));
+  }
+  std::stable_sort(solved.begin(), solved.end(), [](const auto &a, const auto &b) {
+    return a.second.crowded < b.second.crowded;
+  });
+  for (auto &[k, result] : solved) {
+    if (best && best->generic) break;
+    finish(k, result);
+    offer(k, std::move(result));
+  }
+  // None generic: the next pairs one at a time, until one is.
+  for (size_t k = first_round; k < pairs.size() && !(best && best->generic); ++k) {
+    Attempt result = solve(k);
+    finish(k, result);
+    offer(k, std::move(result));
   }
   out.values = std::move(best->values);
   out.centring = best->centring;

@@ -4,14 +4,16 @@
 //      the pair asked for (-1, -1: the fixed list of generic pairs, form_pairs.h), whether to
 //      centre, the surface area per vertex (the centring's weights), progress.
 // Out: for each pair, f = (omega1 + omega2) / (omega1 - omega2) per vertex (form_ratio_map.h),
-//      centred, its critical points snapped onto vertices (branch_snapping.h, up to four passes),
-//      ranked by whether it is generic (degree 2g - 2 and Riemann-Hurwitz), its Riemann-Hurwitz
-//      deficit and its crowded faces (an image chord above 1); the best is kept, with its
-//      branching as measured for the ranking. The next pair is
-//      tried only where the best is not generic, or crowds (not for genus 2, where every generic
-//      pair gives the same map up to a Moebius transformation; three pairs at most for that).
-//      For genus 3 and up, where the first pair's guessed map crowds (form_ratio_map.h's
-//      guessed_crowding, before any solve), the pair whose guess crowds least goes first.
+//      centred and its crowded faces counted (an image chord above 1); then its critical points
+//      snapped onto vertices (branch_snapping.h, up to four passes) and ranked by whether it is
+//      generic (degree 2g - 2 and Riemann-Hurwitz), its Riemann-Hurwitz deficit and its crowded
+//      faces; the best is kept, with its branching as measured for the ranking. Genus 2: the
+//      next pair only where the best is not generic (every generic pair gives the same map up to
+//      a Moebius transformation). Genus 3 and up: up to three pairs solved (the first whose map
+//      does not crowd snapped and kept at once if generic), then snapped from the least crowded
+//      until one is generic; further pairs one at a time while none is. Where the first pair's
+//      guessed map crowds (form_ratio_map.h's guessed_crowding, before any solve), the pair
+//      whose guess crowds least goes first.
 //      Throws ArgumentError for a pair that is not two different form indices.
 #pragma once
 
