@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 
 #include <Eigen/Dense>
 
@@ -51,18 +52,23 @@ ConjugateFit conjugate_fit(long n, size_t face_count, const FaceGeometry &geomet
 }
 
 // Face f's two basis vectors (face_vector_basis) in the face's frame: a complex form's face vector
-// is u1 first + u2 second with u1, u2 its values along the face's first two sides.
+// is u1 first + u2 second with u1, u2 its values along the face's first two sides. In the frame
+// (e1 along side u = p1 - p0, e2 = n x e1), with d = p2 - p0, L = |u| and A the area,
+// first = n x (p0 - p2) / 2A = (1 / L, -u.d / (2A L)) and second = n x u / 2A = (0, L / 2A):
+// the sides' lengths and one dot product, no normal or frame (those were most of the time of
+// the ratio's per-face samples). NaN where the face has no area, as the vectors were.
 struct BasisInFrame {
   double first_x, second_x, first_y, second_y;
 };
 
-template <class Faces>
-BasisInFrame basis_in_frame(const Faces &faces, const FaceGeometry &geometry, size_t f) {
-  const FaceVectorBasis basis = face_vector_basis(faces, geometry, f);
-  const FaceFrame frame = geometry.frame(f);
-  const Eigen::Vector3d &e1 = frame.first_axis;
-  const Eigen::Vector3d e2 = frame.normal.cross(e1);
-  return {basis.first.dot(e1), basis.second.dot(e1), basis.first.dot(e2), basis.second.dot(e2)};
+BasisInFrame basis_in_frame(const FaceGeometry &geometry, size_t f) {
+  const auto [u, d] = geometry.sides(f);
+  const double length = u.norm(), twice_area = 2.0 * geometry.areas[f];
+  if (!(length > 0) || !(twice_area > 0)) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    return {nan, nan, nan, nan};
+  }
+  return {1.0 / length, 0.0, -u.dot(d) / (twice_area * length), length / twice_area};
 }
 
 // (cx, cy): the complex form's face vector on face f in the face's frame.
@@ -74,18 +80,17 @@ std::array<std::complex<double>, 2> in_frame(const BasisInFrame &basis, const Me
   return {u1 * basis.first_x + u2 * basis.second_x, u1 * basis.first_y + u2 * basis.second_y};
 }
 
-// f dz + g dzbar on each face of `faces` (a Mesh or FaceCorners) for a complex form: with c the
-// complex face vector and (cx, cy) its components in the face's frame, f = (cx - i cy) / 2 and
+// f dz + g dzbar on each face of `geometry`'s faces for a complex form: with c the complex face
+// vector and (cx, cy) its components in the face's frame, f = (cx - i cy) / 2 and
 // g = (cx + i cy) / 2.
-template <class Faces>
-LocalCoefficients coefficients_of(const Faces &faces, size_t face_count, const MeshEdges &edges,
+LocalCoefficients coefficients_of(size_t face_count, const MeshEdges &edges,
                                   const FaceGeometry &geometry, const Eigen::VectorXcd &form) {
   LocalCoefficients local;
   local.f.resize(face_count);
   local.g.resize(face_count);
   const std::complex<double> i(0, 1);
   parallel_for(face_count, [&](size_t f) {
-    const auto [cx, cy] = in_frame(basis_in_frame(faces, geometry, f), edges, f, form);
+    const auto [cx, cy] = in_frame(basis_in_frame(geometry, f), edges, f, form);
     local.f[f] = (cx - i * cy) / 2.0;
     local.g[f] = (cx + i * cy) / 2.0;
   });
@@ -152,12 +157,12 @@ LocalCoefficients local_coefficients(const FaceGeometry &geometry,
 
 LocalCoefficients local_coefficients(const Mesh &mesh, const MeshEdges &edges,
                                      const FaceGeometry &geometry, const Eigen::VectorXcd &form) {
-  return coefficients_of(mesh, mesh.face.size(), edges, geometry, form);
+  return coefficients_of(mesh.face.size(), edges, geometry, form);
 }
 
 LocalCoefficients local_coefficients(const FaceCorners &faces, const MeshEdges &edges,
                                      const FaceGeometry &geometry, const Eigen::VectorXcd &form) {
-  return coefficients_of(faces, faces.size(), edges, geometry, form);
+  return coefficients_of(faces.size(), edges, geometry, form);
 }
 
 std::array<std::vector<std::complex<double>>, 2>
@@ -168,7 +173,7 @@ dz_coefficients(const Mesh &mesh, const MeshEdges &edges, const FaceGeometry &ge
       std::vector<std::complex<double>>(face_count), std::vector<std::complex<double>>(face_count)};
   const std::complex<double> i(0, 1);
   parallel_for(face_count, [&](size_t f) {
-    const BasisInFrame basis = basis_in_frame(mesh, geometry, f);
+    const BasisInFrame basis = basis_in_frame(geometry, f);
     const auto [x1, y1] = in_frame(basis, edges, f, first);
     const auto [x2, y2] = in_frame(basis, edges, f, second);
     out[0][f] = (x1 - i * y1) / 2.0;

@@ -81,6 +81,11 @@ Eigen::Vector3d FaceGeometry::normal(size_t f) const {
   return (corner(f, 1) - p0).cross(corner(f, 2) - p0).normalized();
 }
 
+std::array<Eigen::Vector3d, 2> FaceGeometry::sides(size_t f) const {
+  const Eigen::Vector3d p0 = corner(f, 0);
+  return {corner(f, 1) - p0, corner(f, 2) - p0};
+}
+
 FaceFrame FaceGeometry::frame(size_t f) const {
   const Eigen::Vector3d p0 = corner(f, 0), p1 = corner(f, 1);
   return {(p1 - p0).cross(corner(f, 2) - p0).normalized(), (p1 - p0).normalized()};

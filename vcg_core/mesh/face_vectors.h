@@ -36,6 +36,8 @@ public:
 
   FaceFrame frame(size_t f) const;
   Eigen::Vector3d normal(size_t f) const;
+  // The sides from corner 0 to corners 1 and 2.
+  std::array<Eigen::Vector3d, 2> sides(size_t f) const;
 
 private:
   friend FaceGeometry face_geometry(const Mesh &mesh);
