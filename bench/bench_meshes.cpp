@@ -1,8 +1,8 @@
 // Benchmark on meshes like users': the shared meshes of genus 0, 1 and 2 (maxplanck, kitten,
-// eight) and a generated genus-5 surface (no shared mesh has genus 5), each subdivided flat (every
-// face into four, the same surface) three times, the largest nearest 1M vertices (so about
-// 50k, 200k and 800k: each step multiplies by four). Per
-// mesh, each job in a process of its own (so its peak memory is its own):
+// eight) and generated genus-5 and genus-10 surfaces (no shared mesh has those), each subdivided
+// flat (every face into four, the same surface) three times, the largest nearest 1M vertices (so
+// about 50k, 200k and 800k: each step multiplies by four). Per mesh, each job in a process of its
+// own (so its peak memory is its own):
 // - the floor: reading the file, the cotangent Laplacian, one CHOLMOD factorization (supernodal,
 //   CHOLMOD's default ordering) and 2g solves (two for genus 0, the map's two coordinates);
 // - the main job as `meromorph param` runs it: reading the file and `parameterize_surface`, with
@@ -316,6 +316,7 @@ int main(int argc, char **argv) {
       {"kitten", 1, [&](Mesh &m) { read_mesh(shared + "/kitten.nv40k.off", m); }},
       {"eight", 2, [&](Mesh &m) { read_mesh(shared + "/eight.off", m); }},
       {"genus 5 (generated)", 5, [](Mesh &m) { make_genus_surface(m, 5, 24); }},
+      {"genus 10 (generated)", 10, [](Mesh &m) { make_genus_surface(m, 10, 24); }},
   };
   const std::string path = (std::filesystem::temp_directory_path() /
                             ("meromorph-bench-" + std::to_string(getpid()) + ".ply"))
