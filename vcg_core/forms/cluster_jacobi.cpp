@@ -40,14 +40,14 @@ void ClusterJacobi::build(const CompressedColumns &a) {
   const int n = a.size;
   const std::vector<double> diagonal = diagonal_of(a);
   // The couplings above cluster_coupling, strongest first (ties by position: the same clusters
-  // on every run).
+  // on every run; a coupling stored in both triangles comes twice, side by side).
   std::vector<std::tuple<double, int, int>> strong;
   for (int j = 0; j < n; ++j)
     for (int k = a.outer[j]; k < a.outer[j + 1]; ++k) {
       const int i = a.inner[k];
-      if (i <= j) continue; // each coupling once, from the lower triangle
+      if (i == j) continue;
       const double c = coupling(diagonal, i, j, a.values[k]);
-      if (c > cluster_coupling) strong.emplace_back(-c, j, i);
+      if (c > cluster_coupling) strong.emplace_back(-c, std::min(i, j), std::max(i, j));
     }
   std::sort(strong.begin(), strong.end());
   // Clusters by union-find, none above cluster_size.
@@ -91,11 +91,12 @@ void ClusterJacobi::build(const CompressedColumns &a) {
   for (int j = 0; j < n; ++j) {
     const int c = cluster_of[size_t(j)];
     const int m = cluster_start_[size_t(c) + 1] - cluster_start_[size_t(c)];
+    Scalar *block = &inverses_[block_start_[size_t(c)]];
     for (int k = a.outer[j]; k < a.outer[j + 1]; ++k) {
       const int i = a.inner[k];
-      if (cluster_of[size_t(i)] == c)
-        inverses_[block_start_[size_t(c)] + size_t(place[size_t(i)] + m * place[size_t(j)])] =
-            a.values[k];
+      if (cluster_of[size_t(i)] != c) continue;
+      block[place[size_t(i)] + m * place[size_t(j)]] = a.values[k];
+      if (i != j) block[place[size_t(j)] + m * place[size_t(i)]] = std::conj(a.values[k]);
     }
   }
   for (int c = 0; c < clusters; ++c) {

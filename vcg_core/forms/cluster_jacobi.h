@@ -4,7 +4,7 @@
 // system stiff (706 steps on a raw marching-cubes genus-10 chart against 7 on a remeshed one);
 // the clusters' own blocks take the stiffness out (17 steps).
 //
-// In:  the system's matrix A (both triangles, compressed, column-major).
+// In:  the system's matrix A: its lower triangle or both (compressed, column-major).
 // Out: z = B^-1 r, with B block diagonal: one block per cluster of unknowns joined by couplings
 //      |a_ij| > cluster_coupling * sqrt(a_ii a_jj), the strongest first, at most cluster_size
 //      unknowns a cluster; each block is A's own principal submatrix (positive definite as A

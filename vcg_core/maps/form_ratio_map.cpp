@@ -122,10 +122,11 @@ ChartSystem chart_system(const Mesh &mesh, const MeshEdges &edges, const FaceInc
   return system;
 }
 
-// The matrix of `system` (both triangles), written in place: each column's room counted first (its
-// diagonal and one entry per edge of the system at its unknown), no list of entries and no
-// transposed copy (at 2.7M vertices those were 0.4 GB of the peak, both charts together); empty
-// when an entry is not finite.
+// The lower triangle of `system`'s matrix (all that conjugate gradients and CHOLMOD read of a
+// Hermitian matrix), written in place: each column's room counted first (its diagonal and one
+// entry per edge of the system whose other end has a larger unknown), no list of entries and no
+// transposed copy (at 2.7M vertices those were 0.4 GB of the peak, both charts together; both
+// triangles another 0.2 GB); empty when an entry is not finite.
 std::optional<Eigen::SparseMatrix<Complex>> hermitian_matrix(const MeshEdges &edges,
                                                              const ChartSystem &system) {
   auto finite = [](Complex z) { return std::isfinite(z.real()) && std::isfinite(z.imag()); };
@@ -133,35 +134,36 @@ std::optional<Eigen::SparseMatrix<Complex>> hermitian_matrix(const MeshEdges &ed
   for (size_t e = 0; e < system.along_edge.size(); ++e) {
     if (!system.edge_in_system[e]) continue;
     if (!finite(system.along_edge[e])) return std::nullopt;
-    ++per_column[system.id[size_t(edges.vertices[e][0])]];
-    ++per_column[system.id[size_t(edges.vertices[e][1])]];
+    ++per_column[std::min(system.id[size_t(edges.vertices[e][0])],
+                          system.id[size_t(edges.vertices[e][1])])];
   }
-  Eigen::SparseMatrix<Complex> hermitian(system.unknowns, system.unknowns);
-  hermitian.reserve(per_column);
+  Eigen::SparseMatrix<Complex> lower(system.unknowns, system.unknowns);
+  lower.reserve(per_column);
   for (size_t i = 0; i < system.diagonal.size(); ++i) {
     if (!finite(system.diagonal[i])) return std::nullopt;
-    hermitian.insert(int(i), int(i)) = system.diagonal[i];
+    lower.insert(int(i), int(i)) = system.diagonal[i];
   }
   for (size_t e = 0; e < system.along_edge.size(); ++e) {
     if (!system.edge_in_system[e]) continue;
     const int from = system.id[size_t(edges.vertices[e][0])];
     const int to = system.id[size_t(edges.vertices[e][1])];
-    hermitian.insert(from, to) = system.along_edge[e];
-    hermitian.insert(to, from) = std::conj(system.along_edge[e]);
+    // H(from, to) is the edge's entry, H(to, from) its conjugate.
+    if (from > to)
+      lower.insert(from, to) = system.along_edge[e];
+    else
+      lower.insert(to, from) = std::conj(system.along_edge[e]);
   }
-  hermitian.makeCompressed();
-  return hermitian;
+  lower.makeCompressed();
+  return lower;
 }
 
-// Conjugate gradients on H x = r from `start`, preconditioned by `Preconditioner`; empty where they
-// do not converge within iterative_steps.
+// Conjugate gradients on H x = r (`hermitian`: H's lower triangle) from `start`, preconditioned by
+// `Preconditioner`; empty where they do not converge within iterative_steps.
 template <class Preconditioner>
 std::optional<Eigen::VectorXcd> conjugate_gradients(const Eigen::SparseMatrix<Complex> &hermitian,
                                                     const Eigen::VectorXcd &right,
                                                     const Eigen::VectorXcd &start) {
-  Eigen::ConjugateGradient<Eigen::SparseMatrix<Complex>, Eigen::Lower | Eigen::Upper,
-                           Preconditioner>
-      iterated;
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<Complex>, Eigen::Lower, Preconditioner> iterated;
   iterated.setTolerance(iterative_tolerance);
   iterated.setMaxIterations(iterative_steps);
   iterated.compute(hermitian);
@@ -175,8 +177,8 @@ std::optional<Eigen::VectorXcd> conjugate_gradients(const Eigen::SparseMatrix<Co
 // first guess) converge in a number of steps independent of its size, each a product with H.
 // Needles and the close vertices of raw marching cubes couple pairs of unknowns stiffly: then
 // the steps are preconditioned over clusters of them (forms/cluster_jacobi.h), else by the
-// diagonal. Where they do not converge, CHOLMOD factors it (supernodal, complex:
-// it reads the lower triangle). Empty when it cannot be solved.
+// diagonal. Where they do not converge, CHOLMOD factors it (supernodal, complex). H is held as
+// its lower triangle. Empty when it cannot be solved.
 std::optional<Eigen::VectorXcd> solve_hermitian(const MeshEdges &edges, ChartSystem &system,
                                                 const Eigen::VectorXcd &start) {
   const int n = system.unknowns;
