@@ -1,9 +1,12 @@
 // Direct tests of the map's stages, each on its own (the end-to-end tests are elsewhere): the
 // prepared mesh, boundary chaining, genus 1's origin candidates and retries, the zero-area
 // images, the validity reasons and how param handles each finding.
+#include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
 #include <set>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
@@ -67,10 +70,58 @@ TEST(BoundaryChains, LoopsOfAFaceSetAndWhereHolesTouch) {
   const BoundaryLoops bowtie = chain_boundary({{0, 1, 2}, {0, 3, 4}});
   EXPECT_TRUE(bowtie.loops.empty());
   EXPECT_EQ(bowtie.pinched_vertex, 0);
+  // A strip closed into a ring (an annulus of 8 triangles): two loops, each in walking order.
+  std::vector<std::array<int, 3>> annulus;
+  for (int k = 0; k < 4; ++k) {
+    const int a = k, b = (k + 1) % 4, c = 4 + k, d = 4 + (k + 1) % 4;
+    annulus.push_back({a, b, d});
+    annulus.push_back({a, d, c});
+  }
+  const BoundaryLoops two = chain_boundary(annulus);
+  ASSERT_EQ(two.loops.size(), 2u);
+  EXPECT_EQ(two.loops[0], (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_EQ(two.loops[1], (std::vector<int>{4, 7, 6, 5}));
   // A closed surface has none.
   Mesh mesh;
   make_icosphere(mesh, 1);
   EXPECT_TRUE(chain_boundary(face_incidence(mesh).corners).loops.empty());
+}
+
+// Ring distances against a search of the test's own (a breadth-first search over the faces'
+// corners with a std::map); in the order of the vertices; farther ones absent.
+TEST(RingDistances, BreadthFirstRingsInVertexOrder) {
+  Mesh mesh;
+  make_icosphere(mesh, 2);
+  const FaceIncidence in = face_incidence(mesh);
+  const std::vector<int> sources = {0, 17, 17};
+  std::map<int, int> expected;
+  std::vector<int> frontier;
+  for (int v : sources)
+    if (expected.emplace(v, 0).second) frontier.push_back(v);
+  for (int ring = 1; ring <= 3; ++ring) {
+    std::vector<int> next;
+    for (int v : frontier)
+      for (int f : in.faces_of_vertex[size_t(v)])
+        for (int w : in.corners[size_t(f)])
+          if (expected.emplace(w, ring).second) next.push_back(w);
+    frontier = next;
+  }
+  for (int repeat = 0; repeat < 2; ++repeat) { // (the second search starts from a clean slate)
+    const RingDistances rings = ring_distances(in, sources, 3);
+    ASSERT_EQ(rings.size(), expected.size());
+    auto at = expected.begin();
+    for (const auto &[v, d] : rings) {
+      EXPECT_EQ(v, at->first);
+      EXPECT_EQ(d, at->second);
+      EXPECT_EQ(rings.at(v), d);
+      ++at;
+    }
+    int beyond = 0;
+    while (expected.count(beyond))
+      ++beyond;
+    EXPECT_FALSE(rings.count(beyond));
+    EXPECT_THROW(rings.at(beyond), std::out_of_range);
+  }
 }
 
 TEST(Genus1Origins, CandidatesSitOnTheBodyAndRetriesFindAValidMap) {

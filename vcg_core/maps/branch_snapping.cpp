@@ -20,7 +20,7 @@ namespace {
 // `origin` along edges (path independent there: the form is closed).
 std::map<int, Complex> integrated_coordinate(const MeshEdges &edges, const IndexLists &edges_at,
                                              const Eigen::VectorXcd &form, int origin,
-                                             const std::map<int, int> &region) {
+                                             const RingDistances &region) {
   std::map<int, Complex> z{{origin, Complex()}};
   std::queue<int> queue;
   queue.push(origin);
@@ -119,7 +119,7 @@ struct Spot {
   const FaceIncidence &in;
   std::vector<Eigen::Vector3d> &sphere;
   std::vector<int> vertices;
-  std::map<int, int> region; // ring distance from the spot, out to where the map may change
+  RingDistances region; // ring distance from the spot, out to where the map may change
   std::vector<int> region_faces;
 
   // The faces' shares of the score at the spot's values as found (`region_faces`' order), their
@@ -289,7 +289,7 @@ struct BestChange {
 // the spot is left as it was. `rings_around_v`: the ring distances from v, out to the widest
 // shift.
 void try_branch_vertex(Spot &spot, const CriticalModel &model, const std::map<int, Complex> &z,
-                       Complex p, int v, const std::map<int, int> &rings_around_v, int shift_rings,
+                       Complex p, int v, const RingDistances &rings_around_v, int shift_rings,
                        BestChange &best) {
   const Complex c = model(p);
   const Complex shift = p - z.at(v);
@@ -357,10 +357,12 @@ SpotRepair repair_spot(const PreparedMesh &prepared,
             {},
             {0, 0, 0, 0.0},
             {}};
-  std::set<int> faces;
+  std::vector<int> &faces = spot.region_faces;
   for (const auto &[v, ring] : spot.region)
-    faces.insert(in.faces_of_vertex[size_t(v)].begin(), in.faces_of_vertex[size_t(v)].end());
-  spot.region_faces.assign(faces.begin(), faces.end());
+    faces.insert(faces.end(), in.faces_of_vertex[size_t(v)].begin(),
+                 in.faces_of_vertex[size_t(v)].end());
+  std::sort(faces.begin(), faces.end());
+  faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
   spot.measure_as_found();
   // Everything below reads values at the corners of these faces only (the region is wider than
   // any change or fit).
@@ -396,8 +398,8 @@ SpotRepair repair_spot(const PreparedMesh &prepared,
   // each with the shift fading over 1 to max_shift_rings rings; the fold-free one that distorts
   // angles least wins (farther candidates distort more, so they come second).
   BestChange best{spot.score(-1), {}};
-  std::map<int, std::map<int, int>> rings_of_candidate; // each candidate's, to the widest shift
-  auto rings_around = [&](int v) -> const std::map<int, int> & {
+  std::map<int, RingDistances> rings_of_candidate; // each candidate's, to the widest shift
+  auto rings_around = [&](int v) -> const RingDistances & {
     auto at = rings_of_candidate.find(v);
     if (at == rings_of_candidate.end())
       at = rings_of_candidate.emplace(v, ring_distances(in, {v}, max_shift_rings - 1)).first;

@@ -60,17 +60,19 @@ reembed_around_branch(const Mesh &mesh, const FaceIncidence &in,
                       const std::vector<Eigen::Vector3d> &sphere, int branch, int rings) {
   const std::vector<int> ring = ordered_ring(in, branch);
   if (ring.empty() || rings < 2) return std::nullopt;
-  const std::map<int, int> distance = ring_distances(in, {branch}, rings + 1);
+  const RingDistances distance = ring_distances(in, {branch}, rings + 1);
   const GnomonicChart gnomonic(sphere[size_t(branch)]);
   std::map<int, Eigen::Vector2d> chart;
   for (const auto &[v, d] : distance)
     if (v != branch && !gnomonic.to_chart(sphere[size_t(v)], chart[v])) return std::nullopt;
   // The outer ring in order: the boundary of the faces within `rings` rings, chained.
-  std::set<int> inner_faces;
+  std::vector<int> inner_faces;
   for (const auto &[v, d] : distance)
     if (d <= rings)
-      inner_faces.insert(in.faces_of_vertex[size_t(v)].begin(),
+      inner_faces.insert(inner_faces.end(), in.faces_of_vertex[size_t(v)].begin(),
                          in.faces_of_vertex[size_t(v)].end());
+  std::sort(inner_faces.begin(), inner_faces.end());
+  inner_faces.erase(std::unique(inner_faces.begin(), inner_faces.end()), inner_faces.end());
   std::vector<std::array<int, 3>> triangles;
   for (int f : inner_faces)
     triangles.push_back(in.corners[size_t(f)]);

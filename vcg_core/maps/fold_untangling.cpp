@@ -26,7 +26,7 @@ bool reembed(const Mesh &mesh, const FaceIncidence &incidence, const std::vector
              std::vector<Eigen::Vector3d> &sphere, const std::vector<int> &seeds, int rings,
              const Eigen::Vector3d &centre) {
   const auto &faces_of = incidence.faces_of_vertex;
-  const std::map<int, int> ring_of = ring_distances(incidence, seeds, rings + 1);
+  const RingDistances ring_of = ring_distances(incidence, seeds, rings + 1);
   auto is_free = [&](int v) {
     const auto at = ring_of.find(v);
     return at != ring_of.end() && at->second <= rings && !is_fixed[size_t(v)];

@@ -1,10 +1,8 @@
 #include "mesh/mesh_edges.h"
 
-#include <map>
-#include <set>
-
 #include <algorithm>
-#include <queue>
+#include <climits>
+#include <stdexcept>
 
 #include "common/errors.h"
 
@@ -117,48 +115,80 @@ FaceIncidence face_incidence(const Mesh &mesh) {
   return in;
 }
 
-std::map<int, int> ring_distances(const FaceIncidence &in, const std::vector<int> &sources,
-                                  int radius) {
-  std::map<int, int> distance;
-  std::queue<int> queue;
-  for (int v : sources) {
-    distance[v] = 0;
-    queue.push(v);
-  }
-  while (!queue.empty()) {
-    const int v = queue.front();
-    queue.pop();
-    if (distance[v] >= radius) continue;
-    for (int f : in.faces_of_vertex[v])
-      for (int w : in.corners[f])
-        if (distance.emplace(w, distance[v] + 1).second) queue.push(w);
-  }
-  return distance;
-}
-
 BoundaryLoops chain_boundary(const std::vector<std::array<int, 3>> &triangles) {
-  std::set<std::pair<int, int>> walked;
+  // The half-edges walked, sorted (each once), and the boundary ones (no reverse walked) as
+  // (a, b) sorted on a: at most one per start vertex, else a pinch.
+  std::vector<std::pair<int, int>> walked;
+  walked.reserve(3 * triangles.size());
   for (const auto &t : triangles)
     for (int k = 0; k < 3; ++k)
-      walked.insert({t[size_t(k)], t[size_t((k + 1) % 3)]});
+      walked.push_back({t[size_t(k)], t[size_t((k + 1) % 3)]});
+  std::sort(walked.begin(), walked.end());
+  walked.erase(std::unique(walked.begin(), walked.end()), walked.end());
   BoundaryLoops out;
-  std::map<int, int> next; // b of the boundary half-edge that starts at a
-  for (const auto &[a, b] : walked)
-    if (!walked.count({b, a}) && !next.insert({a, b}).second) {
+  std::vector<std::pair<int, int>> next; // b of the boundary half-edge that starts at a
+  for (const auto &[a, b] : walked) {
+    if (std::binary_search(walked.begin(), walked.end(), std::pair<int, int>{b, a})) continue;
+    if (!next.empty() && next.back().first == a) {
       out.pinched_vertex = a;
       return out;
     }
-  std::set<int> used;
-  for (const auto &[start, ignored] : next) {
-    if (used.count(start)) continue;
+    next.push_back({a, b});
+  }
+  // The position in `next` of the half-edge starting at v, -1 if none.
+  auto position = [&](int v) {
+    const auto at = std::lower_bound(next.begin(), next.end(), std::pair<int, int>{v, INT_MIN});
+    return at != next.end() && at->first == v ? int(at - next.begin()) : -1;
+  };
+  std::vector<char> used(next.size(), 0);
+  for (size_t start = 0; start < next.size(); ++start) {
+    if (used[start]) continue;
     std::vector<int> loop;
-    for (int v = start; used.insert(v).second; v = next.at(v)) {
-      loop.push_back(v);
-      if (!next.count(next.at(v))) break;
+    for (int i = int(start); i >= 0 && !used[size_t(i)]; i = position(next[size_t(i)].second)) {
+      used[size_t(i)] = 1;
+      loop.push_back(next[size_t(i)].first);
     }
     out.loops.push_back(std::move(loop));
   }
   return out;
+}
+
+std::vector<RingDistances::Entry>::const_iterator RingDistances::find(int vertex) const {
+  const auto at = std::lower_bound(by_vertex_.begin(), by_vertex_.end(), Entry{vertex, INT_MIN});
+  return at != by_vertex_.end() && at->first == vertex ? at : by_vertex_.end();
+}
+
+int RingDistances::at(int vertex) const {
+  const auto found = find(vertex);
+  if (found == end()) throw std::out_of_range("ring_distances: vertex beyond the radius");
+  return found->second;
+}
+
+RingDistances ring_distances(const FaceIncidence &in, const std::vector<int> &sources, int radius) {
+  // Per vertex of the mesh, whether the search has reached it: set while a search runs, cleared
+  // after (one array per thread, kept between searches: a search touches only its region).
+  thread_local std::vector<char> reached;
+  if (reached.size() < in.faces_of_vertex.size()) reached.assign(in.faces_of_vertex.size(), 0);
+  std::vector<RingDistances::Entry> found; // breadth first: its own queue
+  for (int v : sources)
+    if (!reached[size_t(v)]) {
+      reached[size_t(v)] = 1;
+      found.push_back({v, 0});
+    }
+  for (size_t i = 0; i < found.size(); ++i) {
+    const auto [v, rings] = found[i];
+    if (rings >= radius) continue;
+    for (int f : in.faces_of_vertex[size_t(v)])
+      for (int w : in.corners[size_t(f)])
+        if (!reached[size_t(w)]) {
+          reached[size_t(w)] = 1;
+          found.push_back({w, rings + 1});
+        }
+  }
+  for (const auto &entry : found)
+    reached[size_t(entry.first)] = 0;
+  std::sort(found.begin(), found.end());
+  return RingDistances(std::move(found));
 }
 
 } // namespace meromorph
