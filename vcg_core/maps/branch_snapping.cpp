@@ -128,16 +128,22 @@ struct Spot {
   std::vector<Score> found_shares;
   Score found_total{0, 0, 0, 0.0};
   std::vector<int> moved;
+  std::vector<std::array<double, 3>> corner_angles; // per region face, on the surface
 
-  Score face_share(int f) const {
+  // The share of region face i (`region_faces`' order).
+  Score face_share(size_t i) const {
+    const int f = region_faces[i];
     const bool folded = folded_face(in, sphere, f);
     return {folded, !folded && folded_or_flat(in, sphere, f), 0,
-            face_angle_error_degrees(mesh, sphere, f)};
+            face_angle_error_degrees(corner_angles[i], mesh, sphere, f)};
   }
   void measure_as_found() {
+    corner_angles.resize(region_faces.size());
+    for (size_t i = 0; i < region_faces.size(); ++i)
+      corner_angles[i] = face_corner_angles(mesh, region_faces[i]);
     found_shares.resize(region_faces.size());
     for (size_t i = 0; i < region_faces.size(); ++i)
-      found_shares[i] = face_share(region_faces[i]);
+      found_shares[i] = face_share(i);
     found_total = {0, 0, 0, 0.0};
     for (const Score &share : found_shares)
       add(found_total, share, 1);
@@ -157,9 +163,10 @@ struct Spot {
     std::sort(changed.begin(), changed.end());
     changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
     for (int f : changed) {
-      const auto at = std::lower_bound(region_faces.begin(), region_faces.end(), f);
-      add(score, found_shares[size_t(at - region_faces.begin())], -1);
-      add(score, face_share(f), 1);
+      const size_t i = size_t(std::lower_bound(region_faces.begin(), region_faces.end(), f) -
+                              region_faces.begin());
+      add(score, found_shares[i], -1);
+      add(score, face_share(i), 1);
     }
     return score;
   }
@@ -356,6 +363,7 @@ SpotRepair repair_spot(const PreparedMesh &prepared,
             {},
             {},
             {0, 0, 0, 0.0},
+            {},
             {}};
   std::vector<int> &faces = spot.region_faces;
   for (const auto &[v, ring] : spot.region)

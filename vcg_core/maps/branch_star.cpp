@@ -65,18 +65,20 @@ reembed_around_branch(const Mesh &mesh, const FaceIncidence &in,
   std::map<int, Eigen::Vector2d> chart;
   for (const auto &[v, d] : distance)
     if (v != branch && !gnomonic.to_chart(sphere[size_t(v)], chart[v])) return std::nullopt;
-  // The outer ring in order: the boundary of the faces within `rings` rings, chained.
-  std::vector<int> inner_faces;
+  // The outer ring in order: the boundary of the faces within `rings` rings, chained. Both ends
+  // of a boundary side are rings + 1 away (the face beyond it has no nearer corner), and so are
+  // those of its reverse: the faces' sides between such vertices are all the chaining reads.
+  auto outermost = [&](int v) { return distance.at(v) == rings + 1; };
+  std::vector<std::pair<int, int>> outer_sides;
   for (const auto &[v, d] : distance)
     if (d <= rings)
-      inner_faces.insert(inner_faces.end(), in.faces_of_vertex[size_t(v)].begin(),
-                         in.faces_of_vertex[size_t(v)].end());
-  std::sort(inner_faces.begin(), inner_faces.end());
-  inner_faces.erase(std::unique(inner_faces.begin(), inner_faces.end()), inner_faces.end());
-  std::vector<std::array<int, 3>> triangles;
-  for (int f : inner_faces)
-    triangles.push_back(in.corners[size_t(f)]);
-  const BoundaryLoops boundary = chain_boundary(triangles);
+      for (int f : in.faces_of_vertex[size_t(v)]) {
+        const auto &t = in.corners[size_t(f)];
+        for (int k = 0; k < 3; ++k)
+          if (outermost(t[size_t(k)]) && outermost(t[size_t((k + 1) % 3)]))
+            outer_sides.push_back({t[size_t(k)], t[size_t((k + 1) % 3)]});
+      }
+  const BoundaryLoops boundary = chain_boundary(std::move(outer_sides));
   if (boundary.loops.size() != 1) return std::nullopt; // not one loop
   const std::vector<int> &outer = boundary.loops.front();
   std::map<int, Eigen::Vector2d> root;

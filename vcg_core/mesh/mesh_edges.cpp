@@ -116,13 +116,17 @@ FaceIncidence face_incidence(const Mesh &mesh) {
 }
 
 BoundaryLoops chain_boundary(const std::vector<std::array<int, 3>> &triangles) {
-  // The half-edges walked, sorted (each once), and the boundary ones (no reverse walked) as
-  // (a, b) sorted on a: at most one per start vertex, else a pinch.
   std::vector<std::pair<int, int>> walked;
   walked.reserve(3 * triangles.size());
   for (const auto &t : triangles)
     for (int k = 0; k < 3; ++k)
       walked.push_back({t[size_t(k)], t[size_t((k + 1) % 3)]});
+  return chain_boundary(std::move(walked));
+}
+
+BoundaryLoops chain_boundary(std::vector<std::pair<int, int>> walked) {
+  // The half-edges walked, sorted (each once), and the boundary ones (no reverse walked) as
+  // (a, b) sorted on a: at most one per start vertex, else a pinch.
   std::sort(walked.begin(), walked.end());
   walked.erase(std::unique(walked.begin(), walked.end()), walked.end());
   BoundaryLoops out;

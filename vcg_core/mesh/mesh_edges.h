@@ -56,6 +56,9 @@ struct BoundaryLoops {
   int pinched_vertex = -1;
 };
 BoundaryLoops chain_boundary(const std::vector<std::array<int, 3>> &triangles);
+// The same from the triangles' half-edges (a, b), in any order: a caller that knows which
+// half-edges can be on the boundary passes those (and their reverses) alone.
+BoundaryLoops chain_boundary(std::vector<std::pair<int, int>> walked);
 
 // The ring distance from `sources` of every vertex at most `radius` rings away: (vertex, rings)
 // in the order of the vertices, looked up by binary search (the regions are a few hundred

@@ -68,18 +68,30 @@ QualityStatistics summarize(std::vector<FaceMeasure> measures) {
 
 } // namespace
 
-double face_angle_error_degrees(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere,
-                                int face) {
-  Eigen::Vector3d p[3], s[3];
-  for (int k = 0; k < 3; ++k) {
+std::array<double, 3> face_corner_angles(const Mesh &mesh, int face) {
+  Eigen::Vector3d p[3];
+  for (int k = 0; k < 3; ++k)
     p[k] = mesh.face[face].cP(k).ToEigenVector<Eigen::Vector3d>();
+  std::array<double, 3> angles;
+  for (int k = 0; k < 3; ++k)
+    angles[size_t(k)] = angle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]);
+  return angles;
+}
+
+double face_angle_error_degrees(const std::array<double, 3> &corner_angles, const Mesh &mesh,
+                                const std::vector<Eigen::Vector3d> &sphere, int face) {
+  Eigen::Vector3d s[3];
+  for (int k = 0; k < 3; ++k)
     s[k] = sphere[index_of(mesh, mesh.face[face].cV(k))];
-  }
   double error = 0;
   for (int k = 0; k < 3; ++k)
-    error += std::abs(angle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]) -
-                      angle(s[k], s[(k + 1) % 3], s[(k + 2) % 3]));
+    error += std::abs(corner_angles[size_t(k)] - angle(s[k], s[(k + 1) % 3], s[(k + 2) % 3]));
   return error * 180.0 / M_PI / 3.0;
+}
+
+double face_angle_error_degrees(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere,
+                                int face) {
+  return face_angle_error_degrees(face_corner_angles(mesh, face), mesh, sphere, face);
 }
 
 MapQuality measure_map_quality(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere,

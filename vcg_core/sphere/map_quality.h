@@ -12,6 +12,8 @@
 //      cannot tell their orientation). Also the indices of the folded and of the collapsed faces.
 #pragma once
 
+#include <array>
+
 #include <vector>
 
 #include <Eigen/Core>
@@ -35,9 +37,14 @@ struct MapQuality {
   std::vector<int> collapsed_face_indices; // every collapsed face
 };
 
-// The mean absolute difference of a face's corner angles and its image's, in degrees.
+// The mean absolute difference of a face's corner angles and its image's, in degrees; the second
+// form with the face's own corner angles given (face_corner_angles, radians: the same result
+// without working them out again).
 double face_angle_error_degrees(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere,
                                 int face);
+std::array<double, 3> face_corner_angles(const Mesh &mesh, int face);
+double face_angle_error_degrees(const std::array<double, 3> &corner_angles, const Mesh &mesh,
+                                const std::vector<Eigen::Vector3d> &sphere, int face);
 
 MapQuality measure_map_quality(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere,
                                const std::vector<int> &branch_vertices);
