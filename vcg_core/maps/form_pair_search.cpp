@@ -81,20 +81,21 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   // A pair's map solved and centred: its crowding is judged before any snapping (snapping moves
   // a few values around critical points: on the test and bench meshes the crowded faces were the
   // same before and after, or two apart).
-  auto solve = [&](size_t k) {
+  using PairForms = std::array<Eigen::VectorXcd, 2>; // forms_of's numerator and denominator
+  auto solve = [&](size_t k, const PairForms &pair_forms) {
     progress.report(0.6 + 0.1 * double(k) / double(pairs.size()), "meromorphic function");
-    const auto [numerator, denominator] = forms_of(pairs[k]);
-    Attempt result{false, 0, form_ratio_map(prepared, numerator, denominator), {}, 0, {}};
+    Attempt result{false, 0, form_ratio_map(prepared, pair_forms[0], pair_forms[1]), {}, 0, {}};
     if (mobius) result.centring = center_on_sphere(result.values, areas);
     result.crowded = crowded_faces(prepared.incidence, to_sphere(result.values));
     out.attempts = int(k) + 1;
     return result;
   };
-  // Its critical points snapped, its branching measured, the ranking's figures.
-  auto finish = [&](size_t k, Attempt &result) {
-    const auto [numerator, denominator] = forms_of(pairs[k]);
+  // Its critical points snapped, its branching measured, the ranking's figures. (A pair left
+  // for later does not keep its forms, two edge arrays: they are made again when it is snapped.)
+  auto finish = [&](const PairForms &pair_forms, Attempt &result) {
     for (int pass = 0; pass < 4; ++pass) {
-      const int repaired = snap_branch_points(prepared, {&numerator, &denominator}, result.values);
+      const int repaired =
+          snap_branch_points(prepared, {&pair_forms[0], &pair_forms[1]}, result.values);
       result.snapped += repaired;
       if (!repaired) break;
     }
@@ -123,9 +124,10 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   const size_t first_round = std::min<size_t>(pairs.size(), forms.genus == 2 ? 1 : 3);
   std::vector<std::pair<size_t, Attempt>> solved;
   for (size_t k = 0; k < first_round; ++k) {
-    Attempt result = solve(k);
+    const PairForms pair_forms = forms_of(pairs[k]);
+    Attempt result = solve(k, pair_forms);
     if (result.crowded == 0) {
-      finish(k, result);
+      finish(pair_forms, result);
       if (result.generic) {
         offer(k, std::move(result));
         solved.clear();
@@ -141,13 +143,14 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   });
   for (auto &[k, result] : solved) {
     if (best && best->generic) break;
-    finish(k, result);
+    finish(forms_of(pairs[k]), result);
     offer(k, std::move(result));
   }
   // None generic: the next pairs one at a time, until one is.
   for (size_t k = first_round; k < pairs.size() && !(best && best->generic); ++k) {
-    Attempt result = solve(k);
-    finish(k, result);
+    const PairForms pair_forms = forms_of(pairs[k]);
+    Attempt result = solve(k, pair_forms);
+    finish(pair_forms, result);
     offer(k, std::move(result));
   }
   out.values = std::move(best->values);
