@@ -76,19 +76,19 @@ Eigen::Vector3d FaceGeometry::corner(size_t f, int k) const {
   return mesh_ ? meromorph::corner(*mesh_, f, k) : meromorph::corner(*corners_, f, k);
 }
 
-Eigen::Vector3d FaceGeometry::normal(size_t f) const {
-  const Eigen::Vector3d p0 = corner(f, 0);
-  return (corner(f, 1) - p0).cross(corner(f, 2) - p0).normalized();
-}
-
 std::array<Eigen::Vector3d, 2> FaceGeometry::sides(size_t f) const {
   const Eigen::Vector3d p0 = corner(f, 0);
   return {corner(f, 1) - p0, corner(f, 2) - p0};
 }
 
+Eigen::Vector3d FaceGeometry::normal(size_t f) const {
+  const auto [u, d] = sides(f);
+  return u.cross(d).normalized();
+}
+
 FaceFrame FaceGeometry::frame(size_t f) const {
-  const Eigen::Vector3d p0 = corner(f, 0), p1 = corner(f, 1);
-  return {(p1 - p0).cross(corner(f, 2) - p0).normalized(), (p1 - p0).normalized()};
+  const auto [u, d] = sides(f);
+  return {u.cross(d).normalized(), u.normalized()};
 }
 
 double corner_angle(const MeshFace &face, int k) {
