@@ -7,6 +7,7 @@
 #include "common/errors.h"
 #include "common/parallel_for.h"
 #include "maps/branch_snapping.h"
+#include "maps/fold_untangling.h"
 #include "maps/form_ratio_map.h"
 #include "sphere/branch_points.h"
 
@@ -40,7 +41,8 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
     MobiusCentering centring;
     int snapped;
     Branching measured;
-    int crowded = 0; // faces whose image spans more than a chord of 1 (a quarter of the sphere)
+    int crowded = 0;   // faces whose image spans more than a chord of 1 (a quarter of the sphere)
+    int untangled = 0; // vertices or regions moved to unfold sliver faces (fold_untangling.h)
   };
   // The pair's numerator omega1 + omega2 and denominator omega1 - omega2, edge by edge over the
   // cores.
@@ -99,10 +101,30 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
       result.snapped += repaired;
       if (!repaired) break;
     }
-    const std::vector<Eigen::Vector3d> sphere = to_sphere(result.values);
+    std::vector<Eigen::Vector3d> sphere = to_sphere(result.values);
     result.measured = analyse_branching(mesh, sphere, euler);
+    auto generic = [&](const Branching &measured) {
+      return measured.riemann_hurwitz_ok && measured.degree == 2 * forms.genus - 2;
+    };
+    result.generic = generic(result.measured);
+    // A sliver's folded image (a vertex around which the image winds 0 or twice) fails
+    // Riemann-Hurwitz while the map is fine: where untangling its folds, as the written map's
+    // would (written_map.h), makes the map generic, the untangled map is the pair's (not the
+    // next pairs' solves and snapping).
+    if (!result.generic) {
+      std::vector<Eigen::Vector3d> untangled = sphere;
+      const int moved = untangle_folds(prepared, untangled, result.measured.branch_vertices);
+      Branching again = moved ? analyse_branching(mesh, untangled, euler) : Branching{};
+      if (moved && generic(again)) {
+        for (size_t v = 0; v < sphere.size(); ++v)
+          if (untangled[v] != sphere[v]) result.values[v] = to_plane_value(untangled[v]);
+        sphere = std::move(untangled);
+        result.measured = std::move(again);
+        result.generic = true;
+        result.untangled = moved;
+      }
+    }
     const Branching &measured = result.measured;
-    result.generic = measured.riemann_hurwitz_ok && measured.degree == 2 * forms.genus - 2;
     result.deficit = std::abs(euler - (2 * measured.degree - measured.ramification));
     result.crowded = crowded_faces(prepared.incidence, sphere);
   };
@@ -156,6 +178,7 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   out.values = std::move(best->values);
   out.centring = best->centring;
   out.snapped_branch_points = best->snapped;
+  out.untangled_vertices = best->untangled;
   out.branching = std::move(best->measured);
   return out;
 }

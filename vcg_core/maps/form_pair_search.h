@@ -6,10 +6,11 @@
 // Out: for each pair, f = (omega1 + omega2) / (omega1 - omega2) per vertex (form_ratio_map.h),
 //      centred and its crowded faces counted (an image chord above 1); then its critical points
 //      snapped onto vertices (branch_snapping.h, up to four passes) and ranked by whether it is
-//      generic (degree 2g - 2 and Riemann-Hurwitz), its Riemann-Hurwitz deficit and its crowded
-//      faces; the best is kept, with its branching as measured for the ranking. Genus 2: the
-//      next pair only where the best is not generic (every generic pair gives the same map up to
-//      a Moebius transformation). Genus 3 and up: up to three pairs solved (the first whose map
+//      generic (degree 2g - 2 and Riemann-Hurwitz; where it is not, the map with its slivers'
+//      folds untangled, fold_untangling.h, if that one is), its Riemann-Hurwitz deficit and its
+//      crowded faces; the best is kept, with its branching as measured for the ranking. Genus 2:
+//      the next pair only where the best is not generic (every generic pair gives the same map up
+//      to a Moebius transformation). Genus 3 and up: up to three pairs solved (the first whose map
 //      does not crowd snapped and kept at once if generic), then snapped from the least crowded
 //      until one is generic; further pairs one at a time while none is. Where the first pair's
 //      guessed map crowds (form_ratio_map.h's guessed_crowding, before any solve), the pair
@@ -34,7 +35,8 @@ struct PairSearch {
   std::vector<PlaneValue> values;
   MobiusCentering centring;
   int snapped_branch_points = 0;
-  Branching branching; // of `values`, as the ranking measured it
+  int untangled_vertices = 0; // folds of slivers untangled in the search (fold_untangling.h)
+  Branching branching;        // of `values`, as the ranking measured it
   FormPair coefficients;
   int attempts = 0;
 };

@@ -132,6 +132,7 @@ Parameterization parameterize(Mesh &mesh, const ParameterizeOptions &options,
     written.mobius = search.centring;
     written.mobius_applied = options.mobius;
     written.snapped_branch_points = search.snapped_branch_points;
+    written.untangled_vertices = search.untangled_vertices;
     finish_on_sphere(prepared, options.mobius, nullptr, out.euler, std::move(search.values),
                      &search.branching, nullptr, written, progress, clock);
   }

@@ -53,7 +53,7 @@ void finish_on_sphere(const PreparedMesh &prepared, bool mobius, const Genus1Map
   out.branching = measured && !centred_here && !torus_map
                       ? *measured
                       : analyse_branching(mesh, out.sphere, euler);
-  out.untangled_vertices = untangle_folds(prepared, out.sphere, out.branching.branch_vertices);
+  out.untangled_vertices += untangle_folds(prepared, out.sphere, out.branching.branch_vertices);
   if (mobius && (out.untangled_vertices || out.snapped_branch_points)) {
     // The vertices moved above shift the centroid a little: centre once more.
     for (size_t v = 0; v < values.size(); ++v)

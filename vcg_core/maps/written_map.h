@@ -32,6 +32,8 @@ struct WrittenSphere {
   std::vector<Eigen::Vector3d> sphere;
   MobiusCentering mobius;
   bool mobius_applied = false;
+  // (`out`'s counts as given are kept and added to: genus >= 2's pair search snaps and may
+  // untangle before.)
   int snapped_branch_points = 0, untangled_vertices = 0;
   Branching branching;
   int origin_vertex = -1, origin_attempts = 0; // genus 1
