@@ -899,6 +899,42 @@ TEST(FoldUntangling, AVertexPulledAcrossItsRingComesBack) {
   EXPECT_EQ(again[0], held);
 }
 
+TEST(FoldUntangling, AFoldInsideABranchVertexsStarIsReembeddedWithItsOneRing) {
+  // The double cover w = z^2 of the sphere, branched at vertex 0 (z = 0) and at the vertex
+  // opposite it: no face is folded. One vertex of vertex 0's one-ring pushed over its neighbour
+  // folds faces of the star itself. Keeping the one-ring, the star's rings cannot unfold them;
+  // moving it (the branch vertex pinned), they unfold and vertex 0 still winds twice.
+  Mesh mesh;
+  make_icosphere(mesh, 3);
+  const PreparedMesh prepared = prepare_mesh(mesh);
+  const FaceIncidence &in = prepared.incidence;
+  const std::vector<Eigen::Vector3d> positions = unit_positions(mesh);
+  const Eigen::Quaterniond turn = Eigen::Quaterniond::FromTwoVectors(positions[0], to_sphere(0.0));
+  std::vector<Eigen::Vector3d> sphere;
+  for (const Eigen::Vector3d &p : positions) {
+    const PlaneValue z = to_plane_value(turn * p);
+    sphere.push_back(to_sphere(z.infinite ? PlaneValue{0.0, true} : PlaneValue{z.w * z.w, false}));
+  }
+  ASSERT_EQ(folded_count(in, sphere), 0);
+  ASSERT_EQ(vertex_winding(in, sphere, 0), 2);
+  const std::vector<int> ring = ordered_ring(in, 0);
+  sphere[size_t(ring[0])] = (sphere[size_t(ring[1])] * 2 - sphere[size_t(ring[0])]).normalized();
+  const int folded = folded_count(in, sphere);
+  ASSERT_GT(folded, 0);
+  auto folded_after = [&](OneRing one_ring, int rings) {
+    std::vector<Eigen::Vector3d> moved = sphere;
+    const auto placed = reembed_around_branch(mesh, in, sphere, 0, rings, one_ring);
+    if (placed)
+      for (const auto &[v, p] : *placed)
+        moved[size_t(v)] = p;
+    return std::make_pair(folded_count(in, moved), vertex_winding(in, moved, 0));
+  };
+  for (int rings = 2; rings <= 4; ++rings) {
+    EXPECT_EQ(folded_after(OneRing::kept, rings).first, folded) << rings;
+    EXPECT_EQ(folded_after(OneRing::moves, rings), std::make_pair(0, 2)) << rings;
+  }
+}
+
 TEST(FormPairs, GenericAndTheSameOnEveryCall) {
   for (int genus : {2, 3, 5}) {
     const std::vector<FormPair> pairs = generic_form_pairs(genus);

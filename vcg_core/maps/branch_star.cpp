@@ -53,13 +53,40 @@ bool roots_along(const std::vector<int> &loop, std::map<int, Eigen::Vector2d> &c
   return std::abs(angle - start - 4 * M_PI) < 1;
 }
 
+// Whether the roots of `outer` are on the sheet that continues the one-ring's (from `start`, a
+// one-ring vertex whose root is set) along a shortest path out; if not, they are turned over.
+// False where no path leads out.
+bool same_sheet(const FaceIncidence &in, const RingDistances &distance, int rings, int start,
+                std::map<int, Eigen::Vector2d> &chart, const std::vector<int> &outer,
+                std::map<int, Eigen::Vector2d> &root) {
+  std::vector<int> path{start};
+  while (distance.at(path.back()) < rings + 1) {
+    int step = -1;
+    for (int f : in.faces_of_vertex[size_t(path.back())])
+      for (int w : in.corners[size_t(f)])
+        if (distance.count(w) && distance.at(w) == distance.at(path.back()) + 1) step = w;
+    if (step < 0) return false;
+    path.push_back(step);
+  }
+  double angle = std::atan2(root[start].y(), root[start].x()) * 2;
+  for (size_t k = 1; k < path.size(); ++k)
+    angle += turn(chart[path[k - 1]], chart[path[k]]);
+  const Eigen::Vector2d along(std::cos(angle / 2), std::sin(angle / 2));
+  if (root[path.back()].dot(along) < 0)
+    for (int v : outer)
+      root[v] = -root[v];
+  return true;
+}
+
 } // namespace
 
 std::optional<std::vector<std::pair<int, Eigen::Vector3d>>>
 reembed_around_branch(const Mesh &mesh, const FaceIncidence &in,
-                      const std::vector<Eigen::Vector3d> &sphere, int branch, int rings) {
-  const std::vector<int> ring = ordered_ring(in, branch);
-  if (ring.empty() || rings < 2) return std::nullopt;
+                      const std::vector<Eigen::Vector3d> &sphere, int branch, int rings,
+                      OneRing one_ring) {
+  const bool ring_kept = one_ring == OneRing::kept;
+  const std::vector<int> ring = ring_kept ? ordered_ring(in, branch) : std::vector<int>{};
+  if (ring_kept ? ring.empty() || rings < 2 : rings < 1) return std::nullopt;
   const RingDistances distance = ring_distances(in, {branch}, rings + 1);
   const GnomonicChart gnomonic(sphere[size_t(branch)]);
   std::map<int, Eigen::Vector2d> chart;
@@ -82,31 +109,21 @@ reembed_around_branch(const Mesh &mesh, const FaceIncidence &in,
   if (boundary.loops.size() != 1) return std::nullopt; // not one loop
   const std::vector<int> &outer = boundary.loops.front();
   std::map<int, Eigen::Vector2d> root;
-  if (!roots_along(ring, chart, root) || !roots_along(outer, chart, root)) return std::nullopt;
+  if (!roots_along(outer, chart, root)) return std::nullopt;
+  const int first_free = ring_kept ? 2 : 1;
+  if (ring_kept && !roots_along(ring, chart, root)) return std::nullopt;
   // The two loops' roots on the same sheet of the square root: along a shortest path from the
-  // one-ring out, the image turns little per edge, so the root continues without a jump.
-  std::vector<int> path{ring[0]};
-  while (distance.at(path.back()) < rings + 1) {
-    int step = -1;
-    for (int f : in.faces_of_vertex[size_t(path.back())])
-      for (int w : in.corners[size_t(f)])
-        if (distance.count(w) && distance.at(w) == distance.at(path.back()) + 1) step = w;
-    if (step < 0) return std::nullopt;
-    path.push_back(step);
-  }
-  double angle = std::atan2(root[ring[0]].y(), root[ring[0]].x()) * 2;
-  for (size_t k = 1; k < path.size(); ++k)
-    angle += turn(chart[path[k - 1]], chart[path[k]]);
-  const Eigen::Vector2d along(std::cos(angle / 2), std::sin(angle / 2));
-  if (root[path.back()].dot(along) < 0)
-    for (int v : outer)
-      root[v] = -root[v];
+  // one-ring out, the image turns little per edge, so the root continues without a jump. (A
+  // moving one-ring leaves the outer loop's sheet free: both square to the same.)
+  if (ring_kept && !same_sheet(in, distance, rings, ring[0], chart, outer, root))
+    return std::nullopt;
   std::vector<int> free;
   for (const auto &[v, d] : distance)
-    if (d >= 2 && d <= rings) {
+    if (d >= first_free && d <= rings) {
       free.push_back(v);
       root[v] = Eigen::Vector2d::Zero();
     }
+  if (!ring_kept) root[branch] = Eigen::Vector2d::Zero(); // the branch value, the chart's centre
   if (free.empty() || !floater_embedding(mesh, in, free, root)) return std::nullopt;
   std::vector<std::pair<int, Eigen::Vector3d>> placed;
   for (int v : free) {

@@ -9,8 +9,10 @@
 //      between its one-ring and the next ring out (both kept) so that the map stays a double
 //      cover there: in the gnomonic chart at the branch value, unwound by a square root (the
 //      one-ring and the outer ring each turn twice around the value, so once after it), by
-//      Floater's embedding (floater_embedding.h), and wound up again. Returns the new positions
-//      (the caller judges them), or nothing where the rings do not turn twice or leave the chart.
+//      Floater's embedding (floater_embedding.h), and wound up again. With `OneRing::moves`
+//      the one-ring is placed too (1 to `rings` rings, the branch vertex pinned at the value): for
+//      a fold inside the star itself. Returns the new positions (the caller judges them), or
+//      nothing where the rings do not turn twice or leave the chart.
 #pragma once
 
 #include <optional>
@@ -26,8 +28,11 @@ namespace meromorph {
 
 std::vector<int> ordered_ring(const FaceIncidence &in, int vertex);
 
+enum class OneRing { kept, moves };
+
 std::optional<std::vector<std::pair<int, Eigen::Vector3d>>>
 reembed_around_branch(const Mesh &mesh, const FaceIncidence &in,
-                      const std::vector<Eigen::Vector3d> &sphere, int branch, int rings);
+                      const std::vector<Eigen::Vector3d> &sphere, int branch, int rings,
+                      OneRing one_ring = OneRing::kept);
 
 } // namespace meromorph

@@ -75,23 +75,27 @@ bool reembed_folded_face(const PreparedMesh &prepared, const std::vector<char> &
   bool done = false;
   for (int rings = 1; rings <= largest_ring && !done; ++rings)
     done = reembed(mesh, incidence, is_fixed, sphere, seeds, rings, mean.normalized());
-  // Beside a branch vertex: the rings around its star re-embedded about its value.
-  for (const auto &[b, d] : ring_distances(incidence, seeds, 2))
-    for (int rings = 2; rings <= largest_ring && !done && is_fixed[size_t(b)]; ++rings)
-      if (const auto around = reembed_around_branch(mesh, incidence, sphere, b, rings)) {
-        std::vector<std::pair<int, Eigen::Vector3d>> before;
-        for (const auto &[w, point] : *around) {
-          before.push_back({w, sphere[size_t(w)]});
-          sphere[size_t(w)] = point;
-        }
-        done = true;
-        for (const auto &[w, point] : *around)
-          for (int g : incidence.faces_of_vertex[size_t(w)])
-            done = done && !folded_face(incidence, sphere, g);
-        if (!done)
-          for (const auto &[w, point] : before)
+  // Beside a branch vertex: the rings around its star re-embedded about its value, its one-ring
+  // kept; else with its one-ring (a fold within the star).
+  for (const OneRing one_ring : {OneRing::kept, OneRing::moves})
+    for (const auto &[b, d] : ring_distances(incidence, seeds, 2))
+      for (int rings = one_ring == OneRing::kept ? 2 : 1;
+           rings <= largest_ring && !done && is_fixed[size_t(b)]; ++rings)
+        if (const auto around =
+                reembed_around_branch(mesh, incidence, sphere, b, rings, one_ring)) {
+          std::vector<std::pair<int, Eigen::Vector3d>> before;
+          for (const auto &[w, point] : *around) {
+            before.push_back({w, sphere[size_t(w)]});
             sphere[size_t(w)] = point;
-      }
+          }
+          done = true;
+          for (const auto &[w, point] : *around)
+            for (int g : incidence.faces_of_vertex[size_t(w)])
+              done = done && !folded_face(incidence, sphere, g);
+          if (!done)
+            for (const auto &[w, point] : before)
+              sphere[size_t(w)] = point;
+        }
   return done;
 }
 
