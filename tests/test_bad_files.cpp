@@ -12,6 +12,7 @@
 namespace meromorph {
 namespace {
 
+using test::file_bytes;
 using test::TempDir;
 
 // Reading `path` throws an error of type E whose message contains `expected`.
@@ -27,11 +28,6 @@ template <class E> void expect_read_error(const std::string &path, const std::st
   } catch (const std::exception &error) {
     ADD_FAILURE() << path << ": wrong error type: " << error.what();
   }
-}
-
-std::string file_bytes(const std::string &path) {
-  std::ifstream stream(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(stream), {});
 }
 
 TEST(BadFiles, EmptyFilesOfEveryFormat) {

@@ -41,6 +41,7 @@
 #include "maps/genus0_map.h"
 #include "maps/genus1_branch_placement.h"
 #include "maps/parts_map.h"
+#include "maps/star_kernel.h"
 #include "mesh/cotan_laplacian.h"
 #include "mesh/face_vectors.h"
 #include "mesh/mesh_edges.h"
@@ -877,6 +878,54 @@ TEST(FloaterEmbedding, ADiskInTheGnomonicChartHasNoFold) {
     const double turn = (b - a).x() * (d - a).y() - (b - a).y() * (d - a).x();
     EXPECT_GT(turn, 0) << "face " << f;
   }
+}
+
+TEST(FloaterEmbedding, AFixedNeighbourWithoutAPositionIsRefused) {
+  // Vertex 0 free, its one-ring fixed but one of them left out of the chart: no embedding (its
+  // position would be read from nowhere), and the chart is as it was.
+  Mesh mesh;
+  make_icosphere(mesh, 2);
+  const FaceIncidence in = face_incidence(mesh);
+  const std::vector<int> ring = ordered_ring(in, 0);
+  std::map<int, Eigen::Vector2d> chart;
+  for (size_t j = 1; j < ring.size(); ++j)
+    chart[ring[j]] = Eigen::Vector2d(std::cos(2 * M_PI * double(j) / double(ring.size())),
+                                     std::sin(2 * M_PI * double(j) / double(ring.size())));
+  chart[0] = Eigen::Vector2d(0.5, 0.5);
+  const std::map<int, Eigen::Vector2d> before = chart;
+  EXPECT_FALSE(floater_embedding(mesh, in, {0}, chart));
+  EXPECT_EQ(chart, before);
+  chart[ring[0]] = Eigen::Vector2d(1, 0);
+  EXPECT_TRUE(floater_embedding(mesh, in, {0}, chart));
+  EXPECT_LT(chart[0].norm(), 0.2); // inside the regular polygon, near its centre
+}
+
+TEST(StarKernel, TheCentreFarthestInsideEverySide) {
+  // A regular hexagon of circumradius 1: its centre, at the inradius cos(30 degrees).
+  std::vector<Eigen::Vector2d> hexagon;
+  for (int j = 0; j < 6; ++j)
+    hexagon.emplace_back(std::cos(M_PI * j / 3) + 5, std::sin(M_PI * j / 3) - 2);
+  const auto centre = star_kernel_centre(hexagon);
+  ASSERT_TRUE(centre);
+  EXPECT_LT((centre->first - Eigen::Vector2d(5, -2)).norm(), 1e-12);
+  EXPECT_NEAR(centre->second, std::cos(M_PI / 6), 1e-12);
+  // A dart (concave at (0.2, 0)): the point is inside every side's line, the faces all turn
+  // counter-clockwise by the margin.
+  const std::vector<Eigen::Vector2d> ring = {{1, 0}, {-1, 1}, {0.2, 0}, {-1, -1}};
+  const auto inside = star_kernel_centre(ring);
+  ASSERT_TRUE(inside);
+  EXPECT_GT(inside->second, 0);
+  for (size_t j = 0; j < ring.size(); ++j) {
+    const Eigen::Vector2d a = ring[j] - inside->first,
+                          b = ring[(j + 1) % ring.size()] - inside->first;
+    const double height = (a.x() * b.y() - a.y() * b.x()) / (b - a).norm();
+    EXPECT_GE(height, inside->second - 1e-12) << j;
+  }
+  // Turning the other way round the point (all faces turned over), or a bow that crosses
+  // itself: no kernel.
+  EXPECT_FALSE(star_kernel_centre({hexagon.rbegin(), hexagon.rend()}));
+  EXPECT_FALSE(star_kernel_centre({{0, 0}, {1, 1}, {1, 0}, {0, 1}}));
+  EXPECT_FALSE(star_kernel_centre({{0, 0}, {1, 0}}));
 }
 
 TEST(FoldUntangling, AVertexPulledAcrossItsRingComesBack) {

@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <sstream>
 #include <sys/wait.h>
@@ -54,6 +55,11 @@ std::string slurp(const std::string &path) {
 }
 
 } // namespace
+
+std::string file_bytes(const std::string &path) {
+  std::ifstream stream(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(stream), {});
+}
 
 RunResult run_cli(const std::vector<std::string> &arguments) {
   TempDir capture;

@@ -30,6 +30,9 @@ struct RunResult {
   std::string err;
 };
 
+// The bytes of the file at `path` (empty if it cannot be read).
+std::string file_bytes(const std::string &path);
+
 // Runs the meromorph CLI with `arguments` (each shell-quoted).
 RunResult run_cli(const std::vector<std::string> &arguments);
 

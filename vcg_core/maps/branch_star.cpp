@@ -61,21 +61,42 @@ bool same_sheet(const FaceIncidence &in, const RingDistances &distance, int ring
                 std::map<int, Eigen::Vector2d> &root) {
   std::vector<int> path{start};
   while (distance.at(path.back()) < rings + 1) {
+    // One ring further out; the last step onto the outer loop (whose roots are set).
+    const int next = distance.at(path.back()) + 1;
     int step = -1;
     for (int f : in.faces_of_vertex[size_t(path.back())])
       for (int w : in.corners[size_t(f)])
-        if (distance.count(w) && distance.at(w) == distance.at(path.back()) + 1) step = w;
+        if (distance.count(w) && distance.at(w) == next && (next <= rings || root.count(w)))
+          step = w;
     if (step < 0) return false;
     path.push_back(step);
   }
-  double angle = std::atan2(root[start].y(), root[start].x()) * 2;
+  double angle = std::atan2(root.at(start).y(), root.at(start).x()) * 2;
   for (size_t k = 1; k < path.size(); ++k)
-    angle += turn(chart[path[k - 1]], chart[path[k]]);
+    angle += turn(chart.at(path[k - 1]), chart.at(path[k]));
   const Eigen::Vector2d along(std::cos(angle / 2), std::sin(angle / 2));
-  if (root[path.back()].dot(along) < 0)
+  if (root.at(path.back()).dot(along) < 0)
     for (int v : outer)
       root[v] = -root[v];
   return true;
+}
+
+// Vertex v's root (of its chart position) nearer to the root of a neighbour that has one; false
+// where none has.
+bool root_beside(const FaceIncidence &in, std::map<int, Eigen::Vector2d> &chart, int v,
+                 std::map<int, Eigen::Vector2d> &root) {
+  for (int f : in.faces_of_vertex[size_t(v)])
+    for (int w : in.corners[size_t(f)]) {
+      const auto beside = root.find(w);
+      if (w == v || beside == root.end()) continue;
+      const Eigen::Vector2d &x = chart[v];
+      const double angle = std::atan2(x.y(), x.x()) / 2;
+      const Eigen::Vector2d r =
+          std::sqrt(x.norm()) * Eigen::Vector2d(std::cos(angle), std::sin(angle));
+      root[v] = r.dot(beside->second) >= 0 ? r : Eigen::Vector2d(-r);
+      return true;
+    }
+  return false;
 }
 
 } // namespace
@@ -117,6 +138,13 @@ reembed_around_branch(const Mesh &mesh, const FaceIncidence &in,
   // moving one-ring leaves the outer loop's sheet free: both square to the same.)
   if (ring_kept && !same_sheet(in, distance, rings, ring[0], chart, outer, root))
     return std::nullopt;
+  // The outermost vertices off the loop (touching the region at a vertex or an edge only) keep
+  // their values too: their roots on the sheet of a neighbour's.
+  for (bool placed_one = true; placed_one;) {
+    placed_one = false;
+    for (const auto &[v, d] : distance)
+      if (d == rings + 1 && !root.count(v)) placed_one |= root_beside(in, chart, v, root);
+  }
   std::vector<int> free;
   for (const auto &[v, d] : distance)
     if (d >= first_free && d <= rings) {

@@ -57,10 +57,13 @@ bool floater_embedding(const Mesh &mesh, const FaceIncidence &incidence,
     for (const auto &[w, value] : weight[size_t(i)]) {
       total += value;
       const long j = number(w);
-      if (j >= 0)
+      if (j >= 0) {
         entries.emplace_back(i, j, -value);
-      else
-        right.row(i) += value * chart[w].transpose(); // a fixed neighbour (0 if it has none)
+        continue;
+      }
+      const auto fixed = chart.find(w); // a fixed neighbour, which must have its position
+      if (fixed == chart.end()) return false;
+      right.row(i) += value * fixed->second.transpose();
     }
     entries.emplace_back(i, i, total);
   }

@@ -6,8 +6,9 @@
 //      surface, (tan(alpha / 2) + tan(beta / 2)) / |ij| with alpha, beta the angles at it of the
 //      two faces on the edge: positive on any triangulation, so there is no fold when the fixed
 //      rim is convex (Floater 2003). Solved at once by Eigen's sparse LU (the regions are small).
-//      False, nothing changed, where a weight is not finite (an edge of zero length) or the system
-//      cannot be solved (free vertices out of reach of every fixed one).
+//      False, nothing changed, where a weight is not finite (an edge of zero length), a fixed
+//      neighbour has no position or the system cannot be solved (free vertices out of reach of
+//      every fixed one).
 //      Also the gnomonic chart at a point of the sphere, which maps great circles to lines, so a
 //      face's orientation on the sphere is its orientation there.
 #pragma once

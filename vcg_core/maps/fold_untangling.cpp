@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "maps/branch_star.h"
 #include "maps/floater_embedding.h"
+#include "maps/star_kernel.h"
 #include "mesh/mesh_edges.h"
 #include "sphere/branch_points.h"
 #include "sphere/sphere_geometry.h"
@@ -15,6 +17,23 @@ namespace meromorph {
 namespace {
 
 constexpr int largest_ring = 5;
+
+// The Chebyshev centre of vertex v's star kernel (star_kernel.h) in the gnomonic chart at
+// `centre`, on the sphere; nothing where its ring is not one cycle, leaves the chart or has no
+// kernel.
+std::optional<Eigen::Vector3d> kernel_point(const FaceIncidence &incidence,
+                                            const std::vector<Eigen::Vector3d> &sphere, int v,
+                                            const Eigen::Vector3d &centre) {
+  const std::vector<int> ring = ordered_ring(incidence, v);
+  if (ring.empty()) return std::nullopt;
+  const GnomonicChart chart(centre);
+  std::vector<Eigen::Vector2d> points(ring.size());
+  for (size_t j = 0; j < ring.size(); ++j)
+    if (!chart.to_chart(sphere[size_t(ring[j])], points[j])) return std::nullopt;
+  const auto inside = star_kernel_centre(points);
+  if (!inside) return std::nullopt;
+  return chart.to_sphere(inside->first);
+}
 
 // Re-embeds the region within `rings` rings of `seeds` in the gnomonic chart at `centre` (which
 // maps great circles to lines, so a face's orientation on the sphere is its orientation there):
@@ -144,7 +163,18 @@ int untangle_folds(const PreparedMesh &prepared, std::vector<Eigen::Vector3d> &s
           changed = true;
           break;
         }
+        // Else into its star's kernel (where every face around it turns the right way), in the
+        // gnomonic chart at that mean, if the ring leaves one.
         sphere[v] = original;
+        if (const auto inside = kernel_point(incidence, sphere, v, mean.normalized())) {
+          sphere[v] = *inside;
+          if (folded_around(v) < before) {
+            ++moved;
+            changed = true;
+            break;
+          }
+          sphere[v] = original;
+        }
       }
     }
     if (!changed) break;

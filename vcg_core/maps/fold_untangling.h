@@ -5,7 +5,8 @@
 // Out: a face with a corner near 180 degrees (a sliver) has an image whose great-circle triangle
 //      can turn over under the Moebius centring, which bends straight edges into circles; such a
 //      fold is not a fold of the conformal map. Each folded face away from the fixed vertices has
-//      one of its corners moved to the normalized mean of its one-ring's images, if that leaves
+//      one of its corners moved to the normalized mean of its one-ring's images, or else into its
+//      star's kernel (star_kernel.h: where no face around it is turned over), if that leaves
 //      fewer folded faces around it. A face still folded then (an obtuse corner on a noisy mesh,
 //      next to a branch vertex too) has the region within 1 to 5 rings of it re-embedded in the
 //      gnomonic chart at its centre by mean-value weights of the surface (Floater), the region's
