@@ -218,18 +218,26 @@ TEST(WrittenMaps, PoorTriangulationsMapAsConformallyAsRemeshedOnes) {
   }
 }
 
+// `make genus` of this genus and edges per ring, marching cubes' triangles kept and needles
+// injected (30% of the edges split near one end); its path.
+std::string raw_marching_cubes_with_needles(const test::TempDir &dir, int genus, int resolution) {
+  const std::string path = dir.path("genus" + std::to_string(genus) + "_raw_needles.ply");
+  const test::RunResult made =
+      run_cli({"make", "genus", "-g", std::to_string(genus), "--resolution",
+               std::to_string(resolution), "--raw-marching-cubes", "--needles", "0.3", "-o", path});
+  EXPECT_EQ(made.exit_code, 0) << made.err;
+  return path;
+}
+
 TEST(WrittenMaps, SliverFoldsDoNotCostMorePairs) {
   // Raw marching cubes with needles injected (genus 3, 15k vertices): the first pair's snapped
   // map fails Riemann-Hurwitz only at sliver faces whose images are turned over. Untangling them
   // (as the written map's would) makes it a valid cover: it is kept without solving and snapping
   // the five other pairs (1.9 s before, 0.3 s with it).
   test::TempDir dir;
-  const std::string input = dir.path("genus3_raw_needles.ply");
-  const test::RunResult made = run_cli({"make", "genus", "-g", "3", "--resolution", "40",
-                                        "--raw-marching-cubes", "--needles", "0.3", "-o", input});
-  ASSERT_EQ(made.exit_code, 0) << made.err;
+  const std::string input = raw_marching_cubes_with_needles(dir, 3, 40);
   expect_valid_written_map(dir, input, 3);
-  std::ifstream report_stream(dir.path("genus3_raw_needles.ply.json"));
+  std::ifstream report_stream(input + ".json");
   const nlohmann::json report = nlohmann::json::parse(report_stream);
   EXPECT_EQ(report["pair_attempts"], 1);
   EXPECT_GT(report["untangled_vertices"].get<int>(), 0);
@@ -240,12 +248,9 @@ TEST(WrittenMaps, TheSameInputWritesTheSameFiles) {
   // untangling re-embed many stars here, over both cores. (A fixed vertex left without a chart
   // position once read uninitialised memory: one run in three to six differed, and some failed.)
   test::TempDir dir;
-  const std::string input = dir.path("genus7_raw_needles.ply");
-  const test::RunResult made = run_cli({"make", "genus", "-g", "7", "--resolution", "28",
-                                        "--raw-marching-cubes", "--needles", "0.3", "-o", input});
-  ASSERT_EQ(made.exit_code, 0) << made.err;
+  const std::string input = raw_marching_cubes_with_needles(dir, 7, 28);
   expect_valid_written_map(dir, input, 7);
-  const std::string first = test::file_bytes(dir.path("genus7_raw_needles.ply.sphere.ply"));
+  const std::string first = test::file_bytes(input + ".sphere.ply");
   for (int run = 0; run < 3; ++run) {
     const test::RunResult again = run_cli({"param", input, "-o", dir.path("again.uv.ply"),
                                            "--sphere", dir.path("again.sphere.ply"), "--quiet"});
