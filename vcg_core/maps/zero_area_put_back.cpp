@@ -69,8 +69,8 @@ void with_zero_area_faces(const Mesh &whole, const ZeroAreaFix &fix,
     for (size_t v = 0; v < vertex_count; ++v)
       values[v] = old[size_t(fix.vertex_in_work[v])];
   };
-  expand(map.sphere, Eigen::Vector3d());
-  expand(map.layered, Eigen::Vector3d());
+  expand(map.sphere, Eigen::Vector3d::Zero().eval());
+  expand(map.layered, Eigen::Vector3d::Zero().eval());
   expand(map.uv.vertex, std::array<double, 2>{});
   expand(map.sheets.vertex_layer, 0);
   if (!map.flat.empty()) expand(map.flat, Complex(0, 0));
