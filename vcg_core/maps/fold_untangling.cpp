@@ -157,23 +157,23 @@ int untangle_folds(const PreparedMesh &prepared, std::vector<Eigen::Vector3d> &s
         if (mean.norm() == 0) continue;
         const Eigen::Vector3d original = sphere[v];
         const int before = folded_around(v);
-        sphere[v] = mean.normalized();
-        if (folded_around(v) < before) {
+        // v at `point` if fewer faces around it are folded there, else back where it was.
+        auto moves_to = [&](const Eigen::Vector3d &point) {
+          sphere[v] = point;
+          if (folded_around(v) < before) return true;
+          sphere[v] = original;
+          return false;
+        };
+        // To its one-ring's mean; else into its star's kernel (where every face around it turns
+        // the right way), in the gnomonic chart at that mean, if the ring leaves one.
+        bool unfolded = moves_to(mean.normalized());
+        if (!unfolded)
+          if (const auto inside = kernel_point(incidence, sphere, v, mean.normalized()))
+            unfolded = moves_to(*inside);
+        if (unfolded) {
           ++moved;
           changed = true;
           break;
-        }
-        // Else into its star's kernel (where every face around it turns the right way), in the
-        // gnomonic chart at that mean, if the ring leaves one.
-        sphere[v] = original;
-        if (const auto inside = kernel_point(incidence, sphere, v, mean.normalized())) {
-          sphere[v] = *inside;
-          if (folded_around(v) < before) {
-            ++moved;
-            changed = true;
-            break;
-          }
-          sphere[v] = original;
         }
       }
     }
