@@ -434,11 +434,17 @@ SpotRepair repair_spot(const PreparedMesh &prepared,
 
 int snap_branch_points(const PreparedMesh &prepared,
                        const std::vector<const Eigen::VectorXcd *> &coordinate_forms,
-                       std::vector<PlaneValue> &plane_values) {
+                       std::vector<PlaneValue> &plane_values, SpotsLeftAlone *left_alone) {
   std::vector<Eigen::Vector3d> sphere = to_sphere(plane_values);
   std::vector<std::vector<int>> spots;
   for (std::vector<int> &vertices : trouble_spots(prepared.incidence, sphere))
     if (vertices.size() <= 64) spots.push_back(std::move(vertices)); // else not a lone point
+  // A spot an earlier pass left alone, its values unchanged since: left alone again.
+  auto known = [&](size_t i) -> const std::vector<int> * {
+    if (!left_alone) return nullptr;
+    const auto at = left_alone->find(spots[i]);
+    return at == left_alone->end() ? nullptr : &at->second;
+  };
   // The spots are repaired one after the other. Each is first worked out over the cores on the
   // map as it is now (a scratch copy per thread); one whose values an earlier repair has changed
   // since is worked out again when its turn comes: the same result as in turn throughout.
@@ -446,13 +452,19 @@ int snap_branch_points(const PreparedMesh &prepared,
   parallel_for_with(
       spots.size(), [&] { return sphere; },
       [&](size_t i, std::vector<Eigen::Vector3d> &scratch) {
-        repairs[i] = repair_spot(prepared, coordinate_forms, scratch, spots[i]);
+        if (const std::vector<int> *read = known(i))
+          repairs[i].read = *read;
+        else
+          repairs[i] = repair_spot(prepared, coordinate_forms, scratch, spots[i]);
       });
   std::vector<char> changed(sphere.size(), 0);
+  auto any_changed = [&](const std::vector<int> &read) {
+    return std::any_of(read.begin(), read.end(), [&](int v) { return changed[size_t(v)]; });
+  };
   int repaired = 0;
   for (size_t i = 0; i < spots.size(); ++i) {
     SpotRepair &repair = repairs[i];
-    if (std::any_of(repair.read.begin(), repair.read.end(), [&](int v) { return changed[v]; }))
+    if (any_changed(repair.read))
       repair = repair_spot(prepared, coordinate_forms, sphere, spots[i]);
     if (repair.moves.empty()) continue;
     for (const auto &[w, point] : repair.moves) {
@@ -461,6 +473,14 @@ int snap_branch_points(const PreparedMesh &prepared,
       changed[size_t(w)] = 1;
     }
     ++repaired;
+  }
+  if (left_alone) {
+    // What this pass left alone, and what earlier passes did, as long as no value it read has
+    // changed in this pass (since its decision or before it: either way, not reused).
+    for (size_t i = 0; i < spots.size(); ++i)
+      if (repairs[i].moves.empty()) left_alone->emplace(spots[i], std::move(repairs[i].read));
+    for (auto at = left_alone->begin(); at != left_alone->end();)
+      at = any_changed(at->second) ? left_alone->erase(at) : std::next(at);
   }
   return repaired;
 }

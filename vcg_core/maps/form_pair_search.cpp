@@ -95,9 +95,10 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   // Its critical points snapped, its branching measured, the ranking's figures. (A pair left
   // for later does not keep its forms, two edge arrays: they are made again when it is snapped.)
   auto finish = [&](const PairForms &pair_forms, Attempt &result) {
+    SpotsLeftAlone left_alone; // branch_snapping.h: not worked out again in later passes
     for (int pass = 0; pass < 4; ++pass) {
-      const int repaired =
-          snap_branch_points(prepared, {&pair_forms[0], &pair_forms[1]}, result.values);
+      const int repaired = snap_branch_points(prepared, {&pair_forms[0], &pair_forms[1]},
+                                              result.values, &left_alone);
       result.snapped += repaired;
       if (!repaired) break;
     }
