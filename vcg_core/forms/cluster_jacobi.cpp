@@ -20,9 +20,15 @@ std::vector<double> diagonal_of(const CompressedColumns &a) {
 }
 
 // |a_ij| / sqrt(a_ii a_jj): 1 for two unknowns that move as one, NaN where a diagonal entry is
-// not positive (never a cluster's coupling then).
+// not positive (never a stiff coupling then).
 double coupling(const std::vector<double> &diagonal, int i, int j, std::complex<double> value) {
   return std::abs(value) / std::sqrt(diagonal[size_t(i)] * diagonal[size_t(j)]);
+}
+
+// |a_ij| / min(a_ii, a_jj): the share of the smaller diagonal that the coupling makes (NaN or
+// negative where a diagonal entry is not positive: never a cluster's coupling then).
+double share(const std::vector<double> &diagonal, int i, int j, std::complex<double> value) {
+  return std::abs(value) / std::min(diagonal[size_t(i)], diagonal[size_t(j)]);
 }
 
 } // namespace
@@ -46,7 +52,7 @@ void ClusterJacobi::build(const CompressedColumns &a) {
     for (int k = a.outer[j]; k < a.outer[j + 1]; ++k) {
       const int i = a.inner[k];
       if (i == j) continue;
-      const double c = coupling(diagonal, i, j, a.values[k]);
+      const double c = share(diagonal, i, j, a.values[k]);
       if (c > cluster_coupling) strong.emplace_back(-c, std::min(i, j), std::max(i, j));
     }
   std::sort(strong.begin(), strong.end());

@@ -6,11 +6,14 @@
 //
 // In:  the system's matrix A: its lower triangle or both (compressed, column-major).
 // Out: z = B^-1 r, with B block diagonal: one block per cluster of unknowns joined by couplings
-//      |a_ij| > cluster_coupling * sqrt(a_ii a_jj), the strongest first, at most cluster_size
-//      unknowns a cluster; each block is A's own principal submatrix (positive definite as A
-//      is), so B is too. An unknown alone is Jacobi's preconditioner, 1 / a_ii.
-//      `stiffly_coupled(A)`: whether some coupling exceeds stiff_coupling (where none does, Jacobi
-//      alone converges as fast).
+//      |a_ij| > cluster_coupling * min(a_ii, a_jj) (the share of the smaller diagonal that the
+//      coupling makes: an unknown held mostly by one neighbour moves with it, also where that
+//      neighbour is held stiffly by a third, as a needle's far corner beside two close vertices),
+//      the strongest first, at most cluster_size unknowns a cluster; each block is A's own
+//      principal submatrix (positive definite as A is), so B is too. An unknown alone is
+//      Jacobi's preconditioner, 1 / a_ii.
+//      `stiffly_coupled(A)`: whether some coupling |a_ij| / sqrt(a_ii a_jj) exceeds
+//      stiff_coupling (where none does, Jacobi alone converges as fast).
 #pragma once
 
 #include <complex>
@@ -21,10 +24,13 @@
 
 namespace meromorph {
 
-// Measured on the charts of raw marching cubes and needle surfaces (genus 8 and 10): couplings
-// from 0.15 and clusters of 8 took the fewest steps (0.3: 41 steps, 0.5: 460; clusters of 4: 29).
+// Measured on the charts of raw marching cubes with and without needles (genus 6 and 10): shares
+// from 0.15 and clusters of 16 took the least time (genus-6 raw with needles, 62k vertices: 30 to
+// 39 steps, where |a_ij| / sqrt(a_ii a_jj) > 0.15 and clusters of 8 took 130 to 145; genus-10
+// raw: 15 against 17; shares from 0.1: 10% fewer steps, 50% more time per step; clusters of 12:
+// 30% more steps).
 constexpr double cluster_coupling = 0.15, stiff_coupling = 0.5;
-constexpr int cluster_size = 8;
+constexpr int cluster_size = 16;
 
 // A's columns as CHOLMOD and Eigen keep them: column j's rows and values from outer[j] to
 // outer[j + 1].
