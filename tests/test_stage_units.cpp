@@ -53,6 +53,7 @@
 #include "mesh/validation.h"
 #include "mesh/zero_area_faces.h"
 #include "shapes/test_surfaces.h"
+#include "sphere/arc_grid.h"
 #include "sphere/branch_points.h"
 #include "sphere/map_quality.h"
 #include "sphere/plane_triangles.h"
@@ -237,9 +238,11 @@ TEST(ZeroAreaFaces, ANeedleIsCollapsedAndTheSurfaceKept) {
   EXPECT_EQ(compute_topology(work).genus, std::optional<int>(0));
   ASSERT_EQ(fix.vertex_in_work.size(), needled.vert.size());
   ASSERT_EQ(fix.face_in_work.size(), needled.face.size());
-  for (size_t v = 0; v < needled.vert.size(); ++v)
-    if (fix.vertex_in_work[v] >= 0)
+  for (size_t v = 0; v < needled.vert.size(); ++v) {
+    if (fix.vertex_in_work[v] >= 0) {
       EXPECT_EQ(work.vert[size_t(fix.vertex_in_work[v])].cP(), needled.vert[v].cP());
+    }
+  }
 }
 
 TEST(ZeroAreaFaces, ACapIsFlippedAway) {
@@ -326,9 +329,11 @@ TEST(LaplacianSolver, BothFactorizationsSolveThePinnedSystem) {
   for (int v : pinned)
     rhs[v] = 0;
   const Eigen::VectorXd free = factor_laplacian(laplacian, SolverKind::cholmod, pinned)->solve(rhs);
-  for (int v = 0; v < n; ++v)
-    if (std::find(pinned.begin(), pinned.end(), v) == pinned.end())
+  for (int v = 0; v < n; ++v) {
+    if (std::find(pinned.begin(), pinned.end(), v) == pinned.end()) {
       EXPECT_NEAR(free[v], with_boundary[v], 1e-8) << v;
+    }
+  }
 }
 
 // A Hermitian positive definite system on a grid of side `side`: unit couplings rotated by a
@@ -922,6 +927,55 @@ TEST(FloaterEmbedding, AFixedNeighbourWithoutAPositionIsRefused) {
   chart[ring[0]] = Eigen::Vector2d(1, 0);
   EXPECT_TRUE(floater_embedding(mesh, in, {0}, chart));
   EXPECT_LT(chart[0].norm(), 0.2); // inside the regular polygon, near its centre
+}
+
+// Every point of every arc is found near every point within the longest path of it, and short
+// arcs are near only a few of the grid's cells: 40 random arcs of chord up to 0.4 (and one between
+// nearly opposite points, near everywhere), paths of chord up to 0.1.
+TEST(ArcGrid, AnArcIsNearEveryPathThatCanMeetIt) {
+  std::mt19937 random(7);
+  std::normal_distribution<double> normal;
+  auto random_unit = [&] {
+    return Eigen::Vector3d(normal(random), normal(random), normal(random)).normalized();
+  };
+  std::vector<Eigen::Vector3d> ends;
+  std::vector<std::array<int, 2>> arcs;
+  for (int a = 0; a < 40; ++a) {
+    const Eigen::Vector3d p = random_unit();
+    const Eigen::Vector3d q = (p + 0.4 * std::uniform_real_distribution<double>(0, 1)(random) *
+                                       random_unit().cross(p).normalized())
+                                  .normalized();
+    ends.push_back(p);
+    ends.push_back(q);
+    arcs.push_back({2 * a, 2 * a + 1});
+  }
+  const Eigen::Vector3d far = random_unit();
+  ends.push_back(far);
+  ends.push_back((-far + Eigen::Vector3d(1e-9, 0, 0)).normalized());
+  arcs.push_back({80, 81});
+  const double longest_path = 0.1;
+  const ArcGrid grid(ends, arcs, longest_path);
+  size_t listed = 0, looked_up = 0;
+  for (size_t a = 0; a + 1 < arcs.size(); ++a)
+    for (int step = 0; step <= 20; ++step) {
+      const double t = step / 20.0;
+      const Eigen::Vector3d z =
+          ((1 - t) * ends[size_t(arcs[a][0])] + t * ends[size_t(arcs[a][1])]).normalized();
+      for (int k = 0; k < 10; ++k) {
+        // A point x with |x - z| at most the longest path, one in ten at that distance.
+        const Eigen::Vector3d direction = random_unit().cross(z).normalized();
+        const double chord = k == 0 ? longest_path : longest_path * (k / 10.0);
+        const double angle = 2 * std::asin(chord / 2);
+        const Eigen::Vector3d x = std::cos(angle) * z + std::sin(angle) * direction;
+        const std::vector<int> &near = grid.near(x);
+        EXPECT_TRUE(std::binary_search(near.begin(), near.end(), int(a))) << a << " " << step;
+        EXPECT_TRUE(std::binary_search(near.begin(), near.end(), 40)) << a << " " << step;
+        listed += near.size();
+        ++looked_up;
+      }
+    }
+  // Each short arc's reach is a small part of the sphere: far fewer than all 41 arcs per point.
+  EXPECT_LT(double(listed) / double(looked_up), 6.0); // 2.7 with this seed
 }
 
 TEST(StarKernel, TheCentreFarthestInsideEverySide) {

@@ -6,6 +6,7 @@
 #include <queue>
 
 #include "common/parallel_for.h"
+#include "sphere/arc_grid.h"
 #include "sphere/branch_points.h"
 #include "sphere/sphere_geometry.h"
 
@@ -15,6 +16,9 @@ namespace {
 using Vector = Eigen::Vector3d;
 
 constexpr double unsure_edge_length = 1e-6;
+
+// Edges whose image is at most this chord are tested against the cuts near them only.
+constexpr double short_edge_image = 0.1;
 
 // Is x on the minor great-circle arc from a to b?
 bool on_arc(const Vector &x, const Vector &a, const Vector &b) {
@@ -133,9 +137,15 @@ CutEdges cut_edges(const Mesh &mesh, const MeshEdges &edges, const std::vector<V
     arc_normal.push_back(nodes[size_t(arc[0])].cross(nodes[size_t(arc[1])]));
     arc_length.push_back(arc_normal.back().norm());
   }
+  // Each vertex and each short edge is tested against the arcs near it only (arc_grid.h), a
+  // longer edge against every arc.
+  const ArcGrid near_arcs(nodes, arcs, short_edge_image);
+  std::vector<int> every_arc(arcs.size());
+  std::iota(every_arc.begin(), every_arc.end(), 0);
   std::vector<char> on_cut(mesh.vert.size(), 0);
   parallel_for(mesh.vert.size(), [&](size_t v) {
-    for (size_t a = 0; a < arcs.size(); ++a) {
+    for (const int arc : near_arcs.near(sphere[v])) {
+      const size_t a = size_t(arc);
       const Vector &p = nodes[size_t(arcs[a][0])], &q = nodes[size_t(arcs[a][1])];
       const double length = arc_length[a];
       if (length > 0 && std::abs(sphere[v].dot(arc_normal[a])) < 1e-12 * length &&
@@ -151,7 +161,10 @@ CutEdges cut_edges(const Mesh &mesh, const MeshEdges &edges, const std::vector<V
   parallel_for(edges.vertices.size(), [&](size_t e) {
     const int i = edges.vertices[e][0], j = edges.vertices[e][1];
     crossing[e] = at_branch_vertex[i] || at_branch_vertex[j] || on_cut[i] || on_cut[j];
-    for (size_t a = 0; a < arcs.size() && !crossing[e]; ++a) {
+    const std::vector<int> &candidates =
+        (sphere[i] - sphere[j]).norm() <= short_edge_image ? near_arcs.near(sphere[i]) : every_arc;
+    for (size_t k = 0; k < candidates.size() && !crossing[e]; ++k) {
+      const size_t a = size_t(candidates[k]);
       // Both ends clearly on one side of the arc's great circle: no crossing (far above rounding).
       const double side_i = sphere[i].dot(arc_normal[a]), side_j = sphere[j].dot(arc_normal[a]);
       const double margin = 1e-9 * arc_length[a];
