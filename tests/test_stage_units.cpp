@@ -369,18 +369,30 @@ CompressedColumns columns_of(const Eigen::SparseMatrix<Complex> &a) {
   return {int(a.rows()), a.outerIndexPtr(), a.innerIndexPtr(), a.valuePtr()};
 }
 
+// A right-hand side of no particular shape.
+Eigen::VectorXcd wavy_right(long size) {
+  Eigen::VectorXcd right(size);
+  for (long i = 0; i < size; ++i)
+    right[i] = Complex(std::sin(0.1 * double(i)), std::cos(0.37 * double(i)));
+  return right;
+}
+
+// x with a x = right, by a sparse Cholesky factorization.
+Eigen::VectorXcd solved_directly(const Eigen::SparseMatrix<Complex> &a,
+                                 const Eigen::VectorXcd &right) {
+  const Eigen::SimplicialLLT<Eigen::SparseMatrix<Complex>> direct(a);
+  EXPECT_EQ(direct.info(), Eigen::Success);
+  return direct.solve(right);
+}
+
 // Stiff pairs: the clusters' preconditioner converges in a fraction of Jacobi's steps, to the
 // direct solution; without them the system is not called stiff.
 TEST(ClusterJacobi, StiffPairsConvergeInAFractionOfJacobisSteps) {
   const Eigen::SparseMatrix<Complex> stiff = grid_system(60, 1e4), plain = grid_system(60, 1.0);
   EXPECT_TRUE(stiffly_coupled(columns_of(stiff)));
   EXPECT_FALSE(stiffly_coupled(columns_of(plain)));
-  Eigen::VectorXcd right(stiff.rows());
-  for (long i = 0; i < right.size(); ++i)
-    right[i] = Complex(std::sin(0.1 * double(i)), std::cos(0.37 * double(i)));
-  const Eigen::SimplicialLLT<Eigen::SparseMatrix<Complex>> direct(stiff);
-  ASSERT_EQ(direct.info(), Eigen::Success);
-  const Eigen::VectorXcd expected = direct.solve(right);
+  const Eigen::VectorXcd right = wavy_right(stiff.rows());
+  const Eigen::VectorXcd expected = solved_directly(stiff, right);
   Eigen::ConjugateGradient<Eigen::SparseMatrix<Complex>, Eigen::Lower | Eigen::Upper> jacobi;
   Eigen::ConjugateGradient<Eigen::SparseMatrix<Complex>, Eigen::Lower | Eigen::Upper, ClusterJacobi>
       clustered;
@@ -419,12 +431,8 @@ TEST(ClusterJacobi, AnUnknownHeldByAStiffPairJoinsItsCluster) {
   clusters.compute(held);
   // Every third unknown, its right neighbour and the one after that: 1200 triples.
   EXPECT_EQ(clusters.cluster_count(), 1200);
-  Eigen::VectorXcd right(held.rows());
-  for (long i = 0; i < right.size(); ++i)
-    right[i] = Complex(std::cos(0.2 * double(i)), std::sin(0.53 * double(i)));
-  const Eigen::SimplicialLLT<Eigen::SparseMatrix<Complex>> direct(held);
-  ASSERT_EQ(direct.info(), Eigen::Success);
-  const Eigen::VectorXcd expected = direct.solve(right);
+  const Eigen::VectorXcd right = wavy_right(held.rows());
+  const Eigen::VectorXcd expected = solved_directly(held, right);
   Eigen::ConjugateGradient<Eigen::SparseMatrix<Complex>, Eigen::Lower | Eigen::Upper, ClusterJacobi>
       clustered;
   clustered.setTolerance(1e-10);
