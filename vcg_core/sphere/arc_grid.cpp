@@ -17,7 +17,7 @@ ArcGrid::ArcGrid(const std::vector<Eigen::Vector3d> &ends,
   for (size_t a = 0; a < arcs.size(); ++a) {
     const Eigen::Vector3d &p = ends[size_t(arcs[a][0])], &q = ends[size_t(arcs[a][1])];
     const Eigen::Vector3d sum = p + q;
-    // Nearly opposite ends (no minor arc to speak of) or a long path: the arc is near everywhere.
+    // Nearly opposite ends (no minor arc to speak of): the arc is near everywhere.
     const double norm = sum.norm();
     const Eigen::Vector3d middle =
         norm > 1e-6 ? Eigen::Vector3d(sum / norm) : Eigen::Vector3d::Zero();
@@ -35,9 +35,7 @@ ArcGrid::ArcGrid(const std::vector<Eigen::Vector3d> &ends,
           const Eigen::Vector3d lower(-1 + x * cell, -1 + y * cell, -1 + z * cell);
           const Eigen::Vector3d nearest =
               middle.cwiseMax(lower).cwiseMin(lower + Eigen::Vector3d::Constant(cell));
-          if ((nearest - middle).norm() <= reach)
-            cells_[size_t(x) + size_t(side) * size_t(y) + size_t(side) * size_t(side) * size_t(z)]
-                .push_back(int(a));
+          if ((nearest - middle).norm() <= reach) cells_[cell_at(x, y, z)].push_back(int(a));
         }
   }
 }

@@ -26,9 +26,11 @@ public:
 private:
   static constexpr int side = 20; // cells per axis
   static int axis_cell(double coordinate);
+  static size_t cell_at(int x, int y, int z) {
+    return size_t(x) + size_t(side) * size_t(y) + size_t(side) * size_t(side) * size_t(z);
+  }
   static size_t cell_of(const Eigen::Vector3d &x) {
-    return size_t(axis_cell(x.x())) + size_t(side) * size_t(axis_cell(x.y())) +
-           size_t(side) * size_t(side) * size_t(axis_cell(x.z()));
+    return cell_at(axis_cell(x.x()), axis_cell(x.y()), axis_cell(x.z()));
   }
   std::vector<std::vector<int>> cells_;
 };
