@@ -67,11 +67,7 @@ TEST(BranchSnapping, SpotsLeftAloneAreSkippedToTheSameResult) {
   const HolomorphicForms forms = compute_holomorphic_forms(mesh);
   const PreparedMesh prepared = prepare_mesh(mesh);
   const FormPair pair = generic_form_pairs(forms.genus).front();
-  Eigen::VectorXcd top = Eigen::VectorXcd::Zero(forms.normalized[0].size()), bottom = top;
-  for (int k = 0; k < forms.genus; ++k) {
-    top += (pair.first[k] + pair.second[k]) * forms.normalized[size_t(k)];
-    bottom += (pair.first[k] - pair.second[k]) * forms.normalized[size_t(k)];
-  }
+  const auto [top, bottom] = ratio_forms(pair, forms.normalized);
   std::vector<PlaneValue> afresh = form_ratio_map(prepared, top, bottom), skipping = afresh;
   SpotsLeftAlone left_alone;
   size_t most_left_alone = 0;

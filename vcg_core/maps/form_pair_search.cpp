@@ -5,7 +5,6 @@
 #include <tuple>
 
 #include "common/errors.h"
-#include "common/parallel_for.h"
 #include "maps/branch_snapping.h"
 #include "maps/fold_untangling.h"
 #include "maps/form_ratio_map.h"
@@ -44,23 +43,8 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
     int crowded = 0;   // faces whose image spans more than a chord of 1 (a quarter of the sphere)
     int untangled = 0; // vertices or regions moved to unfold sliver faces (fold_untangling.h)
   };
-  // The pair's numerator omega1 + omega2 and denominator omega1 - omega2, edge by edge over the
-  // cores.
-  auto forms_of = [&](const FormPair &pair) {
-    const Eigen::VectorXcd top = pair.first + pair.second, bottom = pair.first - pair.second;
-    std::array<Eigen::VectorXcd, 2> out{Eigen::VectorXcd(prepared.edges.edge_count()),
-                                        Eigen::VectorXcd(prepared.edges.edge_count())};
-    parallel_for(size_t(prepared.edges.edge_count()), [&](size_t e) {
-      Complex numerator = 0, denominator = 0;
-      for (int k = 0; k < forms.genus; ++k) {
-        numerator += top[k] * forms.normalized[size_t(k)][long(e)];
-        denominator += bottom[k] * forms.normalized[size_t(k)][long(e)];
-      }
-      out[0][long(e)] = numerator;
-      out[1][long(e)] = denominator;
-    });
-    return out;
-  };
+  // The pair's numerator omega1 + omega2 and denominator omega1 - omega2 (form_pairs.h).
+  auto forms_of = [&](const FormPair &pair) { return ratio_forms(pair, forms.normalized); };
   // Genus 3 and up: where the first pair's guessed map crowds (guessed_crowding: before any
   // solve or snapping), the pair whose guess crowds least (the first such) is tried first, the
   // others after it in the list's order.

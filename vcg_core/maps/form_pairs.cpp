@@ -4,6 +4,8 @@
 #include <complex>
 #include <random>
 
+#include "common/parallel_for.h"
+
 namespace meromorph {
 
 std::vector<FormPair> generic_form_pairs(int genus) {
@@ -24,6 +26,23 @@ std::vector<FormPair> generic_form_pairs(int genus) {
       pairs[size_t(pair)].second[k] = unit();
     }
   return pairs;
+}
+
+std::array<Eigen::VectorXcd, 2> ratio_forms(const FormPair &pair,
+                                            const std::vector<Eigen::VectorXcd> &normalized) {
+  const Eigen::VectorXcd top = pair.first + pair.second, bottom = pair.first - pair.second;
+  const long edge_count = normalized.front().size();
+  std::array<Eigen::VectorXcd, 2> out{Eigen::VectorXcd(edge_count), Eigen::VectorXcd(edge_count)};
+  parallel_for(size_t(edge_count), [&](size_t e) {
+    std::complex<double> numerator = 0, denominator = 0;
+    for (size_t k = 0; k < normalized.size(); ++k) {
+      numerator += top[long(k)] * normalized[k][long(e)];
+      denominator += bottom[long(k)] * normalized[k][long(e)];
+    }
+    out[0][long(e)] = numerator;
+    out[1][long(e)] = denominator;
+  });
+  return out;
 }
 
 } // namespace meromorph

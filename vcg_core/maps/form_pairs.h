@@ -8,8 +8,11 @@
 //      the circle (a_k = exp(2 pi i k / g), b_k = exp(i (4 pi k / g + 0.7))), then the earlier
 //      default (1 and (k + 1) / (g + 1)), then pseudo-random unit coefficients from a fixed seed
 //      (the same list on every machine).
+//      `ratio_forms`: a pair's numerator omega1 + omega2 and denominator omega1 - omega2 per edge,
+//      from the normalized forms' edge values (edge by edge over the cores).
 #pragma once
 
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -20,5 +23,8 @@ namespace meromorph {
 using FormPair = std::pair<Eigen::VectorXcd, Eigen::VectorXcd>;
 
 std::vector<FormPair> generic_form_pairs(int genus);
+
+std::array<Eigen::VectorXcd, 2> ratio_forms(const FormPair &pair,
+                                            const std::vector<Eigen::VectorXcd> &normalized);
 
 } // namespace meromorph
