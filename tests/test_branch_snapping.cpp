@@ -5,6 +5,7 @@
 // branching satisfies Riemann-Hurwitz.
 #include <gtest/gtest.h>
 
+#include "forms/holomorphic_forms.h"
 #include "forms/holomorphic_pipeline.h"
 #include "maps/branch_snapping.h"
 #include "maps/form_pairs.h"
@@ -68,7 +69,10 @@ TEST(BranchSnapping, SpotsLeftAloneAreSkippedToTheSameResult) {
   const PreparedMesh prepared = prepare_mesh(mesh);
   const FormPair pair = generic_form_pairs(forms.genus).front();
   const auto [top, bottom] = ratio_forms(pair, forms.normalized);
-  std::vector<PlaneValue> afresh = form_ratio_map(prepared, top, bottom), skipping = afresh;
+  const Eigen::MatrixXcd normalized_dz =
+      dz_coefficients(mesh, prepared.edges, prepared.geometry, forms.normalized);
+  std::vector<PlaneValue> afresh = form_ratio_map(prepared, ratio_dz(pair, normalized_dz)),
+                          skipping = afresh;
   SpotsLeftAlone left_alone;
   size_t most_left_alone = 0;
   for (int pass = 0; pass < 4; ++pass) {

@@ -800,18 +800,37 @@ TEST(HolomorphicForms, LocalCoefficientsOfDzAndDzBar) {
   EXPECT_NEAR(std::abs(dzbar.g[0]), 1.0, 1e-12);
 }
 
-// Two forms' dz coefficients in one pass are the ones computed form by form, to the bit; and the
-// mesh prepared in two steps (edges first, the rest after the forms) is the mesh prepared at once.
-TEST(HolomorphicForms, PairedDzCoefficientsAndTwoStepPreparationMatchTheSingleOnes) {
+// Several forms' dz coefficients in one pass are the ones computed form by form, to the bit; a
+// pair's, combined from the normalized forms' (ratio_dz), are those of the pair's forms
+// (ratio_forms) to rounding; and the mesh prepared in two steps (edges first, the rest after the
+// forms) is the mesh prepared at once.
+TEST(HolomorphicForms, DzCoefficientsInOnePassAndTwoStepPreparationMatchTheSingleOnes) {
   Mesh mesh;
-  make_genus_surface(mesh, 2, 12);
+  make_genus_surface(mesh, 3, 12);
   const PreparedMesh prepared = prepare_mesh(mesh);
-  const Eigen::VectorXcd first = Eigen::VectorXcd::Random(prepared.edges.edge_count());
-  const Eigen::VectorXcd second = Eigen::VectorXcd::Random(prepared.edges.edge_count());
-  const auto [top, bottom] =
-      dz_coefficients(mesh, prepared.edges, prepared.geometry, first, second);
-  EXPECT_EQ(top, local_coefficients(mesh, prepared.edges, prepared.geometry, first).f);
-  EXPECT_EQ(bottom, local_coefficients(mesh, prepared.edges, prepared.geometry, second).f);
+  std::vector<Eigen::VectorXcd> forms;
+  for (int k = 0; k < 3; ++k)
+    forms.push_back(Eigen::VectorXcd::Random(prepared.edges.edge_count()));
+  const Eigen::MatrixXcd dz = dz_coefficients(mesh, prepared.edges, prepared.geometry, forms);
+  ASSERT_EQ(dz.rows(), 3);
+  ASSERT_EQ(size_t(dz.cols()), mesh.face.size());
+  for (int k = 0; k < 3; ++k) {
+    const std::vector<Complex> single =
+        local_coefficients(mesh, prepared.edges, prepared.geometry, forms[size_t(k)]).f;
+    for (size_t f = 0; f < single.size(); ++f)
+      ASSERT_EQ(dz(k, long(f)), single[f]) << "form " << k << ", face " << f;
+  }
+  for (const FormPair &pair : generic_form_pairs(3)) {
+    const std::array<Eigen::VectorXcd, 2> edge_forms = ratio_forms(pair, forms);
+    const Eigen::MatrixXcd direct =
+        dz_coefficients(mesh, prepared.edges, prepared.geometry, {edge_forms[0], edge_forms[1]});
+    const std::array<std::vector<Complex>, 2> combined = ratio_dz(pair, dz);
+    for (long side = 0; side < 2; ++side)
+      for (size_t f = 0; f < combined[0].size(); ++f)
+        ASSERT_NEAR(std::abs(combined[size_t(side)][f] - direct(side, long(f))), 0.0,
+                    1e-12 * (1 + std::abs(direct(side, long(f)))))
+            << "side " << side << ", face " << f;
+  }
 
   PreparedMesh stepwise = prepare_mesh_edges(mesh);
   EXPECT_TRUE(stepwise.incidence.corners.empty() && stepwise.weights.empty());
@@ -1101,7 +1120,11 @@ TEST(FormRatioMap, GenusTwoRatioHasDegreeTwoAndTheSearchKeepsIt) {
   ASSERT_EQ(forms.genus, 2);
   const Eigen::VectorXcd sum = forms.normalized[0] + forms.normalized[1];
   const Eigen::VectorXcd difference = forms.normalized[0] - forms.normalized[1];
-  const std::vector<PlaneValue> values = form_ratio_map(prepared, sum, difference);
+  const Eigen::MatrixXcd dz =
+      dz_coefficients(eight, prepared.edges, prepared.geometry, {sum, difference});
+  const std::vector<PlaneValue> values =
+      form_ratio_map(prepared, {std::vector<Complex>(dz.row(0).begin(), dz.row(0).end()),
+                                std::vector<Complex>(dz.row(1).begin(), dz.row(1).end())});
   ASSERT_EQ(values.size(), eight.vert.size());
   std::vector<Eigen::Vector3d> sphere = to_sphere(values);
   // The signed image area is twice the sphere's before any branch point is placed.

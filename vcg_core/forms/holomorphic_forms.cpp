@@ -165,19 +165,18 @@ LocalCoefficients local_coefficients(const FaceCorners &faces, const MeshEdges &
   return coefficients_of(faces.size(), edges, geometry, form);
 }
 
-std::array<std::vector<std::complex<double>>, 2>
-dz_coefficients(const Mesh &mesh, const MeshEdges &edges, const FaceGeometry &geometry,
-                const Eigen::VectorXcd &first, const Eigen::VectorXcd &second) {
+Eigen::MatrixXcd dz_coefficients(const Mesh &mesh, const MeshEdges &edges,
+                                 const FaceGeometry &geometry,
+                                 const std::vector<Eigen::VectorXcd> &forms) {
   const size_t face_count = mesh.face.size();
-  std::array<std::vector<std::complex<double>>, 2> out{
-      std::vector<std::complex<double>>(face_count), std::vector<std::complex<double>>(face_count)};
-  const std::complex<double> i(0, 1);
+  Eigen::MatrixXcd out(long(forms.size()), long(face_count));
   parallel_for(face_count, [&](size_t f) {
     const BasisInFrame basis = basis_in_frame(geometry, f);
-    const auto [x1, y1] = in_frame(basis, edges, f, first);
-    const auto [x2, y2] = in_frame(basis, edges, f, second);
-    out[0][f] = (x1 - i * y1) / 2.0;
-    out[1][f] = (x2 - i * y2) / 2.0;
+    for (size_t k = 0; k < forms.size(); ++k) {
+      const auto [x, y] = in_frame(basis, edges, f, forms[k]);
+      // (x - i y) / 2 in real arithmetic: the same bits, without a complex product per form.
+      out(long(k), long(f)) = {(x.real() + y.imag()) / 2.0, (x.imag() - y.real()) / 2.0};
+    }
   });
   return out;
 }

@@ -8,7 +8,6 @@
 //      f dz + g dzbar in an orthonormal frame (e1, n x e1): |g| / |f| is the non-holomorphicity.
 #pragma once
 
-#include <array>
 #include <complex>
 #include <vector>
 
@@ -43,10 +42,12 @@ LocalCoefficients local_coefficients(const Mesh &mesh, const MeshEdges &edges,
                                      const FaceGeometry &geometry, const Eigen::VectorXcd &form);
 LocalCoefficients local_coefficients(const FaceCorners &faces, const MeshEdges &edges,
                                      const FaceGeometry &geometry, const Eigen::VectorXcd &form);
-// The dz coefficients (f of f dz + g dzbar) of two complex forms on the mesh's faces, in one pass
-// (each face's frame and basis worked out once): the same values as local_coefficients(...).f.
-std::array<std::vector<std::complex<double>>, 2>
-dz_coefficients(const Mesh &mesh, const MeshEdges &edges, const FaceGeometry &geometry,
-                const Eigen::VectorXcd &first, const Eigen::VectorXcd &second);
+// The dz coefficients (f of f dz + g dzbar) of complex forms on the mesh's faces, in one pass
+// (each face's frame and basis worked out once): column f holds face f's coefficient of each form
+// (forms x faces), the same values as local_coefficients(...).f form by form. The coefficient is
+// linear in the form: a combination of the forms has the same combination of their columns.
+Eigen::MatrixXcd dz_coefficients(const Mesh &mesh, const MeshEdges &edges,
+                                 const FaceGeometry &geometry,
+                                 const std::vector<Eigen::VectorXcd> &forms);
 
 } // namespace meromorph

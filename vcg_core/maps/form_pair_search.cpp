@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "common/errors.h"
+#include "forms/holomorphic_forms.h"
 #include "maps/branch_snapping.h"
 #include "maps/fold_untangling.h"
 #include "maps/form_ratio_map.h"
@@ -43,16 +44,18 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
     int crowded = 0;   // faces whose image spans more than a chord of 1 (a quarter of the sphere)
     int untangled = 0; // vertices or regions moved to unfold sliver faces (fold_untangling.h)
   };
-  // The pair's numerator omega1 + omega2 and denominator omega1 - omega2 (form_pairs.h).
+  // The pair's numerator omega1 + omega2 and denominator omega1 - omega2 (form_pairs.h), per
+  // edge (for snapping) and their dz coefficients per face (for the map and its forecast), the
+  // latter combined from the normalized forms' dz coefficients, worked out once for all pairs.
   auto forms_of = [&](const FormPair &pair) { return ratio_forms(pair, forms.normalized); };
+  const Eigen::MatrixXcd normalized_dz =
+      dz_coefficients(mesh, prepared.edges, prepared.geometry, forms.normalized);
+  auto dz_of = [&](const FormPair &pair) { return ratio_dz(pair, normalized_dz); };
   // Genus 3 and up: where the first pair's guessed map crowds (guessed_crowding: before any
   // solve or snapping), the pair whose guess crowds least (the first such) is tried first, the
   // others after it in the list's order.
   if (pairs.size() > 1 && forms.genus > 2) {
-    auto crowding = [&](const FormPair &pair) {
-      const auto [numerator, denominator] = forms_of(pair);
-      return guessed_crowding(prepared, numerator, denominator);
-    };
+    auto crowding = [&](const FormPair &pair) { return guessed_crowding(prepared, dz_of(pair)); };
     int least = crowding(pairs[0]);
     size_t least_at = 0;
     for (size_t k = 1; k < pairs.size() && least > 0; ++k) {
@@ -68,9 +71,9 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   // a few values around critical points: on the test and bench meshes the crowded faces were the
   // same before and after, or two apart).
   using PairForms = std::array<Eigen::VectorXcd, 2>; // forms_of's numerator and denominator
-  auto solve = [&](size_t k, const PairForms &pair_forms) {
+  auto solve = [&](size_t k) {
     progress.report(0.6 + 0.1 * double(k) / double(pairs.size()), "meromorphic function");
-    Attempt result{false, 0, form_ratio_map(prepared, pair_forms[0], pair_forms[1]), {}, 0, {}};
+    Attempt result{false, 0, form_ratio_map(prepared, dz_of(pairs[k])), {}, 0, {}};
     if (mobius) result.centring = center_on_sphere(result.values, areas);
     result.crowded = crowded_faces(prepared.incidence, to_sphere(result.values));
     out.attempts = int(k) + 1;
@@ -131,10 +134,9 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   const size_t first_round = std::min<size_t>(pairs.size(), forms.genus == 2 ? 1 : 3);
   std::vector<std::pair<size_t, Attempt>> solved;
   for (size_t k = 0; k < first_round; ++k) {
-    const PairForms pair_forms = forms_of(pairs[k]);
-    Attempt result = solve(k, pair_forms);
+    Attempt result = solve(k);
     if (result.crowded == 0) {
-      finish(pair_forms, result);
+      finish(forms_of(pairs[k]), result);
       if (result.generic) {
         offer(k, std::move(result));
         solved.clear();
@@ -155,9 +157,8 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   }
   // None generic: the next pairs one at a time, until one is.
   for (size_t k = first_round; k < pairs.size() && !(best && best->generic); ++k) {
-    const PairForms pair_forms = forms_of(pairs[k]);
-    Attempt result = solve(k, pair_forms);
-    finish(pair_forms, result);
+    Attempt result = solve(k);
+    finish(forms_of(pairs[k]), result);
     offer(k, std::move(result));
   }
   out.values = std::move(best->values);

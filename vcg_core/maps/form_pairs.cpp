@@ -45,4 +45,22 @@ std::array<Eigen::VectorXcd, 2> ratio_forms(const FormPair &pair,
   return out;
 }
 
+std::array<std::vector<std::complex<double>>, 2> ratio_dz(const FormPair &pair,
+                                                          const Eigen::MatrixXcd &normalized_dz) {
+  const Eigen::VectorXcd top = pair.first + pair.second, bottom = pair.first - pair.second;
+  const size_t face_count = size_t(normalized_dz.cols());
+  std::array<std::vector<std::complex<double>>, 2> out{
+      std::vector<std::complex<double>>(face_count), std::vector<std::complex<double>>(face_count)};
+  parallel_for(face_count, [&](size_t f) {
+    std::complex<double> numerator = 0, denominator = 0;
+    for (long k = 0; k < normalized_dz.rows(); ++k) {
+      numerator += top[k] * normalized_dz(k, long(f));
+      denominator += bottom[k] * normalized_dz(k, long(f));
+    }
+    out[0][f] = numerator;
+    out[1][f] = denominator;
+  });
+  return out;
+}
+
 } // namespace meromorph

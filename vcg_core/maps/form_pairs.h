@@ -9,10 +9,15 @@
 //      default (1 and (k + 1) / (g + 1)), then pseudo-random unit coefficients from a fixed seed
 //      (the same list on every machine).
 //      `ratio_forms`: a pair's numerator omega1 + omega2 and denominator omega1 - omega2 per edge,
-//      from the normalized forms' edge values (edge by edge over the cores).
+//      from the normalized forms' edge values (edge by edge over the cores). `ratio_dz`: the
+//      same two forms' dz coefficients per face, from the normalized forms' (dz_coefficients in
+//      holomorphic_forms.h, forms x faces): the dz coefficient is linear in the form, so a pair's
+//      is the same combination of the normalized forms' columns (face by face over the cores; the
+//      same values up to rounding as dz_coefficients of ratio_forms' two).
 #pragma once
 
 #include <array>
+#include <complex>
 #include <utility>
 #include <vector>
 
@@ -26,5 +31,8 @@ std::vector<FormPair> generic_form_pairs(int genus);
 
 std::array<Eigen::VectorXcd, 2> ratio_forms(const FormPair &pair,
                                             const std::vector<Eigen::VectorXcd> &normalized);
+
+std::array<std::vector<std::complex<double>>, 2> ratio_dz(const FormPair &pair,
+                                                          const Eigen::MatrixXcd &normalized_dz);
 
 } // namespace meromorph

@@ -13,7 +13,6 @@
 #include "common/factorization_threads.h"
 #include "common/parallel_for.h"
 #include "forms/cluster_jacobi.h"
-#include "forms/holomorphic_forms.h"
 #include "mesh/face_vectors.h"
 #include "mesh/mesh_edges.h"
 #include "sphere/sphere_geometry.h"
@@ -310,9 +309,7 @@ std::vector<PlaneValue> blended_values(const ChartGuess &guess, const std::vecto
 
 } // namespace
 
-std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
-                                       const Eigen::VectorXcd &numerator,
-                                       const Eigen::VectorXcd &denominator) {
+std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared, RatioDz dz) {
   const Mesh &mesh = prepared.mesh;
   const MeshEdges &edges = prepared.edges;
   const size_t face_count = mesh.face.size();
@@ -320,9 +317,7 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
   const FaceIncidence &in = prepared.incidence;
   // The forms' dz coefficients per face: their ratio is the function's sample there.
   // (Named references, not a structured binding: C++17 lambdas cannot capture one.)
-  std::array<std::vector<Complex>, 2> coefficients =
-      dz_coefficients(mesh, edges, geometry, numerator, denominator);
-  std::vector<Complex> &top = coefficients[0], &bottom = coefficients[1];
+  std::vector<Complex> &top = dz[0], &bottom = dz[1];
   const ChartGuess guess = chart_guess(prepared, top, bottom);
   const std::vector<char> &near_zero = guess.near_zero, &near_pole = guess.near_pole;
   std::vector<Complex> ratio_f(face_count), ratio_g(face_count);
@@ -346,12 +341,8 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
   return blended_values(guess, f, g);
 }
 
-int guessed_crowding(const PreparedMesh &prepared, const Eigen::VectorXcd &numerator,
-                     const Eigen::VectorXcd &denominator) {
-  const std::array<std::vector<Complex>, 2> coefficients =
-      dz_coefficients(prepared.mesh, prepared.edges, prepared.geometry, numerator, denominator);
-  const std::vector<Complex> &top = coefficients[0], &bottom = coefficients[1];
-  return crowded_faces(prepared.incidence, mean_samples(prepared, top, bottom));
+int guessed_crowding(const PreparedMesh &prepared, const RatioDz &dz) {
+  return crowded_faces(prepared.incidence, mean_samples(prepared, dz[0], dz[1]));
 }
 
 int crowded_faces(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere) {

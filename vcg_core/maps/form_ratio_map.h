@@ -1,9 +1,10 @@
 // Genus >= 2: the ratio of two holomorphic 1-forms, a meromorphic function of degree 2g - 2.
 //
-// In:  a mesh, its edges, and the numerator and denominator forms (complex values per edge).
+// In:  a prepared mesh, and the numerator's and denominator's dz coefficients per face (f of
+//      f dz + g dzbar: form_pairs.h ratio_dz, holomorphic_forms.h dz_coefficients).
 // Out: the value of F = numerator / denominator at every vertex, a value of the extended plane.
-//      Per face, the ratio of the forms' holomorphic coefficients (f of f dz + g dzbar, which
-//      drops the discrete forms' anti-holomorphic error) is a sample of F at the centroid. The
+//      Per face, the ratio of the forms' holomorphic coefficients (which drops the discrete
+//      forms' anti-holomorphic error) is a sample of F at the centroid. The
 //      vertex values are solved for globally, in two charts (F where |F| < 2.5, 1 / F where
 //      |F| > 1/2.5, solved at once, one per core, and blended on the sphere between 1/1.6 and 1.6,
 //      well inside both): the samples are
@@ -15,6 +16,7 @@
 //      vertices consistent, so such meshes map as conformally as remeshed ones.
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include <Eigen/Core>
@@ -26,15 +28,15 @@
 
 namespace meromorph {
 
-std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared,
-                                       const Eigen::VectorXcd &numerator,
-                                       const Eigen::VectorXcd &denominator);
+// The numerator's and denominator's dz coefficients per face, in that order.
+using RatioDz = std::array<std::vector<Complex>, 2>;
+
+std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared, RatioDz dz);
 
 // A forecast of the map's crowding before anything is solved: the faces whose first guess (each
 // vertex at the mean on the sphere of its faces' samples, as the charts start from) spans more
 // than a chord of 1 (a quarter of the sphere), where a zero and a pole of F fall close together.
-int guessed_crowding(const PreparedMesh &prepared, const Eigen::VectorXcd &numerator,
-                     const Eigen::VectorXcd &denominator);
+int guessed_crowding(const PreparedMesh &prepared, const RatioDz &dz);
 
 // The faces whose image (points on the unit sphere per vertex) spans a chord above 1.
 int crowded_faces(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &sphere);
