@@ -108,6 +108,24 @@ void expect_exact_structure(const Mesh &mesh, const HolomorphicForms &forms,
       -Eigen::MatrixXi::Identity(forms.genus, forms.genus);
   EXPECT_EQ(forms.symplectic.transpose() * forms.wedge * forms.symplectic, J) << name;
   EXPECT_LE(forms.wedge_rounding, 1e-9) << name;
+  // The intersection numbers (summed from two sides per face in the conjugate fit's pass) are
+  // Whitney's integrals of h_j ^ h_k over every side of every face, to rounding.
+  for (int j = 0; j < n; ++j)
+    for (int k = 0; k < n; ++k) {
+      const Eigen::VectorXd &a = forms.harmonic[size_t(j)], &b = forms.harmonic[size_t(k)];
+      double integral = 0;
+      for (size_t f = 0; f < intrinsic.face_edges.size(); ++f)
+        for (int side = 0; side < 3; ++side) {
+          const int next = (side + 1) % 3;
+          const double a_side = intrinsic.face_signs[f][side] * a[intrinsic.face_edges[f][side]];
+          const double b_side = intrinsic.face_signs[f][side] * b[intrinsic.face_edges[f][side]];
+          const double a_next = intrinsic.face_signs[f][next] * a[intrinsic.face_edges[f][next]];
+          const double b_next = intrinsic.face_signs[f][next] * b[intrinsic.face_edges[f][next]];
+          integral += (a_side * b_next - a_next * b_side) / 6.0;
+        }
+      EXPECT_EQ(forms.wedge(j, k), std::lround(integral)) << name << " " << j << " " << k;
+      EXPECT_NEAR(integral, std::round(integral), 1e-9) << name << " " << j << " " << k;
+    }
 }
 
 TEST(HolomorphicForms, RiemannMatrixOfGenusTwoAndThree) {

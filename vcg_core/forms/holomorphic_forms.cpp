@@ -16,27 +16,38 @@ namespace {
 // side by side, in the face's frame (e1, n x e1). There *h = (-y, x) for h = (x, y), so that
 // <h_j, h_k> = <x_j, x_k> + <y_j, y_k>, <*h_j, h_k> = <x_j, y_k> - <y_j, x_k> and
 // |*h_j| = |h_j|: one pass over the faces gathers all from the area-weighted Gram matrix of the
-// columns (x_1 .. x_n, y_1 .. y_n), a rank update per chunk of faces.
+// columns (x_1 .. x_n, y_1 .. y_n), a rank update per chunk of faces. `with_sides`: `columns(f,
+// in_frame, sides)` also gives the forms' values along face f's first two sides (the rows of
+// `sides`), and the same pass sums P_jk = sum_f a_0j a_1k for the intersections W = (P - P^T) / 2.
 template <class Columns>
-ConjugateFit conjugate_fit(long n, size_t face_count, const FaceGeometry &geometry,
+ConjugateFit conjugate_fit(long n, size_t face_count, const FaceGeometry &geometry, bool with_sides,
                            const Columns &columns) {
-  const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(2 * n, 2 * n);
-  const Eigen::MatrixXd lower = chunked_sum(face_count, zero, [&](size_t begin, size_t end) {
+  // The Gram matrix's lower triangle beside P (its first 2n columns, P the last n).
+  const Eigen::MatrixXd zero = Eigen::MatrixXd::Zero(2 * n, 3 * n);
+  const Eigen::MatrixXd sums = chunked_sum(face_count, zero, [&](size_t begin, size_t end) {
     Eigen::MatrixXd sum = zero;
     Eigen::MatrixXd rows(long(stacked_block), 2 * n); // common/parallel_for.h
-    Eigen::Matrix2Xd in_frame(2, n);                  // no allocation per face
+    Eigen::MatrixXd first_sides(long(stacked_block), n), second_sides(long(stacked_block), n);
+    Eigen::Matrix2Xd in_frame(2, n), sides(2, n); // no allocation per face
     for (size_t first = begin; first < end; first += stacked_block) {
       const size_t last = std::min(end, first + stacked_block);
       for (size_t f = first; f < last; ++f) {
-        columns(f, in_frame);
+        columns(f, in_frame, sides);
         const double weight = std::sqrt(geometry.areas[f]);
         rows.row(long(f - first)) << weight * in_frame.row(0), weight * in_frame.row(1);
+        first_sides.row(long(f - first)) = sides.row(0);
+        second_sides.row(long(f - first)) = sides.row(1);
       }
-      sum.selfadjointView<Eigen::Lower>().rankUpdate(rows.topRows(long(last - first)).transpose());
+      const long count = long(last - first);
+      sum.leftCols(2 * n).selfadjointView<Eigen::Lower>().rankUpdate(
+          rows.topRows(count).transpose());
+      if (with_sides)
+        sum.block(0, 2 * n, n, n).noalias() +=
+            first_sides.topRows(count).transpose() * second_sides.topRows(count);
     }
     return sum;
   });
-  const Eigen::MatrixXd inner = lower.selfadjointView<Eigen::Lower>();
+  const Eigen::MatrixXd inner = sums.leftCols(2 * n).selfadjointView<Eigen::Lower>();
   const Eigen::MatrixXd xy = inner.bottomLeftCorner(n, n).transpose(); // <x_j, y_k>
   const Eigen::MatrixXd gram = inner.topLeftCorner(n, n) + inner.bottomRightCorner(n, n);
   const Eigen::MatrixXd starred = xy - xy.transpose(); // S = <*h_j, h_k>
@@ -48,6 +59,10 @@ ConjugateFit conjugate_fit(long n, size_t face_count, const FaceGeometry &geomet
   for (long j = 0; j < n; ++j)
     fit.relative_residual =
         std::max(fit.relative_residual, std::sqrt(std::max(0.0, error(j, j)) / gram(j, j)));
+  if (with_sides) {
+    const Eigen::MatrixXd products = sums.block(0, 2 * n, n, n);
+    fit.intersections = (products - products.transpose()) / 2.0;
+  }
   return fit;
 }
 
@@ -108,8 +123,8 @@ Eigen::Vector2d in_face_frame(const FaceFrame &frame, const Eigen::Vector3d &v) 
 ConjugateFit conjugate_coefficients(const std::vector<Eigen::MatrixX3d> &harmonic_vectors,
                                     const FaceGeometry &geometry) {
   const long n = long(harmonic_vectors.size());
-  return conjugate_fit(n, size_t(harmonic_vectors.front().rows()), geometry,
-                       [&](size_t f, Eigen::Matrix2Xd &in_frame) {
+  return conjugate_fit(n, size_t(harmonic_vectors.front().rows()), geometry, false,
+                       [&](size_t f, Eigen::Matrix2Xd &in_frame, Eigen::Matrix2Xd &) {
                          const FaceFrame frame = geometry.frame(f);
                          for (long j = 0; j < n; ++j)
                            in_frame.col(j) = in_face_frame(
@@ -121,19 +136,22 @@ ConjugateFit conjugate_coefficients(const FaceCorners &faces, const MeshEdges &e
                                     const FaceGeometry &geometry,
                                     const std::vector<Eigen::VectorXd> &harmonic_forms) {
   const long n = long(harmonic_forms.size());
-  return conjugate_fit(n, faces.size(), geometry, [&](size_t f, Eigen::Matrix2Xd &in_frame) {
-    const FaceVectorBasis basis = face_vector_basis(faces, geometry, f);
-    const FaceFrame frame = geometry.frame(f);
-    const Eigen::Vector2d first = in_face_frame(frame, basis.first);
-    const Eigen::Vector2d second = in_face_frame(frame, basis.second);
-    const int e0 = edges.face_edges[f][0], e1 = edges.face_edges[f][1];
-    const double s0 = edges.face_signs[f][0], s1 = edges.face_signs[f][1];
-    for (long j = 0; j < n; ++j) {
-      const Eigen::VectorXd &form = harmonic_forms[size_t(j)];
-      const double u1 = s0 * form[e0], u2 = u1 + s1 * form[e1];
-      in_frame.col(j) = u1 * first + u2 * second;
-    }
-  });
+  return conjugate_fit(n, faces.size(), geometry, true,
+                       [&](size_t f, Eigen::Matrix2Xd &in_frame, Eigen::Matrix2Xd &sides) {
+                         const FaceVectorBasis basis = face_vector_basis(faces, geometry, f);
+                         const FaceFrame frame = geometry.frame(f);
+                         const Eigen::Vector2d first = in_face_frame(frame, basis.first);
+                         const Eigen::Vector2d second = in_face_frame(frame, basis.second);
+                         const int e0 = edges.face_edges[f][0], e1 = edges.face_edges[f][1];
+                         const double s0 = edges.face_signs[f][0], s1 = edges.face_signs[f][1];
+                         for (long j = 0; j < n; ++j) {
+                           const Eigen::VectorXd &form = harmonic_forms[size_t(j)];
+                           const double along_first = s0 * form[e0], along_second = s1 * form[e1];
+                           const double u1 = along_first, u2 = u1 + along_second;
+                           in_frame.col(j) = u1 * first + u2 * second;
+                           sides.col(j) << along_first, along_second;
+                         }
+                       });
 }
 
 LocalCoefficients local_coefficients(const FaceGeometry &geometry,

@@ -20,6 +20,11 @@ namespace meromorph {
 struct ConjugateFit {
   Eigen::MatrixXd coefficients; // C
   double relative_residual = 0; // max_j |*h_j - sum_k C_jk h_k| / |h_j| in L2
+  // From the forms' edge values only (empty from face vectors): W_jk = integral of h_j ^ h_k, per
+  // face (a_0 b_1 - a_1 b_0) / 2 from the values along its first two sides, gathered in the same
+  // pass (Whitney's sum over all three sides, periods.h wedge_matrix, for closed forms: no
+  // lengths or angles either).
+  Eigen::MatrixXd intersections;
 };
 
 ConjugateFit conjugate_coefficients(const std::vector<Eigen::MatrixX3d> &harmonic_vectors,

@@ -56,8 +56,9 @@ void measure_residuals(int vertex_count, const MeshEdges &edges, const std::vect
 
 // The periods of tau_j = h_j + i *h_j along the primal loops, the canonical basis from the
 // intersection numbers, the A- and B-periods of phi_k = sum_j P_jk tau_j, the Riemann matrix
-// (and genus 1's reduced modulus). Returns the basis P.
-Eigen::MatrixXd canonical_periods(const MeshEdges &edges, HolomorphicForms &out) {
+// (and genus 1's reduced modulus), with the intersection numbers from `intersections` (the
+// integrals of h_j ^ h_k, summed in the conjugate fit's pass). Returns the basis P.
+Eigen::MatrixXd canonical_periods(const Eigen::MatrixXd &intersections, HolomorphicForms &out) {
   const int n = 2 * out.genus;
   // Periods of tau_j = h_j + i *h_j along the primal loops.
   Eigen::MatrixXd real_periods(n, n);
@@ -73,7 +74,7 @@ Eigen::MatrixXd canonical_periods(const MeshEdges &edges, HolomorphicForms &out)
   for (int k = 0; k < n; ++k)
     loop_sign[k] = integrate(out.homology.dual_forms[k], out.homology.primal_loops[k]);
 
-  out.wedge = wedge_matrix(out.harmonic, edges, &out.wedge_rounding);
+  out.wedge = rounded_intersections(intersections, &out.wedge_rounding);
   out.symplectic = symplectic_basis(out.wedge);
   const Eigen::MatrixXd basis = out.symplectic.cast<double>();
   const Eigen::MatrixXd basis_inverse = basis.inverse();
@@ -220,7 +221,7 @@ HolomorphicForms compute_holomorphic_forms(const PreparedMesh &prepared, SolverK
     const ConjugateFit fit = conjugate_coefficients(faces, edges, geometry, out.harmonic);
     out.conjugate = fit.coefficients;
     out.conjugate_residual = fit.relative_residual;
-    basis = canonical_periods(edges, out);
+    basis = canonical_periods(fit.intersections, out);
     measure_non_holomorphicity(faces, edges, geometry, basis, out);
   }
   normalized_forms(basis, out);

@@ -38,6 +38,11 @@ Eigen::MatrixXi wedge_matrix(const std::vector<Eigen::VectorXd> &closed_forms,
     const Eigen::MatrixXd sum = (products - products.transpose()) / 6.0;
     return sum;
   });
+  return rounded_intersections(integral, largest_rounding);
+}
+
+Eigen::MatrixXi rounded_intersections(const Eigen::MatrixXd &integral, double *largest_rounding) {
+  const long n = integral.rows();
   Eigen::MatrixXi wedge = Eigen::MatrixXi::Zero(n, n);
   double worst = 0;
   for (long j = 0; j < n; ++j)
