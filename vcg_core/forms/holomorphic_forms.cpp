@@ -138,10 +138,9 @@ ConjugateFit conjugate_coefficients(const FaceCorners &faces, const MeshEdges &e
   const long n = long(harmonic_forms.size());
   return conjugate_fit(n, faces.size(), geometry, true,
                        [&](size_t f, Eigen::Matrix2Xd &in_frame, Eigen::Matrix2Xd &sides) {
-                         const FaceVectorBasis basis = face_vector_basis(faces, geometry, f);
-                         const FaceFrame frame = geometry.frame(f);
-                         const Eigen::Vector2d first = in_face_frame(frame, basis.first);
-                         const Eigen::Vector2d second = in_face_frame(frame, basis.second);
+                         const BasisInFrame basis = basis_in_frame(geometry, f);
+                         const Eigen::Vector2d first(basis.first_x, basis.first_y);
+                         const Eigen::Vector2d second(basis.second_x, basis.second_y);
                          const int e0 = edges.face_edges[f][0], e1 = edges.face_edges[f][1];
                          const double s0 = edges.face_signs[f][0], s1 = edges.face_signs[f][1];
                          for (long j = 0; j < n; ++j) {
