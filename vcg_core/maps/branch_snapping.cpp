@@ -6,6 +6,7 @@
 #include <set>
 #include <tuple>
 
+#include "common/errors.h"
 #include "common/parallel_for.h"
 #include "maps/branch_star.h"
 #include "mesh/mesh_edges.h"
@@ -165,6 +166,9 @@ struct Spot {
     for (int f : changed) {
       const size_t i = size_t(std::lower_bound(region_faces.begin(), region_faces.end(), f) -
                               region_faces.begin());
+      if (i == region_faces.size() || region_faces[i] != f)
+        throw InternalError("branch snapping changed face " + std::to_string(f) +
+                            " outside the faces it scores");
       add(score, found_shares[i], -1);
       add(score, face_share(i), 1);
     }
@@ -365,15 +369,19 @@ SpotRepair repair_spot(const PreparedMesh &prepared,
             {0, 0, 0, 0.0},
             {},
             {}};
+  // The faces a change can reach: those at the vertices it can move (a candidate is within
+  // fit_rings of the spot, and moves vertices up to max_shift_rings - 1 rings from itself; the
+  // star and its re-embedding stay within 3). Faces beyond add the same to every score.
   std::vector<int> &faces = spot.region_faces;
   for (const auto &[v, ring] : spot.region)
-    faces.insert(faces.end(), in.faces_of_vertex[size_t(v)].begin(),
-                 in.faces_of_vertex[size_t(v)].end());
+    if (ring <= fit_rings + max_shift_rings - 1)
+      faces.insert(faces.end(), in.faces_of_vertex[size_t(v)].begin(),
+                   in.faces_of_vertex[size_t(v)].end());
   std::sort(faces.begin(), faces.end());
   faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
   spot.measure_as_found();
-  // Everything below reads values at the corners of these faces only (the region is wider than
-  // any change or fit).
+  // Everything below reads values at the corners of these faces only (and the fit's vertices
+  // and the re-embedding's rings, which are among them).
   for (int f : spot.region_faces)
     out.read.insert(out.read.end(), in.corners[size_t(f)].begin(), in.corners[size_t(f)].end());
 
