@@ -32,9 +32,16 @@ bool floater_embedding(const Mesh &mesh, const FaceIncidence &incidence,
     return at != sorted_free.end() && *at == v ? long(at - sorted_free.begin()) : -1L;
   };
   const long m = long(sorted_free.size());
-  std::vector<std::map<int, double>> weight(sorted_free.size());
+  if (m == 0) return true;
+  // total_i x_i - sum over free j of w_ij x_j = sum over fixed j of w_ij chart_j, solved at once
+  // (the system is small: a region of a few rings). Row by row: each neighbour's weight, its
+  // faces' shares added in face order, the neighbours by index.
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::MatrixX2d right = Eigen::MatrixX2d::Zero(m, 2);
+  std::vector<std::pair<int, double>> shares, weight; // (neighbour, share), then summed
   for (long i = 0; i < m; ++i) {
     const int v = sorted_free[size_t(i)];
+    shares.clear();
     for (int g : incidence.faces_of_vertex[size_t(v)]) {
       const auto &t = incidence.corners[size_t(g)];
       const int k = t[0] == v ? 0 : t[1] == v ? 1 : 2;
@@ -43,18 +50,19 @@ bool floater_embedding(const Mesh &mesh, const FaceIncidence &incidence,
       const double to_ahead = (mesh.vert[size_t(v)].cP() - mesh.vert[size_t(ahead)].cP()).Norm(),
                    to_behind = (mesh.vert[size_t(v)].cP() - mesh.vert[size_t(behind)].cP()).Norm();
       if (!(to_ahead > 0 && to_behind > 0 && std::isfinite(w))) return false;
-      weight[size_t(i)][ahead] += w / to_ahead;
-      weight[size_t(i)][behind] += w / to_behind;
+      shares.push_back({ahead, w / to_ahead});
+      shares.push_back({behind, w / to_behind});
     }
-  }
-  if (m == 0) return true;
-  // total_i x_i - sum over free j of w_ij x_j = sum over fixed j of w_ij chart_j, solved at once
-  // (the system is small: a region of a few rings).
-  std::vector<Eigen::Triplet<double>> entries;
-  Eigen::MatrixX2d right = Eigen::MatrixX2d::Zero(m, 2);
-  for (long i = 0; i < m; ++i) {
+    std::stable_sort(shares.begin(), shares.end(),
+                     [](const auto &a, const auto &b) { return a.first < b.first; });
+    weight.clear();
+    for (const auto &[w, share] : shares)
+      if (!weight.empty() && weight.back().first == w)
+        weight.back().second += share;
+      else
+        weight.push_back({w, 0.0 + share});
     double total = 0;
-    for (const auto &[w, value] : weight[size_t(i)]) {
+    for (const auto &[w, value] : weight) {
       total += value;
       const long j = number(w);
       if (j >= 0) {
