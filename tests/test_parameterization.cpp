@@ -1,8 +1,10 @@
 // The main job against exact results: degree, branch points and Riemann-Hurwitz, layers that each
 // cover the sphere once, no folds away from branch points, Moebius centring, seam-correct wedges.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -239,6 +241,35 @@ TEST(Parameterization, SolidAnglesOfTinyTrianglesKeepTheirSign) {
   EXPECT_NEAR(signed_solid_angle(a, c, b), -area, 0.05e-20);
   EXPECT_FALSE(folded_image(a, b, c));
   EXPECT_TRUE(folded_image(a, c, b));
+}
+
+// The shortcut that settles "the solid angle is above a threshold" without an arctangent never
+// says so wrongly, and settles most triangles: random triangles of every size from 1e-9 to
+// half the sphere, either orientation, flat ones and ones past a hemisphere, at the thresholds
+// the fold and flatness tests ask (0 and 1e-9 of the longest chord squared).
+TEST(Parameterization, SolidAngleShortcutAgreesWithTheArctangent) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  auto point = [&] {
+    return Eigen::Vector3d(unit(random), unit(random), unit(random)).normalized();
+  };
+  int settled = 0, tried = 0;
+  for (int k = 0; k < 200000; ++k) {
+    const Eigen::Vector3d a = point();
+    const double size = std::pow(10.0, -9.0 * std::abs(unit(random)));
+    const Eigen::Vector3d b = (a + size * point()).normalized();
+    Eigen::Vector3d c = (a + size * point()).normalized();
+    if (k % 10 == 0) c = (a + 0.37 * (b - a)).normalized(); // flat to rounding
+    const double chord =
+        std::max({(a - b).squaredNorm(), (b - c).squaredNorm(), (c - a).squaredNorm()});
+    for (const double threshold : {0.0, 1e-9 * chord}) {
+      ++tried;
+      if (!solid_angle_clearly_above(a, b, c, threshold)) continue;
+      ++settled;
+      ASSERT_GT(signed_solid_angle(a, b, c), threshold) << k << " " << size;
+    }
+  }
+  EXPECT_GT(settled, tried / 3); // about half the triangles turn the right way
 }
 
 TEST(Parameterization, GenusZeroConvergesToConformalUnderRefinement) {

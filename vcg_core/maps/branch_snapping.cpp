@@ -9,6 +9,7 @@
 #include "common/errors.h"
 #include "common/parallel_for.h"
 #include "maps/branch_star.h"
+#include "mesh/local_numbers.h"
 #include "mesh/mesh_edges.h"
 #include "sphere/branch_points.h"
 #include "sphere/map_quality.h"
@@ -114,6 +115,8 @@ using Moves = std::vector<std::pair<int, Eigen::Vector3d>>;
 // doubling: not a fold), then winding not 2 at the branch vertex, then angle distortion.
 using Score = std::tuple<int, int, int, double>;
 
+struct ScoredFaces {}; // LocalNumbers' tag for a spot's region faces
+
 // The map around one trouble spot, as it is changed and scored.
 struct Spot {
   const Mesh &mesh;
@@ -129,7 +132,9 @@ struct Spot {
   std::vector<Score> found_shares;
   Score found_total{0, 0, 0, 0.0};
   std::vector<int> moved;
-  std::vector<std::array<double, 3>> corner_angles; // per region face, on the surface
+  std::vector<std::array<double, 3>> corner_angles;       // per region face, on the surface
+  const LocalNumbers<ScoredFaces> *face_number = nullptr; // a region face's index, else -1
+  mutable std::vector<char> changed;                      // per region face: the score's marks
 
   // The share of region face i (`region_faces`' order).
   Score face_share(size_t i) const {
@@ -157,21 +162,22 @@ struct Spot {
   Score score(int branch_vertex) const {
     Score score = found_total;
     std::get<2>(score) = branch_vertex < 0 || vertex_winding(in, sphere, branch_vertex) != 2;
-    std::vector<int> changed; // the faces around moved vertices (all in the region)
+    // The faces around moved vertices (all among the region's), marked, then counted afresh in
+    // the region's order.
     for (int v : moved)
-      changed.insert(changed.end(), in.faces_of_vertex[size_t(v)].begin(),
-                     in.faces_of_vertex[size_t(v)].end());
-    std::sort(changed.begin(), changed.end());
-    changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
-    for (int f : changed) {
-      const size_t i = size_t(std::lower_bound(region_faces.begin(), region_faces.end(), f) -
-                              region_faces.begin());
-      if (i == region_faces.size() || region_faces[i] != f)
-        throw InternalError("branch snapping changed face " + std::to_string(f) +
-                            " outside the faces it scores");
-      add(score, found_shares[i], -1);
-      add(score, face_share(i), 1);
-    }
+      for (int f : in.faces_of_vertex[size_t(v)]) {
+        const int i = (*face_number)(f);
+        if (i < 0)
+          throw InternalError("branch snapping changed face " + std::to_string(f) +
+                              " outside the faces it scores");
+        changed[size_t(i)] = 1;
+      }
+    for (size_t i = 0; i < changed.size(); ++i)
+      if (changed[i]) {
+        changed[i] = 0;
+        add(score, found_shares[i], -1);
+        add(score, face_share(i), 1);
+      }
     return score;
   }
   // Moves applied (what they replace appended to `saved`), the spot scored.
@@ -368,6 +374,8 @@ SpotRepair repair_spot(const PreparedMesh &prepared,
             {},
             {0, 0, 0, 0.0},
             {},
+            {},
+            nullptr,
             {}};
   // The faces a change can reach: those at the vertices it can move (a candidate is within
   // fit_rings of the spot, and moves vertices up to max_shift_rings - 1 rings from itself; the
@@ -379,6 +387,9 @@ SpotRepair repair_spot(const PreparedMesh &prepared,
                    in.faces_of_vertex[size_t(v)].end());
   std::sort(faces.begin(), faces.end());
   faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+  const LocalNumbers<ScoredFaces> face_numbers(faces, in.corners.size());
+  spot.face_number = &face_numbers;
+  spot.changed.assign(faces.size(), 0);
   spot.measure_as_found();
   // Everything below reads values at the corners of these faces only (and the fit's vertices
   // and the re-embedding's rings, which are among them).

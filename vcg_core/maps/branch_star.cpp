@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "maps/floater_embedding.h"
+#include "mesh/local_numbers.h"
 
 namespace meromorph {
 
@@ -32,36 +33,30 @@ std::vector<int> ordered_ring(const FaceIncidence &in, int vertex) {
 
 namespace {
 
-// The vertices `distance` lists, numbered in its order (by vertex), found in constant time: one
-// array per thread over the mesh's vertices, set for one re-embedding and cleared after (it
-// touches a few rings only). Their chart positions are kept in that numbering.
+// The vertices `distance` lists, numbered in its order (by vertex), found in constant time (their
+// chart positions are kept in that numbering), and their ring distances.
+struct RegionVertices {};
 class RegionIndex {
 public:
-  RegionIndex(const RingDistances &distance, size_t vertex_count) : distance_(distance) {
-    thread_local std::vector<int> numbers;
-    if (numbers.size() < vertex_count) numbers.assign(vertex_count, -1);
-    numbers_ = &numbers;
-    int number = 0;
-    for (const auto &entry : distance)
-      numbers[size_t(entry.first)] = number++;
-  }
-  ~RegionIndex() {
-    for (const auto &entry : distance_)
-      (*numbers_)[size_t(entry.first)] = -1;
-  }
-  RegionIndex(const RegionIndex &) = delete;
-  RegionIndex &operator=(const RegionIndex &) = delete;
+  RegionIndex(const RingDistances &distance, size_t vertex_count)
+      : distance_(distance), numbers_(vertices_of(distance), vertex_count) {}
   // The vertex's number, -1 beyond the region.
-  int operator()(int vertex) const { return (*numbers_)[size_t(vertex)]; }
+  int operator()(int vertex) const { return numbers_(vertex); }
   // Its ring distance, -1 beyond the region.
   int ring(int vertex) const {
-    const int number = (*this)(vertex);
+    const int number = numbers_(vertex);
     return number < 0 ? -1 : distance_.begin()[number].second;
   }
 
 private:
+  static std::vector<int> vertices_of(const RingDistances &distance) {
+    std::vector<int> vertices;
+    for (const auto &entry : distance)
+      vertices.push_back(entry.first);
+    return vertices;
+  }
   const RingDistances &distance_;
-  std::vector<int> *numbers_;
+  LocalNumbers<RegionVertices> numbers_;
 };
 
 // Chart positions by region number.

@@ -39,6 +39,7 @@ bool folded_or_flat(const FaceIncidence &in, const std::vector<Eigen::Vector3d> 
   const Eigen::Vector3d &a = sphere[c[0]], &b = sphere[c[1]], &d = sphere[c[2]];
   const double chord =
       std::max({(a - b).squaredNorm(), (b - d).squaredNorm(), (d - a).squaredNorm()});
+  if (solid_angle_clearly_above(a, b, d, 1e-9 * chord)) return false; // no arctangent needed
   return !(signed_solid_angle(a, b, d) > 1e-9 * chord);
 }
 

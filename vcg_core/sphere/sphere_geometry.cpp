@@ -1,6 +1,7 @@
 #include "sphere/sphere_geometry.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include <Eigen/Geometry>
@@ -31,14 +32,31 @@ Complex to_plane(const Eigen::Vector3d &p) {
   return {p.x() / denominator, -p.y() / denominator};
 }
 
+namespace {
+
+// Van Oosterom and Strackee (1983): the solid angle is 2 atan2(numerator, denominator). The
+// triple product a . (b x c) equals a . ((b - a) x (c - a)); the differences keep it accurate
+// relative to a tiny triangle's area (the plain form has an error of about 1e-16 whatever the
+// triangle's size).
+std::array<double, 2> solid_angle_parts(const Eigen::Vector3d &a, const Eigen::Vector3d &b,
+                                        const Eigen::Vector3d &c) {
+  return {a.dot((b - a).cross(c - a)), 1.0 + a.dot(b) + b.dot(c) + c.dot(a)};
+}
+
+} // namespace
+
 double signed_solid_angle(const Eigen::Vector3d &a, const Eigen::Vector3d &b,
                           const Eigen::Vector3d &c) {
-  // Van Oosterom and Strackee (1983). The triple product a . (b x c) equals
-  // a . ((b - a) x (c - a)); the differences keep it accurate relative to a tiny triangle's area
-  // (the plain form has an error of about 1e-16 whatever the triangle's size).
-  const double numerator = a.dot((b - a).cross(c - a));
-  const double denominator = 1.0 + a.dot(b) + b.dot(c) + c.dot(a);
+  const auto [numerator, denominator] = solid_angle_parts(a, b, c);
   return 2.0 * std::atan2(numerator, denominator);
+}
+
+bool solid_angle_clearly_above(const Eigen::Vector3d &a, const Eigen::Vector3d &b,
+                               const Eigen::Vector3d &c, double threshold) {
+  // atan(x) >= (pi / 4) x on [0, 1], and atan2 >= pi / 4 beyond (or d <= 0): n > threshold d
+  // leaves a margin of pi / 2 over the threshold, far more than the rounding of either side.
+  const auto [numerator, denominator] = solid_angle_parts(a, b, c);
+  return numerator > 0 && (denominator <= 0 || numerator > threshold * denominator);
 }
 
 Complex chart_at(const Eigen::Vector3d &p, const Eigen::Vector3d &q) {
@@ -61,6 +79,8 @@ double swept_angle(const Eigen::Vector3d &center, const Eigen::Vector3d &a,
 }
 
 bool folded_image(const Eigen::Vector3d &a, const Eigen::Vector3d &b, const Eigen::Vector3d &c) {
+  // A positive numerator puts the angle in (0, 2 pi): not folded, no arctangent needed.
+  if (solid_angle_clearly_above(a, b, c, 0.0)) return false;
   const double chord =
       std::max({(a - b).squaredNorm(), (b - c).squaredNorm(), (c - a).squaredNorm()});
   return signed_solid_angle(a, b, c) < -1e-9 * chord;

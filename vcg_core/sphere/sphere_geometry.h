@@ -33,6 +33,11 @@ Complex to_plane(const Eigen::Vector3d &p); // the north pole itself maps to a h
 
 double signed_solid_angle(const Eigen::Vector3d &a, const Eigen::Vector3d &b,
                           const Eigen::Vector3d &c);
+// Whether the signed solid angle is certainly above `threshold` (>= 0, far below pi) without
+// its arctangent: 2 atan2(n, d) >= (pi / 2) min(n / d, 1) for n > 0. False where that does not
+// settle it (then ask signed_solid_angle).
+bool solid_angle_clearly_above(const Eigen::Vector3d &a, const Eigen::Vector3d &b,
+                               const Eigen::Vector3d &c, double threshold);
 
 // The angle from a to b seen from `center` in its chart, in (-pi + 0.05, pi + 0.05]: a turn of
 // about a half counts as positive. A double point doubles the corners at its vertex, and a corner
