@@ -1140,6 +1140,36 @@ TEST(FormRatioMap, GenusTwoRatioHasDegreeTwoAndTheSearchKeepsIt) {
   EXPECT_EQ(branching.branch_vertices.size(), 6u);
 }
 
+// A coarse genus-8 chain with needles: some pairs' maps lose a sheet where their zeros and poles
+// crowd (image area 2g - 4 spheres before any snapping), which snapping does not give back. The
+// search snaps only a pair whose map has the right area, and that one is generic.
+TEST(FormPairSearch, MapsThatLoseASheetAreNotSnappedWhileAnotherPairIsGeneric) {
+  Mesh mesh;
+  make_genus_surface(mesh, 8, 24);
+  inject_needles(mesh, 0.2);
+  const HolomorphicForms forms = compute_holomorphic_forms(mesh);
+  const PreparedMesh prepared = prepare_mesh(mesh);
+  ASSERT_EQ(forms.genus, 8);
+  const Eigen::MatrixXcd normalized_dz =
+      dz_coefficients(mesh, prepared.edges, prepared.geometry, forms.normalized);
+  // Each pair's map before snapping, its sheets counted from the image area.
+  int sheet_lost = 0;
+  for (const FormPair &pair : generic_form_pairs(forms.genus)) {
+    const double sheets = image_area_over_4pi(
+        mesh, to_sphere(form_ratio_map(prepared, ratio_dz(pair, normalized_dz))));
+    EXPECT_NEAR(sheets, std::round(sheets), 1e-6) << "a closed surface's image: whole spheres";
+    if (std::lround(sheets) != 14) ++sheet_lost;
+  }
+  ASSERT_GE(sheet_lost, 2) << "the surface no longer exercises the case";
+
+  const PairSearch search = search_form_pairs(prepared, forms, {-1, -1}, true, Progress{});
+  const Branching branching = analyse_branching(mesh, to_sphere(search.values), 2 - 2 * 8);
+  EXPECT_EQ(branching.degree, 14);
+  EXPECT_TRUE(branching.riemann_hurwitz_ok);
+  EXPECT_GT(search.attempts, 1);
+  EXPECT_EQ(search.snapped_pairs, 1) << "only the generic pair's map is snapped";
+}
+
 TEST(Genus1Placement, FlatCornersAndAreasOfAGridTorus) {
   Mesh mesh;
   make_grid_torus(mesh, 2.0, 1.0, 48, 24);

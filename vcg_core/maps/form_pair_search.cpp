@@ -1,6 +1,7 @@
 #include "maps/form_pair_search.h"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <tuple>
 
@@ -43,6 +44,10 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
     Branching measured;
     int crowded = 0;   // faces whose image spans more than a chord of 1 (a quarter of the sphere)
     int untangled = 0; // vertices or regions moved to unfold sliver faces (fold_untangling.h)
+    // Before snapping, the image's area is not 2g - 2 sheets: the map lost or gained a sheet
+    // where zeros and poles crowd, and snapping (which moves values around critical points
+    // only) has never made such a map generic on the test and bench meshes.
+    bool degree_off = false;
   };
   // The pair's numerator omega1 + omega2 and denominator omega1 - omega2 (form_pairs.h), per
   // edge (for snapping) and their dz coefficients per face (for the map and its forecast), the
@@ -75,13 +80,16 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
     progress.report(0.6 + 0.1 * double(k) / double(pairs.size()), "meromorphic function");
     Attempt result{false, 0, form_ratio_map(prepared, dz_of(pairs[k])), {}, 0, {}};
     if (mobius) result.centring = center_on_sphere(result.values, areas);
-    result.crowded = crowded_faces(prepared.incidence, to_sphere(result.values));
-    out.attempts = int(k) + 1;
+    const std::vector<Eigen::Vector3d> sphere = to_sphere(result.values);
+    result.crowded = crowded_faces(prepared.incidence, sphere);
+    result.degree_off = std::lround(image_area_over_4pi(mesh, sphere)) != long(2 * forms.genus - 2);
+    ++out.attempts;
     return result;
   };
   // Its critical points snapped, its branching measured, the ranking's figures. (A pair left
   // for later does not keep its forms, two edge arrays: they are made again when it is snapped.)
   auto finish = [&](const PairForms &pair_forms, Attempt &result) {
+    ++out.snapped_pairs;
     SpotsLeftAlone left_alone; // branch_snapping.h: not worked out again in later passes
     for (int pass = 0; pass < 4; ++pass) {
       const int repaired = snap_branch_points(prepared, {&pair_forms[0], &pair_forms[1]},
@@ -130,34 +138,46 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   // helps there. Genus 3 and up: up to three pairs are solved (on surfaces whose handles crowd
   // everywhere, every pair does), the first that does not crowd finished at once; then they are
   // finished from the least crowded on, and the first generic one is kept (only it is snapped
-  // where it is the least crowded).
+  // where it is the least crowded). Maps whose degree is off are finished last, only where no
+  // other pair is generic.
   const size_t first_round = std::min<size_t>(pairs.size(), forms.genus == 2 ? 1 : 3);
-  std::vector<std::pair<size_t, Attempt>> solved;
-  for (size_t k = 0; k < first_round; ++k) {
+  std::vector<std::pair<size_t, Attempt>> solved, degree_off;
+  auto generic_kept = [&] { return best && best->generic; };
+  for (size_t k = 0; k < first_round && !generic_kept(); ++k) {
     Attempt result = solve(k);
-    if (result.crowded == 0) {
+    if (result.degree_off) {
+      degree_off.emplace_back(k, std::move(result));
+    } else if (result.crowded == 0) {
       finish(forms_of(pairs[k]), result);
-      if (result.generic) {
-        offer(k, std::move(result));
-        solved.clear();
-        break;
-      }
       offer(k, std::move(result));
-      continue;
+    } else {
+      solved.emplace_back(k, std::move(result));
     }
-    solved.emplace_back(k, std::move(result));
   }
   std::stable_sort(solved.begin(), solved.end(), [](const auto &a, const auto &b) {
     return a.second.crowded < b.second.crowded;
   });
   for (auto &[k, result] : solved) {
-    if (best && best->generic) break;
+    if (generic_kept()) break;
     finish(forms_of(pairs[k]), result);
     offer(k, std::move(result));
   }
   // None generic: the next pairs one at a time, until one is.
-  for (size_t k = first_round; k < pairs.size() && !(best && best->generic); ++k) {
+  for (size_t k = first_round; k < pairs.size() && !generic_kept(); ++k) {
     Attempt result = solve(k);
+    if (result.degree_off) {
+      degree_off.emplace_back(k, std::move(result));
+      continue;
+    }
+    finish(forms_of(pairs[k]), result);
+    offer(k, std::move(result));
+  }
+  // Still none: the maps whose degree was off, from the least crowded on.
+  std::stable_sort(degree_off.begin(), degree_off.end(), [](const auto &a, const auto &b) {
+    return a.second.crowded < b.second.crowded;
+  });
+  for (auto &[k, result] : degree_off) {
+    if (generic_kept()) break;
     finish(forms_of(pairs[k]), result);
     offer(k, std::move(result));
   }

@@ -14,7 +14,9 @@
 //      does not crowd snapped and kept at once if generic), then snapped from the least crowded
 //      until one is generic; further pairs one at a time while none is. Where the first pair's
 //      guessed map crowds (form_ratio_map.h's guessed_crowding, before any solve), the pair
-//      whose guess crowds least goes first.
+//      whose guess crowds least goes first. A map whose image area is not 2g - 2 spheres
+//      before snapping (a sheet lost where zeros and poles crowd) is snapped only where no
+//      other pair's map is generic.
 //      Throws ArgumentError for a pair that is not two different form indices.
 #pragma once
 
@@ -38,7 +40,8 @@ struct PairSearch {
   int untangled_vertices = 0; // folds of slivers untangled in the search (fold_untangling.h)
   Branching branching;        // of `values`, as the ranking measured it
   FormPair coefficients;
-  int attempts = 0;
+  int attempts = 0;      // pairs whose map was solved
+  int snapped_pairs = 0; // pairs whose map's critical points were snapped
 };
 
 PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForms &forms,

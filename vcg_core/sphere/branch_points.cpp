@@ -20,6 +20,13 @@ std::vector<double> face_solid_angles(const Mesh &mesh,
   return angles;
 }
 
+double image_area_over_4pi(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere) {
+  double total = 0;
+  for (double angle : face_solid_angles(mesh, sphere))
+    total += angle;
+  return total / (4 * M_PI);
+}
+
 double corner_sweep(const std::vector<Eigen::Vector3d> &sphere, const std::array<int, 3> &corners,
                     int k, const std::vector<Eigen::Vector3d> &side_midpoints, int face) {
   const Eigen::Vector3d &v = sphere[corners[k]], &a = sphere[corners[(k + 1) % 3]],
@@ -78,10 +85,7 @@ Branching analyse_branching(const Mesh &mesh, const std::vector<Eigen::Vector3d>
     if (e >= 2) out.branch_vertices.push_back(int(v));
     out.ramification += e - 1;
   }
-  double total = 0;
-  for (double angle : face_solid_angles(mesh, sphere))
-    total += angle;
-  out.area_over_4pi = total / (4 * M_PI);
+  out.area_over_4pi = image_area_over_4pi(mesh, sphere);
   out.degree = int(std::lround(out.area_over_4pi));
   out.riemann_hurwitz_ok =
       euler == 2 * out.degree - out.ramification && std::abs(out.area_over_4pi - out.degree) < 0.01;

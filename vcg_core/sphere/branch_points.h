@@ -52,4 +52,8 @@ int vertex_winding(const FaceIncidence &in, const std::vector<Eigen::Vector3d> &
 // Signed spherical area of each face's image.
 std::vector<double> face_solid_angles(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere);
 
+// The map's total signed image area over 4 pi (its degree before rounding): the sum of the
+// faces' signed solid angles, an integer up to rounding for a map of a closed surface.
+double image_area_over_4pi(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere);
+
 } // namespace meromorph
