@@ -5,9 +5,10 @@
 // Out: the value of F = numerator / denominator at every vertex, a value of the extended plane.
 //      Per face, the ratio of the forms' holomorphic coefficients (which drops the discrete
 //      forms' anti-holomorphic error) is a sample of F at the centroid. The
-//      vertex values are solved for globally, in two charts (F where |F| < 2.5, 1 / F where
-//      |F| > 1/2.5, solved at once, one per core, and blended on the sphere between 1/1.6 and 1.6,
-//      well inside both): the samples are
+//      vertex values are solved for globally, in two charts (with s the median of |F| over the
+//      vertices' first guesses, F where |F| < 1.6 s, 1 / F where |F| > s / 1.6: half the mesh
+//      each, solved at once, one per core, and blended on the sphere between s / 1.25 and
+//      1.25 s, inside both): the samples are
 //      fitted by least squares, weighted by face area in the sphere's metric, together with the
 //      conformal energy of the piecewise-linear map (Dirichlet energy minus signed image area: zero
 //      where a face's image is similar to the face). A per-vertex fit would differentiate the
