@@ -1170,6 +1170,46 @@ TEST(FormPairSearch, MapsThatLoseASheetAreNotSnappedWhileAnotherPairIsGeneric) {
   EXPECT_EQ(search.snapped_pairs, 1) << "only the generic pair's map is snapped";
 }
 
+// The pair search judges the later pairs from screening solves (form_ratio_map.h): on a coarse
+// genus-5 chain whose pairs all crowd, each pair's screening map has the same image area as its
+// full solve and its crowded faces within two; solved again from the screening map, the map is
+// the full solve's to the tolerance.
+TEST(FormRatioMap, ScreeningSolvesJudgePairsAsFullOnesAndStartTheFullSolve) {
+  Mesh mesh;
+  make_genus_surface(mesh, 5, 20);
+  const HolomorphicForms forms = compute_holomorphic_forms(mesh);
+  const PreparedMesh prepared = prepare_mesh(mesh);
+  const Eigen::MatrixXcd normalized_dz =
+      dz_coefficients(mesh, prepared.edges, prepared.geometry, forms.normalized);
+  const std::vector<FormPair> pairs = generic_form_pairs(forms.genus);
+  int crowding_pairs = 0;
+  for (size_t k = 0; k < 3; ++k) {
+    const RatioDz dz = ratio_dz(pairs[k], normalized_dz);
+    const std::vector<PlaneValue> full = form_ratio_map(prepared, dz);
+    const std::vector<PlaneValue> screened =
+        form_ratio_map(prepared, dz, {screening_tolerance, nullptr});
+    const std::vector<Eigen::Vector3d> full_sphere = to_sphere(full),
+                                       screened_sphere = to_sphere(screened);
+    EXPECT_EQ(std::lround(image_area_over_4pi(mesh, screened_sphere)),
+              std::lround(image_area_over_4pi(mesh, full_sphere)))
+        << k;
+    const int crowded = crowded_faces(prepared.incidence, full_sphere);
+    EXPECT_NEAR(crowded_faces(prepared.incidence, screened_sphere), crowded, 2) << k;
+    crowding_pairs += crowded > 0;
+    double screened_apart = 0, again_apart = 0;
+    const std::vector<Eigen::Vector3d> again =
+        to_sphere(form_ratio_map(prepared, dz, {RatioSolve().tolerance, &screened}));
+    for (size_t v = 0; v < full.size(); ++v) {
+      screened_apart = std::max(screened_apart, (screened_sphere[v] - full_sphere[v]).norm());
+      again_apart = std::max(again_apart, (again[v] - full_sphere[v]).norm());
+    }
+    EXPECT_GT(screened_apart, 1e-6) << k << ": the screening solve stops early";
+    EXPECT_LT(again_apart, 1e-4) << k;
+    EXPECT_LT(again_apart, 0.1 * screened_apart) << k;
+  }
+  EXPECT_GE(crowding_pairs, 2) << "the surface no longer crowds";
+}
+
 TEST(Genus1Placement, FlatCornersAndAreasOfAGridTorus) {
   Mesh mesh;
   make_grid_torus(mesh, 2.0, 1.0, 48, 24);

@@ -48,6 +48,7 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
     // where zeros and poles crowd, and snapping (which moves values around critical points
     // only) has never made such a map generic on the test and bench meshes.
     bool degree_off = false;
+    bool screened = false; // solved to screening_tolerance only (form_ratio_map.h)
   };
   // The pair's numerator omega1 + omega2 and denominator omega1 - omega2 (form_pairs.h), per
   // edge (for snapping) and their dz coefficients per face (for the map and its forecast), the
@@ -74,11 +75,14 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   }
   // A pair's map solved and centred: its crowding is judged before any snapping (snapping moves
   // a few values around critical points: on the test and bench meshes the crowded faces were the
-  // same before and after, or two apart).
-  using PairForms = std::array<Eigen::VectorXcd, 2>; // forms_of's numerator and denominator
-  auto solve = [&](size_t k) {
+  // same before and after, or two apart). `screening`: solved loosely, to be solved again from
+  // there if it is to be snapped (`full_solve`).
+  auto solve = [&](size_t k, bool screening) {
     progress.report(0.6 + 0.1 * double(k) / double(pairs.size()), "meromorphic function");
-    Attempt result{false, 0, form_ratio_map(prepared, dz_of(pairs[k])), {}, 0, {}};
+    RatioSolve how;
+    if (screening) how.tolerance = screening_tolerance;
+    Attempt result{false, 0, form_ratio_map(prepared, dz_of(pairs[k]), how), {}, 0, {}};
+    result.screened = screening;
     if (mobius) result.centring = center_on_sphere(result.values, areas);
     const std::vector<Eigen::Vector3d> sphere = to_sphere(result.values);
     result.crowded = crowded_faces(prepared.incidence, sphere);
@@ -86,9 +90,23 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
     ++out.attempts;
     return result;
   };
+  auto full_solve = [&](size_t k, Attempt &result) {
+    if (!result.screened) return;
+    std::vector<PlaneValue> start = std::move(result.values);
+    if (mobius) { // as form_ratio_map returned it
+      const Mobius undo = result.centring.transformation.inverse();
+      for (PlaneValue &value : start)
+        value = undo.apply(value);
+    }
+    result.values = form_ratio_map(prepared, dz_of(pairs[k]), {RatioSolve().tolerance, &start});
+    if (mobius) result.centring = center_on_sphere(result.values, areas);
+    result.screened = false;
+  };
   // Its critical points snapped, its branching measured, the ranking's figures. (A pair left
   // for later does not keep its forms, two edge arrays: they are made again when it is snapped.)
-  auto finish = [&](const PairForms &pair_forms, Attempt &result) {
+  auto finish = [&](size_t k, Attempt &result) {
+    full_solve(k, result);
+    const std::array<Eigen::VectorXcd, 2> pair_forms = forms_of(pairs[k]);
     ++out.snapped_pairs;
     SpotsLeftAlone left_alone; // branch_snapping.h: not worked out again in later passes
     for (int pass = 0; pass < 4; ++pass) {
@@ -144,11 +162,11 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   std::vector<std::pair<size_t, Attempt>> solved, degree_off;
   auto generic_kept = [&] { return best && best->generic; };
   for (size_t k = 0; k < first_round && !generic_kept(); ++k) {
-    Attempt result = solve(k);
+    Attempt result = solve(k, k > 0);
     if (result.degree_off) {
       degree_off.emplace_back(k, std::move(result));
     } else if (result.crowded == 0) {
-      finish(forms_of(pairs[k]), result);
+      finish(k, result);
       offer(k, std::move(result));
     } else {
       solved.emplace_back(k, std::move(result));
@@ -159,17 +177,17 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   });
   for (auto &[k, result] : solved) {
     if (generic_kept()) break;
-    finish(forms_of(pairs[k]), result);
+    finish(k, result);
     offer(k, std::move(result));
   }
   // None generic: the next pairs one at a time, until one is.
   for (size_t k = first_round; k < pairs.size() && !generic_kept(); ++k) {
-    Attempt result = solve(k);
+    Attempt result = solve(k, false);
     if (result.degree_off) {
       degree_off.emplace_back(k, std::move(result));
       continue;
     }
-    finish(forms_of(pairs[k]), result);
+    finish(k, result);
     offer(k, std::move(result));
   }
   // Still none: the maps whose degree was off, from the least crowded on.
@@ -178,7 +196,7 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   });
   for (auto &[k, result] : degree_off) {
     if (generic_kept()) break;
-    finish(forms_of(pairs[k]), result);
+    finish(k, result);
     offer(k, std::move(result));
   }
   out.values = std::move(best->values);

@@ -33,10 +33,8 @@ namespace {
 // the largest chart 112k unknowns instead of 177k.)
 constexpr double chart_bound = 1.6, blend_bound = 1.25;
 
-// Conjugate gradients on a chart's system: the relative residual asked, and the steps allowed
-// before CHOLMOD takes over. (1e-7 against 1e-10: half the steps, the maps' mean angle error the
-// same to 1e-6 degrees on the genus-2 and -5 bench meshes.)
-constexpr double iterative_tolerance = 1e-7;
+// Conjugate gradients on a chart's system: the steps allowed before CHOLMOD takes over (the
+// relative residual asked: RatioSolve in the header).
 constexpr int iterative_steps = 1000;
 
 // A Hermitian system over the vertices of one region, numbered densely, assembled in place: its
@@ -162,14 +160,15 @@ std::optional<Eigen::SparseMatrix<Complex>> hermitian_matrix(const MeshEdges &ed
   return lower;
 }
 
-// Conjugate gradients on H x = r (`hermitian`: H's lower triangle) from `start`, preconditioned by
-// `Preconditioner`; empty where they do not converge within iterative_steps.
+// Conjugate gradients on H x = r (`hermitian`: H's lower triangle) from `start` to the relative
+// residual `tolerance`, preconditioned by `Preconditioner`; empty where they do not converge
+// within iterative_steps.
 template <class Preconditioner>
-std::optional<Eigen::VectorXcd> conjugate_gradients(const Eigen::SparseMatrix<Complex> &hermitian,
-                                                    const Eigen::VectorXcd &right,
-                                                    const Eigen::VectorXcd &start) {
+std::optional<Eigen::VectorXcd>
+conjugate_gradients(const Eigen::SparseMatrix<Complex> &hermitian, const Eigen::VectorXcd &right,
+                    const Eigen::VectorXcd &start, double tolerance) {
   Eigen::ConjugateGradient<Eigen::SparseMatrix<Complex>, Eigen::Lower, Preconditioner> iterated;
-  iterated.setTolerance(iterative_tolerance);
+  iterated.setTolerance(tolerance);
   iterated.setMaxIterations(iterative_steps);
   iterated.compute(hermitian);
   Eigen::VectorXcd solution = iterated.solveWithGuess(right, start);
@@ -179,13 +178,14 @@ std::optional<Eigen::VectorXcd> conjugate_gradients(const Eigen::SparseMatrix<Co
 
 // The Hermitian positive definite system H x = r. Its data term makes it a screened problem
 // whose condition does not grow with the mesh: conjugate gradients from `start` (the chart's
-// first guess) converge in a number of steps independent of its size, each a product with H.
-// Needles and the close vertices of raw marching cubes couple pairs of unknowns stiffly: then
-// the steps are preconditioned over clusters of them (forms/cluster_jacobi.h), else by the
-// diagonal. Where they do not converge, CHOLMOD factors it (supernodal, complex). H is held as
-// its lower triangle. Empty when it cannot be solved.
+// first guess, or an earlier solve's values) to the relative residual `tolerance` converge in a
+// number of steps independent of its size, each a product with H. Needles and the close vertices of
+// raw marching cubes couple pairs of unknowns stiffly: then the steps are preconditioned over
+// clusters of them (forms/cluster_jacobi.h), else by the diagonal. Where they do not converge,
+// CHOLMOD factors it (supernodal, complex). H is held as its lower triangle. Empty when it cannot
+// be solved.
 std::optional<Eigen::VectorXcd> solve_hermitian(const MeshEdges &edges, ChartSystem &system,
-                                                const Eigen::VectorXcd &start) {
+                                                const Eigen::VectorXcd &start, double tolerance) {
   const int n = system.unknowns;
   // (CHOLMOD cannot analyse an empty matrix, and Eigen does not check that it could.)
   if (n == 0) return std::nullopt;
@@ -199,9 +199,9 @@ std::optional<Eigen::VectorXcd> solve_hermitian(const MeshEdges &edges, ChartSys
   std::optional<Eigen::VectorXcd> iterated =
       stiffly_coupled(
           {n, hermitian.outerIndexPtr(), hermitian.innerIndexPtr(), hermitian.valuePtr()})
-          ? conjugate_gradients<ClusterJacobi>(hermitian, system.right, guess)
+          ? conjugate_gradients<ClusterJacobi>(hermitian, system.right, guess, tolerance)
           : conjugate_gradients<Eigen::DiagonalPreconditioner<Complex>>(hermitian, system.right,
-                                                                        guess);
+                                                                        guess, tolerance);
   if (iterated) return iterated;
   const FactorizationThreads threads(hermitian.rows()); // common/factorization_threads.h
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<Complex>, Eigen::Lower> factored(hermitian);
@@ -212,19 +212,21 @@ std::optional<Eigen::VectorXcd> solve_hermitian(const MeshEdges &edges, ChartSys
 }
 
 // In one chart of the sphere: values F at the vertices of `region` that fit the face samples
-// `ratio` while keeping the piecewise-linear map conformal (see add_face); `guess` where the
-// system cannot be solved or a value comes out not finite.
+// `ratio` while keeping the piecewise-linear map conformal (see add_face), solved from `start`
+// (per mesh vertex) to the relative residual `tolerance`; `guess` where the system cannot be
+// solved or a value comes out not finite.
 std::vector<Complex> solve_chart(const Mesh &mesh, const MeshEdges &edges, const FaceIncidence &in,
                                  const FaceGeometry &geometry, const std::vector<char> &region,
                                  const std::vector<Complex> &ratio,
                                  const std::vector<char> &ratio_known,
-                                 const std::vector<Complex> &guess) {
+                                 const std::vector<Complex> &guess,
+                                 const std::vector<Complex> &start, double tolerance) {
   ChartSystem system = chart_system(mesh, edges, in, geometry, region, ratio, ratio_known, guess);
   std::vector<Complex> values(guess);
-  Eigen::VectorXcd start(system.unknowns);
+  Eigen::VectorXcd first(system.unknowns);
   for (size_t v = 0; v < region.size(); ++v)
-    if (system.id[v] >= 0) start[system.id[v]] = guess[v];
-  const std::optional<Eigen::VectorXcd> solution = solve_hermitian(edges, system, start);
+    if (system.id[v] >= 0) first[system.id[v]] = start[v];
+  const std::optional<Eigen::VectorXcd> solution = solve_hermitian(edges, system, first, tolerance);
   if (!solution) return values;
   for (size_t v = 0; v < region.size(); ++v) {
     const int i = system.id[v];
@@ -328,7 +330,8 @@ std::vector<PlaneValue> blended_values(const ChartGuess &guess, const std::vecto
 
 } // namespace
 
-std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared, RatioDz dz) {
+std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared, RatioDz dz,
+                                       const RatioSolve &how) {
   const Mesh &mesh = prepared.mesh;
   const MeshEdges &edges = prepared.edges;
   const size_t face_count = mesh.face.size();
@@ -349,13 +352,27 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared, RatioDz dz)
   });
   std::vector<Complex>().swap(top); // not held beside the charts' systems
   std::vector<Complex>().swap(bottom);
+  // Where `how` gives values to start from, each chart starts from them where they are finite.
+  std::vector<Complex> start_f, start_g;
+  if (how.start) {
+    start_f = guess.f;
+    start_g = guess.g;
+    parallel_for(start_f.size(), [&](size_t v) {
+      const PlaneValue &value = (*how.start)[v];
+      const Complex w = value.w / guess.scale;
+      if (value.infinite || !std::isfinite(w.real()) || !std::isfinite(w.imag())) return;
+      if (near_zero[v]) start_f[v] = w;
+      if (near_pole[v] && std::abs(w) > 0) start_g[v] = 1.0 / w;
+    });
+  }
   // F / scale where |F / scale| < chart_bound, G = scale / F where |F / scale| > 1 / chart_bound,
   // the two charts at once (each solve runs on one core); blended between.
   std::future<std::vector<Complex>> pole_chart = std::async(std::launch::async, [&] {
-    return solve_chart(mesh, edges, in, geometry, near_pole, ratio_g, known_g, guess.g);
+    return solve_chart(mesh, edges, in, geometry, near_pole, ratio_g, known_g, guess.g,
+                       how.start ? start_g : guess.g, how.tolerance);
   });
-  const std::vector<Complex> f =
-      solve_chart(mesh, edges, in, geometry, near_zero, ratio_f, known_f, guess.f);
+  const std::vector<Complex> f = solve_chart(mesh, edges, in, geometry, near_zero, ratio_f, known_f,
+                                             guess.f, how.start ? start_f : guess.f, how.tolerance);
   const std::vector<Complex> g = pole_chart.get();
   std::vector<PlaneValue> values = blended_values(guess, f, g);
   parallel_for(values.size(), [&](size_t v) { values[v].w *= guess.scale; });

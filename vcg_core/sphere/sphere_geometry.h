@@ -67,6 +67,7 @@ struct Mobius {
 
   PlaneValue apply(const PlaneValue &value) const;
   Mobius after(const Mobius &first) const; // this o first
+  Mobius inverse() const { return {d, -b, -c, a}; }
   // The transformation that takes z1, z2, z3 to w1, w2, w3 (finite, distinct).
   static Mobius through(const Complex (&z)[3], const Complex (&w)[3]);
 };
