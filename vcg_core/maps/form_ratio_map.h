@@ -32,14 +32,16 @@ namespace meromorph {
 // The numerator's and denominator's dz coefficients per face, in that order.
 using RatioDz = std::array<std::vector<Complex>, 2>;
 
-// How the charts are solved: conjugate gradients to the relative residual `tolerance` (1e-7
-// against 1e-10: half the steps, the maps' mean angle error the same to 1e-6 degrees on the
-// genus-2 and -5 bench meshes), from the first guesses or from `start` (per vertex: an earlier
-// solve of the same forms, as it returned them). A screening solve (to 1e-3: a quarter of the
-// steps) gives the same crowded faces and the same image area to a face or two (the pair
-// search's figures, form_pair_search.h); the map kept is solved again from it.
+// How the charts are solved: conjugate gradients to the relative residual `tolerance` (1e-6
+// against 1e-7: 10% to 20% fewer steps, the mean angle error the same to 1e-4 degrees on six
+// generated genus-5 to -10 meshes with needles or raw marching cubes; 1e-7 against 1e-10 had
+// halved the steps, the same to 1e-6 degrees on the genus-2 and -5 bench meshes), from the first
+// guesses or from `start` (per vertex: an earlier solve of the same forms, as it returned them).
+// A screening solve (to 1e-3: a quarter of the steps) gives the same crowded faces and the same
+// image area to a face or two (the pair search's figures, form_pair_search.h); the map kept is
+// solved again from it.
 struct RatioSolve {
-  double tolerance = 1e-7;
+  double tolerance = 1e-6;
   const std::vector<PlaneValue> *start = nullptr;
 };
 constexpr double screening_tolerance = 1e-3;
