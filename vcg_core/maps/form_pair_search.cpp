@@ -76,10 +76,11 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   // A pair's map solved and centred: its crowding is judged before any snapping (snapping moves
   // a few values around critical points: on the test and bench meshes the crowded faces were the
   // same before and after, or two apart). `screening`: solved loosely, to be solved again from
-  // there if it is to be snapped (`full_solve`).
-  auto solve = [&](size_t k, bool screening) {
+  // there if it is to be snapped (`full_solve`). `steps`: where given, the conjugate gradients'.
+  auto solve = [&](size_t k, bool screening, int *steps = nullptr) {
     progress.report(0.6 + 0.1 * double(k) / double(pairs.size()), "meromorphic function");
     RatioSolve how;
+    how.steps = steps;
     if (screening) how.tolerance = screening_tolerance;
     Attempt result{false, 0, form_ratio_map(prepared, dz_of(pairs[k]), how), {}, 0, {}};
     result.screened = screening;
@@ -161,8 +162,16 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   const size_t first_round = std::min<size_t>(pairs.size(), forms.genus == 2 ? 1 : 3);
   std::vector<std::pair<size_t, Attempt>> solved, degree_off;
   auto generic_kept = [&] { return best && best->generic; };
+  // The later pairs of the first round are screened where the first pair's solve took more than
+  // screening_steps conjugate gradient steps: then the steps are most of a solve and a screening
+  // takes a fifth of them (raw marching cubes with needles: 7 to 10 against 36 to 50); on meshes
+  // that take 5 to 18 the system's assembly is most of it, and solving the kept pair again would
+  // cost more than the screening saves.
+  constexpr int screening_steps = 20;
+  int first_steps = 0;
   for (size_t k = 0; k < first_round && !generic_kept(); ++k) {
-    Attempt result = solve(k, k > 0);
+    Attempt result =
+        k == 0 ? solve(k, false, &first_steps) : solve(k, first_steps > screening_steps);
     if (result.degree_off) {
       degree_off.emplace_back(k, std::move(result));
     } else if (result.crowded == 0) {

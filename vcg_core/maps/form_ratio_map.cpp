@@ -162,16 +162,17 @@ std::optional<Eigen::SparseMatrix<Complex>> hermitian_matrix(const MeshEdges &ed
 
 // Conjugate gradients on H x = r (`hermitian`: H's lower triangle) from `start` to the relative
 // residual `tolerance`, preconditioned by `Preconditioner`; empty where they do not converge
-// within iterative_steps.
+// within iterative_steps. `steps`: the steps taken.
 template <class Preconditioner>
 std::optional<Eigen::VectorXcd>
 conjugate_gradients(const Eigen::SparseMatrix<Complex> &hermitian, const Eigen::VectorXcd &right,
-                    const Eigen::VectorXcd &start, double tolerance) {
+                    const Eigen::VectorXcd &start, double tolerance, int &steps) {
   Eigen::ConjugateGradient<Eigen::SparseMatrix<Complex>, Eigen::Lower, Preconditioner> iterated;
   iterated.setTolerance(tolerance);
   iterated.setMaxIterations(iterative_steps);
   iterated.compute(hermitian);
   Eigen::VectorXcd solution = iterated.solveWithGuess(right, start);
+  steps = int(iterated.iterations());
   if (iterated.info() == Eigen::Success && solution.allFinite()) return solution;
   return std::nullopt;
 }
@@ -183,9 +184,10 @@ conjugate_gradients(const Eigen::SparseMatrix<Complex> &hermitian, const Eigen::
 // raw marching cubes couple pairs of unknowns stiffly: then the steps are preconditioned over
 // clusters of them (forms/cluster_jacobi.h), else by the diagonal. Where they do not converge,
 // CHOLMOD factors it (supernodal, complex). H is held as its lower triangle. Empty when it cannot
-// be solved.
+// be solved. `steps`: the conjugate gradients' steps.
 std::optional<Eigen::VectorXcd> solve_hermitian(const MeshEdges &edges, ChartSystem &system,
-                                                const Eigen::VectorXcd &start, double tolerance) {
+                                                const Eigen::VectorXcd &start, double tolerance,
+                                                int &steps) {
   const int n = system.unknowns;
   // (CHOLMOD cannot analyse an empty matrix, and Eigen does not check that it could.)
   if (n == 0) return std::nullopt;
@@ -199,9 +201,9 @@ std::optional<Eigen::VectorXcd> solve_hermitian(const MeshEdges &edges, ChartSys
   std::optional<Eigen::VectorXcd> iterated =
       stiffly_coupled(
           {n, hermitian.outerIndexPtr(), hermitian.innerIndexPtr(), hermitian.valuePtr()})
-          ? conjugate_gradients<ClusterJacobi>(hermitian, system.right, guess, tolerance)
+          ? conjugate_gradients<ClusterJacobi>(hermitian, system.right, guess, tolerance, steps)
           : conjugate_gradients<Eigen::DiagonalPreconditioner<Complex>>(hermitian, system.right,
-                                                                        guess, tolerance);
+                                                                        guess, tolerance, steps);
   if (iterated) return iterated;
   const FactorizationThreads threads(hermitian.rows()); // common/factorization_threads.h
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<Complex>, Eigen::Lower> factored(hermitian);
@@ -214,19 +216,20 @@ std::optional<Eigen::VectorXcd> solve_hermitian(const MeshEdges &edges, ChartSys
 // In one chart of the sphere: values F at the vertices of `region` that fit the face samples
 // `ratio` while keeping the piecewise-linear map conformal (see add_face), solved from `start`
 // (per mesh vertex) to the relative residual `tolerance`; `guess` where the system cannot be
-// solved or a value comes out not finite.
+// solved or a value comes out not finite. `steps`: the conjugate gradients' steps (0: none).
 std::vector<Complex> solve_chart(const Mesh &mesh, const MeshEdges &edges, const FaceIncidence &in,
                                  const FaceGeometry &geometry, const std::vector<char> &region,
                                  const std::vector<Complex> &ratio,
                                  const std::vector<char> &ratio_known,
                                  const std::vector<Complex> &guess,
-                                 const std::vector<Complex> &start, double tolerance) {
+                                 const std::vector<Complex> &start, double tolerance, int &steps) {
   ChartSystem system = chart_system(mesh, edges, in, geometry, region, ratio, ratio_known, guess);
   std::vector<Complex> values(guess);
   Eigen::VectorXcd first(system.unknowns);
   for (size_t v = 0; v < region.size(); ++v)
     if (system.id[v] >= 0) first[system.id[v]] = start[v];
-  const std::optional<Eigen::VectorXcd> solution = solve_hermitian(edges, system, first, tolerance);
+  const std::optional<Eigen::VectorXcd> solution =
+      solve_hermitian(edges, system, first, tolerance, steps);
   if (!solution) return values;
   for (size_t v = 0; v < region.size(); ++v) {
     const int i = system.id[v];
@@ -367,13 +370,16 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared, RatioDz dz,
   }
   // F / scale where |F / scale| < chart_bound, G = scale / F where |F / scale| > 1 / chart_bound,
   // the two charts at once (each solve runs on one core); blended between.
+  int steps_f = 0, steps_g = 0;
   std::future<std::vector<Complex>> pole_chart = std::async(std::launch::async, [&] {
     return solve_chart(mesh, edges, in, geometry, near_pole, ratio_g, known_g, guess.g,
-                       how.start ? start_g : guess.g, how.tolerance);
+                       how.start ? start_g : guess.g, how.tolerance, steps_g);
   });
-  const std::vector<Complex> f = solve_chart(mesh, edges, in, geometry, near_zero, ratio_f, known_f,
-                                             guess.f, how.start ? start_f : guess.f, how.tolerance);
+  const std::vector<Complex> f =
+      solve_chart(mesh, edges, in, geometry, near_zero, ratio_f, known_f, guess.f,
+                  how.start ? start_f : guess.f, how.tolerance, steps_f);
   const std::vector<Complex> g = pole_chart.get();
+  if (how.steps) *how.steps = std::max(steps_f, steps_g);
   std::vector<PlaneValue> values = blended_values(guess, f, g);
   parallel_for(values.size(), [&](size_t v) { values[v].w *= guess.scale; });
   return values;

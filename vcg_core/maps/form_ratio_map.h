@@ -43,6 +43,7 @@ using RatioDz = std::array<std::vector<Complex>, 2>;
 struct RatioSolve {
   double tolerance = 1e-6;
   const std::vector<PlaneValue> *start = nullptr;
+  int *steps = nullptr; // out, where given: the most conjugate gradient steps a chart took
 };
 constexpr double screening_tolerance = 1e-3;
 
