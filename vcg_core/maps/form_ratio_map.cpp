@@ -186,7 +186,7 @@ conjugate_gradients(const Eigen::SparseMatrix<Complex> &hermitian, const Eigen::
 // CHOLMOD factors it (supernodal, complex). H is held as its lower triangle. Empty when it cannot
 // be solved. `steps`: the conjugate gradients' steps.
 std::optional<Eigen::VectorXcd> solve_hermitian(const MeshEdges &edges, ChartSystem &system,
-                                                const Eigen::VectorXcd &start, double tolerance,
+                                                Eigen::VectorXcd start, double tolerance,
                                                 int &steps) {
   const int n = system.unknowns;
   // (CHOLMOD cannot analyse an empty matrix, and Eigen does not check that it could.)
@@ -197,7 +197,8 @@ std::optional<Eigen::VectorXcd> solve_hermitian(const MeshEdges &edges, ChartSys
   system.diagonal = {};
   system.along_edge = {};
   const Eigen::SparseMatrix<Complex> &hermitian = *matrix;
-  const Eigen::VectorXcd guess = start.allFinite() ? start : Eigen::VectorXcd::Zero(n);
+  if (!start.allFinite()) start.setZero();
+  const Eigen::VectorXcd &guess = start;
   std::optional<Eigen::VectorXcd> iterated =
       stiffly_coupled(
           {n, hermitian.outerIndexPtr(), hermitian.innerIndexPtr(), hermitian.valuePtr()})
@@ -224,12 +225,13 @@ std::vector<Complex> solve_chart(const Mesh &mesh, const MeshEdges &edges, const
                                  const std::vector<Complex> &guess,
                                  const std::vector<Complex> &start, double tolerance, int &steps) {
   ChartSystem system = chart_system(mesh, edges, in, geometry, region, ratio, ratio_known, guess);
-  std::vector<Complex> values(guess);
   Eigen::VectorXcd first(system.unknowns);
   for (size_t v = 0; v < region.size(); ++v)
     if (system.id[v] >= 0) first[system.id[v]] = start[v];
+  // (The values per mesh vertex are made after the solve, not held beside its vectors.)
   const std::optional<Eigen::VectorXcd> solution =
-      solve_hermitian(edges, system, first, tolerance, steps);
+      solve_hermitian(edges, system, std::move(first), tolerance, steps);
+  std::vector<Complex> values(guess);
   if (!solution) return values;
   for (size_t v = 0; v < region.size(); ++v) {
     const int i = system.id[v];
