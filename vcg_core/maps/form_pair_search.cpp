@@ -181,9 +181,12 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
       solved.emplace_back(k, std::move(result));
     }
   }
-  std::stable_sort(solved.begin(), solved.end(), [](const auto &a, const auto &b) {
-    return a.second.crowded < b.second.crowded;
-  });
+  auto least_crowded_first = [](std::vector<std::pair<size_t, Attempt>> &attempts) {
+    std::stable_sort(attempts.begin(), attempts.end(), [](const auto &a, const auto &b) {
+      return a.second.crowded < b.second.crowded;
+    });
+  };
+  least_crowded_first(solved);
   for (auto &[k, result] : solved) {
     if (generic_kept()) break;
     finish(k, result);
@@ -200,9 +203,7 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
     offer(k, std::move(result));
   }
   // Still none: the maps whose degree was off, from the least crowded on.
-  std::stable_sort(degree_off.begin(), degree_off.end(), [](const auto &a, const auto &b) {
-    return a.second.crowded < b.second.crowded;
-  });
+  least_crowded_first(degree_off);
   for (auto &[k, result] : degree_off) {
     if (generic_kept()) break;
     finish(k, result);

@@ -198,13 +198,12 @@ std::optional<Eigen::VectorXcd> solve_hermitian(const MeshEdges &edges, ChartSys
   system.along_edge = {};
   const Eigen::SparseMatrix<Complex> &hermitian = *matrix;
   if (!start.allFinite()) start.setZero();
-  const Eigen::VectorXcd &guess = start;
   std::optional<Eigen::VectorXcd> iterated =
       stiffly_coupled(
           {n, hermitian.outerIndexPtr(), hermitian.innerIndexPtr(), hermitian.valuePtr()})
-          ? conjugate_gradients<ClusterJacobi>(hermitian, system.right, guess, tolerance, steps)
+          ? conjugate_gradients<ClusterJacobi>(hermitian, system.right, start, tolerance, steps)
           : conjugate_gradients<Eigen::DiagonalPreconditioner<Complex>>(hermitian, system.right,
-                                                                        guess, tolerance, steps);
+                                                                        start, tolerance, steps);
   if (iterated) return iterated;
   const FactorizationThreads threads(hermitian.rows()); // common/factorization_threads.h
   Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<Complex>, Eigen::Lower> factored(hermitian);
@@ -242,8 +241,9 @@ std::vector<Complex> solve_chart(const Mesh &mesh, const MeshEdges &edges, const
 }
 
 // The two charts' first guesses: per vertex the area-weighted mean on the sphere of its faces'
-// samples F = top / bottom; F in the chart of 0 where |F| < chart_bound, G = 1 / F in the chart
-// of infinity where |F| > 1 / chart_bound.
+// samples F = top / bottom, measured against the median of |F|: F / scale in the chart of 0 where
+// |F / scale| < chart_bound, G = scale / F in the chart of infinity where |F / scale| >
+// 1 / chart_bound.
 struct ChartGuess {
   std::vector<char> near_zero, near_pole;
   std::vector<double> size;  // |F| / scale
@@ -285,10 +285,9 @@ ChartGuess chart_guess(const PreparedMesh &prepared, const std::vector<Complex> 
   std::vector<char> &near_zero = out.near_zero, &near_pole = out.near_pole;
   std::vector<double> &size = out.size;
   std::vector<Complex> &guess_f = out.f, &guess_g = out.g;
-  std::vector<PlaneValue> guess(static_cast<size_t>(n));
   parallel_for(size_t(n), [&](size_t v) {
-    guess[v] = to_plane_value(mean[v]);
-    size[v] = guess[v].infinite ? HUGE_VAL : std::abs(guess[v].w);
+    const PlaneValue guess = to_plane_value(mean[v]);
+    size[v] = guess.infinite ? HUGE_VAL : std::abs(guess.w);
   });
   // The charts split where |F| is its median over the vertices: half the mesh each.
   if (n > 0) {
@@ -298,12 +297,13 @@ ChartGuess chart_guess(const PreparedMesh &prepared, const std::vector<Complex> 
     if (median > 0 && std::isfinite(median)) out.scale = median;
   }
   parallel_for(size_t(n), [&](size_t v) {
-    const Complex w = guess[v].w / out.scale;
+    const PlaneValue guess = to_plane_value(mean[v]);
+    const Complex w = guess.w / out.scale;
     size[v] /= out.scale;
     near_zero[v] = size[v] < chart_bound;
     near_pole[v] = size[v] > 1.0 / chart_bound;
     if (near_zero[v]) guess_f[v] = w;
-    if (near_pole[v] && size[v] > 0 && !guess[v].infinite) guess_g[v] = 1.0 / w;
+    if (near_pole[v] && size[v] > 0 && !guess.infinite) guess_g[v] = 1.0 / w;
   });
   return out;
 }
