@@ -23,6 +23,7 @@
 
 #include "forms/cluster_jacobi.h"
 #include "forms/harmonic_forms.h"
+#include "forms/hermitian_cg.h"
 #include "forms/holomorphic_forms.h"
 #include "forms/holomorphic_pipeline.h"
 #include "forms/homology_basis.h"
@@ -420,6 +421,40 @@ TEST(ClusterJacobi, StiffPairsConvergeInAFractionOfJacobisSteps) {
   EXPECT_EQ(from_lower.preconditioner().cluster_count(), 2400);
   EXPECT_EQ(from_lower.iterations(), clustered.iterations());
   EXPECT_LT((by_lower - expected).norm(), 1e-8 * expected.norm());
+}
+
+// The charts' conjugate gradients (forms/hermitian_cg.h), from the lower triangle of a stiff
+// system: to the direct solution with either preconditioner, the clusters in a fraction of the
+// diagonal's steps; stopped at 1e-3 and gone on to 1e-10, the same steps and the same solution
+// to the bit as in one pass, and the residual of each pass within its tolerance.
+TEST(HermitianConjugateGradients, PausedAndResumedAsIfInOnePass) {
+  const Eigen::SparseMatrix<Complex> stiff = grid_system(60, 1e4);
+  const Eigen::SparseMatrix<Complex> lower = stiff.triangularView<Eigen::Lower>();
+  const Eigen::VectorXcd right = wavy_right(stiff.rows());
+  const Eigen::VectorXcd expected = solved_directly(stiff, right);
+  const Eigen::VectorXcd start = Eigen::VectorXcd::Zero(stiff.rows());
+  using Kind = HermitianConjugateGradients::Preconditioner;
+  HermitianConjugateGradients once(lower, right, start, Kind::clusters);
+  HermitianConjugateGradients diagonal(lower, right, start, Kind::diagonal);
+  ASSERT_TRUE(once.advance(1e-10, 100000));
+  ASSERT_TRUE(diagonal.advance(1e-10, 100000));
+  EXPECT_LT((once.solution() - expected).norm(), 1e-8 * expected.norm());
+  EXPECT_LT((diagonal.solution() - expected).norm(), 1e-8 * expected.norm());
+  EXPECT_LT(once.steps() * 4, diagonal.steps()) << once.steps() << " against " << diagonal.steps();
+  HermitianConjugateGradients twice(lower, right, start, Kind::clusters);
+  ASSERT_TRUE(twice.advance(1e-3, 100000));
+  const int screening_steps = twice.steps();
+  EXPECT_LE((right - stiff * twice.solution()).norm(), 1e-3 * right.norm());
+  EXPECT_GT((twice.solution() - expected).norm(), 1e-6 * expected.norm()) << "stopped early";
+  ASSERT_TRUE(twice.advance(1e-10, 100000));
+  EXPECT_LT(screening_steps, twice.steps());
+  EXPECT_EQ(twice.steps(), once.steps());
+  EXPECT_TRUE(twice.solution() == once.solution());
+  EXPECT_LE((right - stiff * twice.solution()).norm(), 1e-10 * right.norm() * 1.01);
+  // Too few steps allowed: not converged, and told so.
+  HermitianConjugateGradients short_of_steps(lower, right, start, Kind::diagonal);
+  EXPECT_FALSE(short_of_steps.advance(1e-10, 3));
+  EXPECT_EQ(short_of_steps.steps(), 3);
 }
 
 // An unknown whose diagonal comes mostly from its coupling to one of a stiff pair (its coupling
@@ -1208,6 +1243,38 @@ TEST(FormRatioMap, ScreeningSolvesJudgePairsAsFullOnesAndStartTheFullSolve) {
     EXPECT_LT(again_apart, 0.1 * screened_apart) << k;
   }
   EXPECT_GE(crowding_pairs, 2) << "the surface no longer crowds";
+}
+
+// A ratio map solved in passes (form_ratio_map.h's RatioMap): the screening pass and then the
+// full one end at the very values of one full pass (and of form_ratio_map), in the same steps,
+// on a raw marching-cubes genus-4 surface with needles (clustered charts).
+TEST(FormRatioMap, ScreeningThenFullPassIsTheFullSolve) {
+  Mesh mesh;
+  make_genus_surface(mesh, 4, 20, false);
+  inject_needles(mesh, 0.3);
+  const HolomorphicForms forms = compute_holomorphic_forms(mesh);
+  const PreparedMesh prepared = prepare_mesh(mesh);
+  const Eigen::MatrixXcd normalized_dz =
+      dz_coefficients(mesh, prepared.edges, prepared.geometry, forms.normalized);
+  const RatioDz dz = ratio_dz(generic_form_pairs(forms.genus)[0], normalized_dz);
+  RatioMap in_passes(prepared, dz);
+  const std::vector<PlaneValue> screened = in_passes.values(screening_tolerance);
+  const int screening_steps = in_passes.steps();
+  const std::vector<PlaneValue> full = in_passes.values(RatioSolve().tolerance);
+  RatioMap at_once(prepared, dz);
+  const std::vector<PlaneValue> direct = at_once.values(RatioSolve().tolerance);
+  EXPECT_GT(screening_steps, 0);
+  EXPECT_LT(screening_steps, in_passes.steps());
+  EXPECT_EQ(in_passes.steps(), at_once.steps());
+  const std::vector<PlaneValue> wrapped = form_ratio_map(prepared, dz);
+  size_t differing = 0, moved_on = 0;
+  for (size_t v = 0; v < full.size(); ++v) {
+    differing += full[v].w != direct[v].w || full[v].infinite != direct[v].infinite ||
+                 wrapped[v].w != direct[v].w;
+    moved_on += screened[v].w != full[v].w;
+  }
+  EXPECT_EQ(differing, 0u);
+  EXPECT_GT(moved_on, full.size() / 2) << "the full pass moved the screening values on";
 }
 
 TEST(Genus1Placement, FlatCornersAndAreasOfAGridTorus) {

@@ -13,9 +13,15 @@ namespace {
 // The diagonal's real parts.
 std::vector<double> diagonal_of(const CompressedColumns &a) {
   std::vector<double> diagonal(size_t(a.size), 0.0);
-  for (int j = 0; j < a.size; ++j)
-    for (int k = a.outer[j]; k < a.outer[j + 1]; ++k)
+  for (int j = 0; j < a.size; ++j) {
+    const int first = a.outer[j]; // (a lower triangle: the diagonal comes first)
+    if (first < a.outer[j + 1] && a.inner[first] == j) {
+      diagonal[size_t(j)] = a.values[first].real();
+      continue;
+    }
+    for (int k = first; k < a.outer[j + 1]; ++k)
       if (a.inner[k] == j) diagonal[size_t(j)] = a.values[k].real();
+  }
   return diagonal;
 }
 
@@ -28,7 +34,7 @@ double coupling(const std::vector<double> &diagonal, int i, int j, std::complex<
 // |a_ij| / min(a_ii, a_jj): the share of the smaller diagonal that the coupling makes (NaN or
 // negative where a diagonal entry is not positive: never a cluster's coupling then).
 double share(const std::vector<double> &diagonal, int i, int j, std::complex<double> value) {
-  return std::abs(value) / std::min(diagonal[size_t(i)], diagonal[size_t(j)]);
+  return std::sqrt(std::norm(value)) / std::min(diagonal[size_t(i)], diagonal[size_t(j)]);
 }
 
 } // namespace
@@ -42,13 +48,13 @@ bool stiffly_coupled(const CompressedColumns &a) {
   return false;
 }
 
-void ClusterJacobi::build(const CompressedColumns &a) {
+void ClusterJacobi::build(const CompressedColumns &a, bool clustered) {
   const int n = a.size;
   const std::vector<double> diagonal = diagonal_of(a);
   // The couplings above cluster_coupling, strongest first (ties by position: the same clusters
   // on every run; a coupling stored in both triangles comes twice, side by side).
   std::vector<std::tuple<double, int, int>> strong;
-  for (int j = 0; j < n; ++j)
+  for (int j = 0; j < n && clustered; ++j)
     for (int k = a.outer[j]; k < a.outer[j + 1]; ++k) {
       const int i = a.inner[k];
       if (i == j) continue;
@@ -112,19 +118,27 @@ void ClusterJacobi::build(const CompressedColumns &a) {
       block[0] = Scalar(1) / block[0];
       continue;
     }
+    // (On the stack: no allocation per cluster.)
+    using Block = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor,
+                                cluster_size, cluster_size>;
     Eigen::Map<Eigen::MatrixXcd> matrix(block, m, m);
-    const Eigen::LLT<Eigen::MatrixXcd> factor(matrix);
+    const Eigen::LLT<Block> factor{Block(matrix)};
     if (factor.info() == Eigen::Success) {
-      matrix = factor.solve(Eigen::MatrixXcd::Identity(m, m));
+      matrix = factor.solve(Block::Identity(m, m));
     } else { // (rounding can leave a nearly singular block indefinite: Jacobi there)
-      const Eigen::VectorXcd inverse_diagonal = matrix.diagonal().cwiseInverse();
-      matrix = inverse_diagonal.asDiagonal();
+      const Block inverse_diagonal = matrix.diagonal().cwiseInverse().asDiagonal();
+      matrix = inverse_diagonal;
     }
   }
 }
 
 Eigen::VectorXcd ClusterJacobi::solve(const Eigen::VectorXcd &r) const {
   Eigen::VectorXcd z(r.size());
+  solve_into(r, z);
+  return z;
+}
+
+void ClusterJacobi::solve_into(const Eigen::VectorXcd &r, Eigen::VectorXcd &z) const {
   const int clusters = cluster_count();
   for (int c = 0; c < clusters; ++c) {
     const int first = cluster_start_[size_t(c)];
@@ -138,7 +152,6 @@ Eigen::VectorXcd ClusterJacobi::solve(const Eigen::VectorXcd &r) const {
       z[member[i]] = sum;
     }
   }
-  return z;
 }
 
 } // namespace meromorph

@@ -12,6 +12,8 @@
 //      the strongest first, at most cluster_size unknowns a cluster; each block is A's own
 //      principal submatrix (positive definite as A is), so B is too. An unknown alone is
 //      Jacobi's preconditioner, 1 / a_ii.
+//      `build(A, false)`: every unknown alone (Jacobi's preconditioner). `solve_into` writes z into
+//      a vector of the right size (no allocation per step).
 //      `stiffly_coupled(A)`: whether some coupling |a_ij| / sqrt(a_ii a_jj) exceeds
 //      stiff_coupling (where none does, Jacobi alone converges as fast).
 #pragma once
@@ -56,14 +58,14 @@ public:
     build({int(a.rows()), a.outerIndexPtr(), a.innerIndexPtr(), a.valuePtr()});
     return *this;
   }
+  void build(const CompressedColumns &a, bool clustered = true);
   Eigen::VectorXcd solve(const Eigen::VectorXcd &r) const;
+  void solve_into(const Eigen::VectorXcd &r, Eigen::VectorXcd &z) const;
   Eigen::ComputationInfo info() const { return Eigen::Success; }
 
   int cluster_count() const { return int(cluster_start_.size()) - 1; }
 
 private:
-  void build(const CompressedColumns &a);
-
   std::vector<int> members_;        // the unknowns, cluster by cluster
   std::vector<int> cluster_start_;  // per cluster its first place in members_; one more at the end
   std::vector<size_t> block_start_; // per cluster its first entry in inverses_

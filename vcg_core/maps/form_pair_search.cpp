@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <tuple>
 
@@ -36,11 +37,11 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   // mesh is too coarse to resolve a pair's map (its image crowds where both forms live on the
   // same handle), the next pair of the fixed list is tried; the best one is kept.
   struct Attempt {
-    bool generic;
-    int deficit; // |chi - (2 d - ramification)|
+    bool generic = false;
+    int deficit = 0; // |chi - (2 d - ramification)|
     std::vector<PlaneValue> values;
     MobiusCentering centring;
-    int snapped;
+    int snapped = 0;
     Branching measured;
     int crowded = 0;   // faces whose image spans more than a chord of 1 (a quarter of the sphere)
     int untangled = 0; // vertices or regions moved to unfold sliver faces (fold_untangling.h)
@@ -48,7 +49,8 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
     // where zeros and poles crowd, and snapping (which moves values around critical points
     // only) has never made such a map generic on the test and bench meshes.
     bool degree_off = false;
-    bool screened = false; // solved to screening_tolerance only (form_ratio_map.h)
+    bool screened = false;               // solved to screening_tolerance only (form_ratio_map.h)
+    std::unique_ptr<RatioMap> resumable; // a screened map's solve, to go on from
   };
   // The pair's numerator omega1 + omega2 and denominator omega1 - omega2 (form_pairs.h), per
   // edge (for snapping) and their dz coefficients per face (for the map and its forecast), the
@@ -73,33 +75,56 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
     }
     std::rotate(pairs.begin(), pairs.begin() + long(least_at), pairs.begin() + long(least_at) + 1);
   }
-  // A pair's map solved and centred: its crowding is judged before any snapping (snapping moves
-  // a few values around critical points: on the test and bench meshes the crowded faces were the
-  // same before and after, or two apart). `screening`: solved loosely, to be solved again from
-  // there if it is to be snapped (`full_solve`). `steps`: where given, the conjugate gradients'.
-  auto solve = [&](size_t k, bool screening, int *steps = nullptr) {
-    progress.report(0.6 + 0.1 * double(k) / double(pairs.size()), "meromorphic function");
-    RatioSolve how;
-    how.steps = steps;
-    if (screening) how.tolerance = screening_tolerance;
-    Attempt result{false, 0, form_ratio_map(prepared, dz_of(pairs[k]), how), {}, 0, {}};
-    result.screened = screening;
+  // A pair's map centred and judged: its crowding before any snapping (snapping moves a few
+  // values around critical points: on the test and bench meshes the crowded faces were the same
+  // before and after, or two apart), and whether its image area is 2g - 2 spheres.
+  auto judge = [&](Attempt &result) {
     if (mobius) result.centring = center_on_sphere(result.values, areas);
     const std::vector<Eigen::Vector3d> sphere = to_sphere(result.values);
     result.crowded = crowded_faces(prepared.incidence, sphere);
     result.degree_off = std::lround(image_area_over_4pi(mesh, sphere)) != long(2 * forms.genus - 2);
     ++out.attempts;
+  };
+  // The first round's pairs are screened (solved to screening_tolerance, judged there, the solve
+  // kept to go on from: `full_solve`) where the first pair's screening took more than
+  // screening_steps conjugate gradient steps: then the steps are most of a solve and a screening
+  // takes a quarter of them (raw marching cubes with needles: 8 to 14 against 37 to 41); on
+  // meshes that take few (1 to 4, 5 to 12 to the full tolerance) the system's assembly is most of
+  // a solve, and the first pair is solved on at once, judged as fully solved.
+  constexpr int screening_steps = 5;
+  bool screening = false;
+  auto solve = [&](size_t k, bool first_round_pair) {
+    progress.report(0.6 + 0.1 * double(k) / double(pairs.size()), "meromorphic function");
+    auto map = std::make_unique<RatioMap>(prepared, dz_of(pairs[k]));
+    if (k == 0 && first_round_pair) {
+      map->advance(screening_tolerance);
+      screening = map->steps() > screening_steps;
+    }
+    Attempt result;
+    if (first_round_pair && screening) {
+      result.values = map->values(screening_tolerance);
+      result.screened = true;
+      result.resumable = std::move(map);
+    } else {
+      result.values = map->values(RatioSolve().tolerance);
+    }
+    judge(result);
     return result;
   };
   auto full_solve = [&](size_t k, Attempt &result) {
     if (!result.screened) return;
-    std::vector<PlaneValue> start = std::move(result.values);
-    if (mobius) { // as form_ratio_map returned it
-      const Mobius undo = result.centring.transformation.inverse();
-      for (PlaneValue &value : start)
-        value = undo.apply(value);
+    if (result.resumable) {
+      result.values = result.resumable->values(RatioSolve().tolerance);
+      result.resumable.reset();
+    } else { // solved again from its screening map, as form_ratio_map returned it
+      std::vector<PlaneValue> start = std::move(result.values);
+      if (mobius) {
+        const Mobius undo = result.centring.transformation.inverse();
+        for (PlaneValue &value : start)
+          value = undo.apply(value);
+      }
+      result.values = form_ratio_map(prepared, dz_of(pairs[k]), {RatioSolve().tolerance, &start});
     }
-    result.values = form_ratio_map(prepared, dz_of(pairs[k]), {RatioSolve().tolerance, &start});
     if (mobius) result.centring = center_on_sphere(result.values, areas);
     result.screened = false;
   };
@@ -162,23 +187,23 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   const size_t first_round = std::min<size_t>(pairs.size(), forms.genus == 2 ? 1 : 3);
   std::vector<std::pair<size_t, Attempt>> solved, degree_off;
   auto generic_kept = [&] { return best && best->generic; };
-  // The later pairs of the first round are screened where the first pair's solve took more than
-  // screening_steps conjugate gradient steps: then the steps are most of a solve and a screening
-  // takes a fifth of them (raw marching cubes with needles: 7 to 10 against 36 to 50); on meshes
-  // that take 5 to 18 the system's assembly is most of it, and solving the kept pair again would
-  // cost more than the screening saves.
-  constexpr int screening_steps = 20;
-  int first_steps = 0;
   for (size_t k = 0; k < first_round && !generic_kept(); ++k) {
-    Attempt result =
-        k == 0 ? solve(k, false, &first_steps) : solve(k, first_steps > screening_steps);
+    Attempt result = solve(k, true);
     if (result.degree_off) {
+      result.resumable.reset(); // (finished last if at all: solved again from its values then)
       degree_off.emplace_back(k, std::move(result));
     } else if (result.crowded == 0) {
       finish(k, result);
       offer(k, std::move(result));
     } else {
       solved.emplace_back(k, std::move(result));
+      // Only the one to be finished first (the least crowded, the first of equals) keeps its
+      // solve to go on from: both charts' systems, as much memory as the solve itself.
+      auto first_to_finish = std::min_element(solved.begin(), solved.end(), [](auto &a, auto &b) {
+        return a.second.crowded < b.second.crowded;
+      });
+      for (auto at = solved.begin(); at != solved.end(); ++at)
+        if (at != first_to_finish) at->second.resumable.reset();
     }
   }
   auto least_crowded_first = [](std::vector<std::pair<size_t, Attempt>> &attempts) {

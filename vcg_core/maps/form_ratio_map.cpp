@@ -7,12 +7,12 @@
 #include <optional>
 
 #include <Eigen/CholmodSupport>
-#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCore>
 
 #include "common/factorization_threads.h"
 #include "common/parallel_for.h"
 #include "forms/cluster_jacobi.h"
+#include "forms/hermitian_cg.h"
 #include "mesh/face_vectors.h"
 #include "mesh/mesh_edges.h"
 #include "sphere/sphere_geometry.h"
@@ -160,85 +160,77 @@ std::optional<Eigen::SparseMatrix<Complex>> hermitian_matrix(const MeshEdges &ed
   return lower;
 }
 
-// Conjugate gradients on H x = r (`hermitian`: H's lower triangle) from `start` to the relative
-// residual `tolerance`, preconditioned by `Preconditioner`; empty where they do not converge
-// within iterative_steps. `steps`: the steps taken.
-template <class Preconditioner>
-std::optional<Eigen::VectorXcd>
-conjugate_gradients(const Eigen::SparseMatrix<Complex> &hermitian, const Eigen::VectorXcd &right,
-                    const Eigen::VectorXcd &start, double tolerance, int &steps) {
-  Eigen::ConjugateGradient<Eigen::SparseMatrix<Complex>, Eigen::Lower, Preconditioner> iterated;
-  iterated.setTolerance(tolerance);
-  iterated.setMaxIterations(iterative_steps);
-  iterated.compute(hermitian);
-  Eigen::VectorXcd solution = iterated.solveWithGuess(right, start);
-  steps = int(iterated.iterations());
-  if (iterated.info() == Eigen::Success && solution.allFinite()) return solution;
-  return std::nullopt;
-}
+// One chart's system as it is solved: conjugate gradients, paused between calls (a screening
+// solve goes on to the full one from where it stopped), and CHOLMOD where they do not converge.
+// Its matrix H is Hermitian positive definite: its data term makes it a screened problem whose
+// condition does not grow with the mesh, so conjugate gradients converge in a number of steps
+// independent of its size, each a product with H. Needles and the close vertices of raw
+// marching cubes couple pairs of unknowns stiffly: then the steps are preconditioned over
+// clusters of them (forms/cluster_jacobi.h), else by the diagonal.
+struct ChartSolve {
+  std::vector<int> vertex; // per unknown its mesh vertex
+  std::optional<HermitianConjugateGradients> iterated;
+  std::optional<Eigen::VectorXcd> exact; // where conjugate gradients did not converge
+  int steps = 0;
 
-// The Hermitian positive definite system H x = r. Its data term makes it a screened problem
-// whose condition does not grow with the mesh: conjugate gradients from `start` (the chart's
-// first guess, or an earlier solve's values) to the relative residual `tolerance` converge in a
-// number of steps independent of its size, each a product with H. Needles and the close vertices of
-// raw marching cubes couple pairs of unknowns stiffly: then the steps are preconditioned over
-// clusters of them (forms/cluster_jacobi.h), else by the diagonal. Where they do not converge,
-// CHOLMOD factors it (supernodal, complex). H is held as its lower triangle. Empty when it cannot
-// be solved. `steps`: the conjugate gradients' steps.
-std::optional<Eigen::VectorXcd> solve_hermitian(const MeshEdges &edges, ChartSystem &system,
-                                                Eigen::VectorXcd start, double tolerance,
-                                                int &steps) {
-  const int n = system.unknowns;
-  // (CHOLMOD cannot analyse an empty matrix, and Eigen does not check that it could.)
-  if (n == 0) return std::nullopt;
-  if (!system.right.allFinite()) return std::nullopt;
-  std::optional<Eigen::SparseMatrix<Complex>> matrix = hermitian_matrix(edges, system);
-  if (!matrix) return std::nullopt; // the forms are not resolved here
-  system.diagonal = {};
-  system.along_edge = {};
-  const Eigen::SparseMatrix<Complex> &hermitian = *matrix;
-  if (!start.allFinite()) start.setZero();
-  std::optional<Eigen::VectorXcd> iterated =
-      stiffly_coupled(
-          {n, hermitian.outerIndexPtr(), hermitian.innerIndexPtr(), hermitian.valuePtr()})
-          ? conjugate_gradients<ClusterJacobi>(hermitian, system.right, start, tolerance, steps)
-          : conjugate_gradients<Eigen::DiagonalPreconditioner<Complex>>(hermitian, system.right,
-                                                                        start, tolerance, steps);
-  if (iterated) return iterated;
-  const FactorizationThreads threads(hermitian.rows()); // common/factorization_threads.h
-  Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<Complex>, Eigen::Lower> factored(hermitian);
-  if (factored.info() != Eigen::Success) return std::nullopt;
-  Eigen::VectorXcd solution = factored.solve(system.right);
-  if (factored.info() != Eigen::Success) return std::nullopt;
-  return solution;
-}
-
-// In one chart of the sphere: values F at the vertices of `region` that fit the face samples
-// `ratio` while keeping the piecewise-linear map conformal (see add_face), solved from `start`
-// (per mesh vertex) to the relative residual `tolerance`; `guess` where the system cannot be
-// solved or a value comes out not finite. `steps`: the conjugate gradients' steps (0: none).
-std::vector<Complex> solve_chart(const Mesh &mesh, const MeshEdges &edges, const FaceIncidence &in,
-                                 const FaceGeometry &geometry, const std::vector<char> &region,
-                                 const std::vector<Complex> &ratio,
-                                 const std::vector<char> &ratio_known,
-                                 const std::vector<Complex> &guess,
-                                 const std::vector<Complex> &start, double tolerance, int &steps) {
-  ChartSystem system = chart_system(mesh, edges, in, geometry, region, ratio, ratio_known, guess);
-  Eigen::VectorXcd first(system.unknowns);
-  for (size_t v = 0; v < region.size(); ++v)
-    if (system.id[v] >= 0) first[system.id[v]] = start[v];
-  // (The values per mesh vertex are made after the solve, not held beside its vectors.)
-  const std::optional<Eigen::VectorXcd> solution =
-      solve_hermitian(edges, system, std::move(first), tolerance, steps);
-  std::vector<Complex> values(guess);
-  if (!solution) return values;
-  for (size_t v = 0; v < region.size(); ++v) {
-    const int i = system.id[v];
-    if (i >= 0 && std::isfinite((*solution)[i].real()) && std::isfinite((*solution)[i].imag()))
-      values[v] = (*solution)[i];
+  // `start` per mesh vertex. Nothing to solve where the system is empty or not finite (the
+  // forms are not resolved there).
+  ChartSolve(const MeshEdges &edges, ChartSystem system, const std::vector<Complex> &start) {
+    // (CHOLMOD cannot analyse an empty matrix, and Eigen does not check that it could.)
+    if (system.unknowns == 0 || !system.right.allFinite()) return;
+    std::optional<Eigen::SparseMatrix<Complex>> matrix = hermitian_matrix(edges, system);
+    if (!matrix) return;
+    system.diagonal = {};
+    system.along_edge = {};
+    system.edge_in_system = {};
+    vertex.resize(size_t(system.unknowns));
+    Eigen::VectorXcd first(system.unknowns);
+    for (size_t v = 0; v < system.id.size(); ++v)
+      if (system.id[v] >= 0) {
+        vertex[size_t(system.id[v])] = int(v);
+        first[system.id[v]] = start[v];
+      }
+    system.id = {};
+    if (!first.allFinite()) first.setZero();
+    const bool stiff = stiffly_coupled({int(matrix->rows()), matrix->outerIndexPtr(),
+                                        matrix->innerIndexPtr(), matrix->valuePtr()});
+    iterated.emplace(std::move(*matrix), std::move(system.right), std::move(first),
+                     stiff ? HermitianConjugateGradients::Preconditioner::clusters
+                           : HermitianConjugateGradients::Preconditioner::diagonal);
   }
-  return values;
-}
+
+  // On to the relative residual `tolerance`; CHOLMOD (supernodal, complex) where conjugate
+  // gradients do not converge within iterative_steps.
+  void advance(double tolerance) {
+    if (!iterated) return;
+    const bool converged = iterated->advance(tolerance, iterative_steps);
+    steps = iterated->steps();
+    if (converged && iterated->solution().allFinite()) return;
+    {
+      const FactorizationThreads threads(iterated->lower().rows()); // factorization_threads.h
+      Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<Complex>, Eigen::Lower> factored(
+          iterated->lower());
+      if (factored.info() == Eigen::Success) {
+        Eigen::VectorXcd solution = factored.solve(iterated->right());
+        if (factored.info() == Eigen::Success) exact = std::move(solution);
+      }
+    }
+    iterated.reset(); // (not solved: the guess stays)
+  }
+
+  // The values per mesh vertex: the solution where it is finite, else `guess`.
+  std::vector<Complex> values(const std::vector<Complex> &guess) const {
+    std::vector<Complex> out(guess);
+    const Eigen::VectorXcd *solution = exact ? &*exact : iterated ? &iterated->solution() : nullptr;
+    if (!solution) return out;
+    for (size_t i = 0; i < vertex.size(); ++i) {
+      const Complex value = (*solution)[long(i)];
+      if (std::isfinite(value.real()) && std::isfinite(value.imag()))
+        out[size_t(vertex[i])] = value;
+    }
+    return out;
+  }
+};
 
 // The two charts' first guesses: per vertex the area-weighted mean on the sphere of its faces'
 // samples F = top / bottom, measured against the median of |F|: F / scale in the chart of 0 where
@@ -335,8 +327,13 @@ std::vector<PlaneValue> blended_values(const ChartGuess &guess, const std::vecto
 
 } // namespace
 
-std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared, RatioDz dz,
-                                       const RatioSolve &how) {
+struct RatioMap::Charts {
+  ChartGuess guess;
+  std::optional<ChartSolve> zero, pole; // F / scale, and G = scale / F
+};
+
+RatioMap::RatioMap(const PreparedMesh &prepared, RatioDz dz, const std::vector<PlaneValue> *start)
+    : charts_(std::make_unique<Charts>()) {
   const Mesh &mesh = prepared.mesh;
   const MeshEdges &edges = prepared.edges;
   const size_t face_count = mesh.face.size();
@@ -345,7 +342,8 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared, RatioDz dz,
   // The forms' dz coefficients per face: their ratio is the function's sample there.
   // (Named references, not a structured binding: C++17 lambdas cannot capture one.)
   std::vector<Complex> &top = dz[0], &bottom = dz[1];
-  const ChartGuess guess = chart_guess(prepared, top, bottom);
+  charts_->guess = chart_guess(prepared, top, bottom);
+  const ChartGuess &guess = charts_->guess;
   const std::vector<char> &near_zero = guess.near_zero, &near_pole = guess.near_pole;
   std::vector<Complex> ratio_f(face_count), ratio_g(face_count);
   std::vector<char> known_f(face_count), known_g(face_count);
@@ -357,13 +355,13 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared, RatioDz dz,
   });
   std::vector<Complex>().swap(top); // not held beside the charts' systems
   std::vector<Complex>().swap(bottom);
-  // Where `how` gives values to start from, each chart starts from them where they are finite.
+  // Where `start` gives values, each chart starts from them where they are finite.
   std::vector<Complex> start_f, start_g;
-  if (how.start) {
+  if (start) {
     start_f = guess.f;
     start_g = guess.g;
     parallel_for(start_f.size(), [&](size_t v) {
-      const PlaneValue &value = (*how.start)[v];
+      const PlaneValue &value = (*start)[v];
       const Complex w = value.w / guess.scale;
       if (value.infinite || !std::isfinite(w.real()) || !std::isfinite(w.imag())) return;
       if (near_zero[v]) start_f[v] = w;
@@ -371,20 +369,47 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared, RatioDz dz,
     });
   }
   // F / scale where |F / scale| < chart_bound, G = scale / F where |F / scale| > 1 / chart_bound,
-  // the two charts at once (each solve runs on one core); blended between.
-  int steps_f = 0, steps_g = 0;
-  std::future<std::vector<Complex>> pole_chart = std::async(std::launch::async, [&] {
-    return solve_chart(mesh, edges, in, geometry, near_pole, ratio_g, known_g, guess.g,
-                       how.start ? start_g : guess.g, how.tolerance, steps_g);
+  // the two charts' systems made at once, one per core.
+  std::future<void> pole_chart = std::async(std::launch::async, [&] {
+    charts_->pole.emplace(
+        edges, chart_system(mesh, edges, in, geometry, near_pole, ratio_g, known_g, guess.g),
+        start ? start_g : guess.g);
   });
-  const std::vector<Complex> f =
-      solve_chart(mesh, edges, in, geometry, near_zero, ratio_f, known_f, guess.f,
-                  how.start ? start_f : guess.f, how.tolerance, steps_f);
-  const std::vector<Complex> g = pole_chart.get();
-  if (how.steps) *how.steps = std::max(steps_f, steps_g);
-  std::vector<PlaneValue> values = blended_values(guess, f, g);
+  charts_->zero.emplace(
+      edges, chart_system(mesh, edges, in, geometry, near_zero, ratio_f, known_f, guess.f),
+      start ? start_f : guess.f);
+  pole_chart.get();
+}
+
+RatioMap::RatioMap(RatioMap &&) noexcept = default;
+RatioMap &RatioMap::operator=(RatioMap &&) noexcept = default;
+RatioMap::~RatioMap() = default;
+
+void RatioMap::advance(double tolerance) {
+  Charts &charts = *charts_;
+  std::future<void> pole_chart =
+      std::async(std::launch::async, [&] { charts.pole->advance(tolerance); });
+  charts.zero->advance(tolerance);
+  pole_chart.get();
+}
+
+std::vector<PlaneValue> RatioMap::values(double tolerance) {
+  advance(tolerance);
+  const Charts &charts = *charts_;
+  const ChartGuess &guess = charts.guess;
+  std::vector<PlaneValue> values =
+      blended_values(guess, charts.zero->values(guess.f), charts.pole->values(guess.g));
   parallel_for(values.size(), [&](size_t v) { values[v].w *= guess.scale; });
   return values;
+}
+
+int RatioMap::steps() const {
+  return std::max(charts_->zero->steps, charts_->pole->steps);
+}
+
+std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared, RatioDz dz,
+                                       const RatioSolve &how) {
+  return RatioMap(prepared, std::move(dz), how.start).values(how.tolerance);
 }
 
 int guessed_crowding(const PreparedMesh &prepared, const RatioDz &dz) {

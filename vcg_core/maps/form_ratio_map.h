@@ -18,6 +18,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
@@ -39,16 +40,36 @@ using RatioDz = std::array<std::vector<Complex>, 2>;
 // guesses or from `start` (per vertex: an earlier solve of the same forms, as it returned them).
 // A screening solve (to 1e-3: a quarter of the steps) gives the same crowded faces and the same
 // image area to a face or two (the pair search's figures, form_pair_search.h); the map kept is
-// solved again from it.
+// solved on from there (RatioMap).
 struct RatioSolve {
   double tolerance = 1e-6;
   const std::vector<PlaneValue> *start = nullptr;
-  int *steps = nullptr; // out, where given: the most conjugate gradient steps a chart took
 };
 constexpr double screening_tolerance = 1e-3;
 
 std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared, RatioDz dz,
                                        const RatioSolve &how = {});
+
+// The same, solved in passes: `advance(tolerance)` goes on from where the last pass stopped (a
+// screening pass and then the full one take the steps of the full one alone and end at the same
+// values: forms/hermitian_cg.h), `values(tolerance)` advances and returns the map; `steps()` the
+// most conjugate gradient steps a chart has taken so far. Holds both charts' systems (their
+// matrices, preconditioners and the solves' vectors) until it goes.
+class RatioMap {
+public:
+  RatioMap(const PreparedMesh &prepared, RatioDz dz,
+           const std::vector<PlaneValue> *start = nullptr);
+  RatioMap(RatioMap &&) noexcept;
+  RatioMap &operator=(RatioMap &&) noexcept;
+  ~RatioMap();
+  void advance(double tolerance);
+  std::vector<PlaneValue> values(double tolerance);
+  int steps() const;
+
+private:
+  struct Charts;
+  std::unique_ptr<Charts> charts_;
+};
 
 // A forecast of the map's crowding before anything is solved: the faces whose first guess (each
 // vertex at the mean on the sphere of its faces' samples, as the charts start from) spans more
