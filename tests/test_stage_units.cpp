@@ -953,7 +953,7 @@ TEST(FloaterEmbedding, ADiskInTheGnomonicChartHasNoFold) {
     for (int f : in.faces_of_vertex[size_t(v)])
       for (int w : in.corners[size_t(f)])
         if (!free_set.count(w)) rim.insert(w);
-  std::map<int, Eigen::Vector2d> positions;
+  PlanePositions positions;
   for (int v : rim) {
     ASSERT_TRUE(chart.to_chart(
         mesh.vert[size_t(v)].cP().ToEigenVector<Eigen::Vector3d>().normalized(), positions[v]));
@@ -978,12 +978,12 @@ TEST(FloaterEmbedding, AFixedNeighbourWithoutAPositionIsRefused) {
   make_icosphere(mesh, 2);
   const FaceIncidence in = face_incidence(mesh);
   const std::vector<int> ring = ordered_ring(in, 0);
-  std::map<int, Eigen::Vector2d> chart;
+  PlanePositions chart;
   for (size_t j = 1; j < ring.size(); ++j)
     chart[ring[j]] = Eigen::Vector2d(std::cos(2 * M_PI * double(j) / double(ring.size())),
                                      std::sin(2 * M_PI * double(j) / double(ring.size())));
   chart[0] = Eigen::Vector2d(0.5, 0.5);
-  const std::map<int, Eigen::Vector2d> before = chart;
+  const PlanePositions before = chart;
   EXPECT_FALSE(floater_embedding(mesh, in, {0}, chart));
   EXPECT_EQ(chart, before);
   chart[ring[0]] = Eigen::Vector2d(1, 0);

@@ -1,7 +1,9 @@
 #include "maps/branch_snapping.h"
 
 #include <algorithm>
+#include <cstddef>
 #include <map>
+#include <memory_resource>
 #include <queue>
 #include <set>
 #include <tuple>
@@ -18,12 +20,15 @@
 namespace meromorph {
 namespace {
 
+// Values by vertex over a spot's region, their nodes from the caller's memory resource.
+using Coordinates = std::pmr::map<int, Complex>;
+
 // A conformal coordinate on `region` (a disc): the integral of a holomorphic 1-form from
 // `origin` along edges (path independent there: the form is closed).
-std::map<int, Complex> integrated_coordinate(const MeshEdges &edges, const IndexLists &edges_at,
-                                             const Eigen::VectorXcd &form, int origin,
-                                             const RingDistances &region) {
-  std::map<int, Complex> z{{origin, Complex()}};
+Coordinates integrated_coordinate(const MeshEdges &edges, const IndexLists &edges_at,
+                                  const Eigen::VectorXcd &form, int origin,
+                                  const RingDistances &region, std::pmr::memory_resource *pool) {
+  Coordinates z({{origin, Complex()}}, pool);
   std::queue<int> queue;
   queue.push(origin);
   while (!queue.empty()) {
@@ -279,8 +284,8 @@ struct CriticalModel {
 
 // The model fitted by least squares on the vertices within `fit_rings` of the spot; false where
 // the fit is not finite.
-bool fit_critical_model(const Spot &spot, const std::map<int, Complex> &z, int critical_points,
-                        int fit_rings, CriticalModel &model) {
+bool fit_critical_model(const Spot &spot, const Coordinates &z, int critical_points, int fit_rings,
+                        CriticalModel &model) {
   for (const auto &[v, ring] : spot.region)
     if (ring <= fit_rings) model.fitted.push_back(v);
   model.centre = Eigen::Vector3d::Zero();
@@ -328,12 +333,14 @@ struct BestChange {
 // the new star and the rest, where the moved one-ring folds the faces next to it. Each scored;
 // the spot is left as it was. `rings_around_v`: the ring distances from v, out to the widest
 // shift.
-void try_branch_vertex(Spot &spot, const CriticalModel &model, const std::map<int, Complex> &z,
-                       Complex p, int v, const RingDistances &rings_around_v, int shift_rings,
+void try_branch_vertex(Spot &spot, const CriticalModel &model, const Coordinates &z, Complex p,
+                       int v, const RingDistances &rings_around_v, int shift_rings,
                        BestChange &best) {
   const Complex c = model(p);
   const Complex shift = p - z.at(v);
   Moves change, original;
+  change.reserve(rings_around_v.size());
+  original.reserve(2 * rings_around_v.size());
   for (const auto &[w, ring] : rings_around_v) {
     if (ring > shift_rings - 1) continue;
     const double t = 1.0 - double(ring) / shift_rings;
@@ -438,8 +445,11 @@ SpotRepair repair_spot(const PreparedMesh &prepared,
       form = candidate;
     }
   }
-  const std::map<int, Complex> z = integrated_coordinate(prepared.edges, prepared.edges_at_vertex,
-                                                         *form, vertices.front(), spot.region);
+  // (The coordinate's nodes from a buffer on the stack: no allocation per node.)
+  alignas(std::max_align_t) char buffer[32768];
+  std::pmr::monotonic_buffer_resource pool(buffer, sizeof buffer);
+  const Coordinates z = integrated_coordinate(prepared.edges, prepared.edges_at_vertex, *form,
+                                              vertices.front(), spot.region, &pool);
   CriticalModel model;
   if (!fit_critical_model(spot, z, critical_points, fit_rings, model)) return out;
 

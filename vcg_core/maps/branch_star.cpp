@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstddef>
 #include <map>
+#include <memory_resource>
 #include <set>
 #include <utility>
 
@@ -71,7 +73,7 @@ double turn(const Eigen::Vector2d &a, const Eigen::Vector2d &b) {
 // continuous along it (the first one's root taken at half its angle in (-pi, pi]); false if the
 // loop does not turn twice.
 bool roots_along(const std::vector<int> &loop, const RegionIndex &index,
-                 const ChartPositions &chart, std::map<int, Eigen::Vector2d> &root) {
+                 const ChartPositions &chart, PlanePositions &root) {
   auto at = [&](int v) -> const Eigen::Vector2d & { return chart[size_t(index(v))]; };
   double angle = std::atan2(at(loop[0]).y(), at(loop[0]).x());
   const double start = angle;
@@ -88,8 +90,7 @@ bool roots_along(const std::vector<int> &loop, const RegionIndex &index,
 // one-ring vertex whose root is set) along a shortest path out; if not, they are turned over.
 // False where no path leads out.
 bool same_sheet(const FaceIncidence &in, const RegionIndex &index, int rings, int start,
-                const ChartPositions &chart, const std::vector<int> &outer,
-                std::map<int, Eigen::Vector2d> &root) {
+                const ChartPositions &chart, const std::vector<int> &outer, PlanePositions &root) {
   std::vector<int> path{start};
   while (index.ring(path.back()) < rings + 1) {
     // One ring further out; the last step onto the outer loop (whose roots are set).
@@ -114,7 +115,7 @@ bool same_sheet(const FaceIncidence &in, const RegionIndex &index, int rings, in
 // Vertex v's root (of its chart position) nearer to the root of a neighbour that has one; false
 // where none has.
 bool root_beside(const FaceIncidence &in, const RegionIndex &index, const ChartPositions &chart,
-                 int v, std::map<int, Eigen::Vector2d> &root) {
+                 int v, PlanePositions &root) {
   for (int f : in.faces_of_vertex[size_t(v)])
     for (int w : in.corners[size_t(f)]) {
       const auto beside = root.find(w);
@@ -161,7 +162,10 @@ reembed_around_branch(const Mesh &mesh, const FaceIncidence &in,
   const BoundaryLoops boundary = chain_boundary(std::move(outer_sides));
   if (boundary.loops.size() != 1) return std::nullopt; // not one loop
   const std::vector<int> &outer = boundary.loops.front();
-  std::map<int, Eigen::Vector2d> root;
+  // (The roots' nodes from a buffer on the stack: no allocation per node.)
+  alignas(std::max_align_t) char buffer[32768];
+  std::pmr::monotonic_buffer_resource pool(buffer, sizeof buffer);
+  PlanePositions root(&pool);
   if (!roots_along(outer, index, chart, root)) return std::nullopt;
   const int first_free = ring_kept ? 2 : 1;
   if (ring_kept && !roots_along(ring, index, chart, root)) return std::nullopt;

@@ -22,7 +22,7 @@ double tan_half_angle(const Mesh &mesh, const std::array<int, 3> &face, int i) {
 } // namespace
 
 bool floater_embedding(const Mesh &mesh, const FaceIncidence &incidence,
-                       const std::vector<int> &free, std::map<int, Eigen::Vector2d> &chart) {
+                       const std::vector<int> &free, PlanePositions &chart) {
   // The free vertices numbered densely; the weights to each one's neighbours.
   std::vector<int> sorted_free = free;
   std::sort(sorted_free.begin(), sorted_free.end());

@@ -14,6 +14,7 @@
 #pragma once
 
 #include <map>
+#include <memory_resource>
 #include <vector>
 
 #include <Eigen/Core>
@@ -23,8 +24,12 @@
 
 namespace meromorph {
 
+// Chart positions by vertex, their nodes from a memory resource the caller chooses (a buffer on
+// the stack for the small regions of branch snapping, which makes thousands of them).
+using PlanePositions = std::pmr::map<int, Eigen::Vector2d>;
+
 bool floater_embedding(const Mesh &mesh, const FaceIncidence &incidence,
-                       const std::vector<int> &free, std::map<int, Eigen::Vector2d> &chart);
+                       const std::vector<int> &free, PlanePositions &chart);
 
 struct GnomonicChart {
   explicit GnomonicChart(const Eigen::Vector3d &centre);

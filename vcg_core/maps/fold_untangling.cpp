@@ -51,7 +51,7 @@ bool reembed(const Mesh &mesh, const FaceIncidence &incidence, const std::vector
     return at != ring_of.end() && at->second <= rings && !is_fixed[size_t(v)];
   };
   const GnomonicChart gnomonic(centre);
-  std::map<int, Eigen::Vector2d> chart;
+  PlanePositions chart;
   for (const auto &[v, r] : ring_of)
     if (!gnomonic.to_chart(sphere[size_t(v)], chart[v])) return false;
   std::set<int> region_faces;
