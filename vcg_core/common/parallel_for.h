@@ -13,6 +13,9 @@
 //      increasing order (equal keys by index): each chunk's k smallest, merged.
 //      `parallel_for_with`: body(i, state) for every i, dynamically scheduled, `state` each
 //      thread's own, made by make_state() once per thread (a scratch copy to change and restore).
+//      `parallel_pair`: first() and second() at once on OpenMP's threads (kept between calls,
+//      each with the memory its allocations left: a thread made per call starts afresh), one
+//      per core; an exception of either is thrown here once both are done.
 //      `while_threads_start`: work() runs on this thread while OpenMP starts the other threads of
 //      its team, which the loops after it then find running (its exception is thrown here).
 #pragma once
@@ -47,6 +50,25 @@ void parallel_for(std::size_t count, const Body &body, std::size_t threshold = p
   for (std::size_t i = 0; i < count; ++i)
     body(i);
 #endif
+}
+
+template <class First, class Second> void parallel_pair(const First &first, const Second &second) {
+  std::exception_ptr errors[2];
+  parallel_for(
+      2,
+      [&](std::size_t i) {
+        try {
+          if (i == 0)
+            first();
+          else
+            second();
+        } catch (...) {
+          errors[i] = std::current_exception();
+        }
+      },
+      2);
+  for (const std::exception_ptr &error : errors)
+    if (error) std::rethrow_exception(error);
 }
 
 // On the two-core machines a new thread starts on the core of the thread that made it and waits

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <future>
 #include <optional>
 
 #include <Eigen/CholmodSupport>
@@ -370,15 +369,17 @@ RatioMap::RatioMap(const PreparedMesh &prepared, RatioDz dz, const std::vector<P
   }
   // F / scale where |F / scale| < chart_bound, G = scale / F where |F / scale| > 1 / chart_bound,
   // the two charts' systems made at once, one per core.
-  std::future<void> pole_chart = std::async(std::launch::async, [&] {
-    charts_->pole.emplace(
-        edges, chart_system(mesh, edges, in, geometry, near_pole, ratio_g, known_g, guess.g),
-        start ? start_g : guess.g);
-  });
-  charts_->zero.emplace(
-      edges, chart_system(mesh, edges, in, geometry, near_zero, ratio_f, known_f, guess.f),
-      start ? start_f : guess.f);
-  pole_chart.get();
+  parallel_pair(
+      [&] {
+        charts_->zero.emplace(
+            edges, chart_system(mesh, edges, in, geometry, near_zero, ratio_f, known_f, guess.f),
+            start ? start_f : guess.f);
+      },
+      [&] {
+        charts_->pole.emplace(
+            edges, chart_system(mesh, edges, in, geometry, near_pole, ratio_g, known_g, guess.g),
+            start ? start_g : guess.g);
+      });
 }
 
 RatioMap::RatioMap(RatioMap &&) noexcept = default;
@@ -387,10 +388,7 @@ RatioMap::~RatioMap() = default;
 
 void RatioMap::advance(double tolerance) {
   Charts &charts = *charts_;
-  std::future<void> pole_chart =
-      std::async(std::launch::async, [&] { charts.pole->advance(tolerance); });
-  charts.zero->advance(tolerance);
-  pole_chart.get();
+  parallel_pair([&] { charts.zero->advance(tolerance); }, [&] { charts.pole->advance(tolerance); });
 }
 
 std::vector<PlaneValue> RatioMap::values(double tolerance) {
