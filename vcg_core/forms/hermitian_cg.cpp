@@ -1,6 +1,7 @@
 #include "forms/hermitian_cg.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <utility>
 
