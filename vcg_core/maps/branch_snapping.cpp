@@ -1,7 +1,6 @@
 #include "maps/branch_snapping.h"
 
 #include <algorithm>
-#include <cstddef>
 #include <map>
 #include <memory_resource>
 #include <queue>
@@ -10,6 +9,7 @@
 
 #include "common/errors.h"
 #include "common/parallel_for.h"
+#include "common/stack_pool.h"
 #include "maps/branch_star.h"
 #include "mesh/local_numbers.h"
 #include "mesh/mesh_edges.h"
@@ -445,9 +445,7 @@ SpotRepair repair_spot(const PreparedMesh &prepared,
       form = candidate;
     }
   }
-  // (The coordinate's nodes from a buffer on the stack: no allocation per node.)
-  alignas(std::max_align_t) char buffer[32768];
-  std::pmr::monotonic_buffer_resource pool(buffer, sizeof buffer);
+  StackPool pool; // (the coordinate's nodes: common/stack_pool.h)
   const Coordinates z = integrated_coordinate(prepared.edges, prepared.edges_at_vertex, *form,
                                               vertices.front(), spot.region, &pool);
   CriticalModel model;

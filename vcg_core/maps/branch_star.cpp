@@ -3,12 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <cstddef>
 #include <map>
-#include <memory_resource>
 #include <set>
 #include <utility>
 
+#include "common/stack_pool.h"
 #include "maps/floater_embedding.h"
 #include "mesh/local_numbers.h"
 
@@ -162,9 +161,7 @@ reembed_around_branch(const Mesh &mesh, const FaceIncidence &in,
   const BoundaryLoops boundary = chain_boundary(std::move(outer_sides));
   if (boundary.loops.size() != 1) return std::nullopt; // not one loop
   const std::vector<int> &outer = boundary.loops.front();
-  // (The roots' nodes from a buffer on the stack: no allocation per node.)
-  alignas(std::max_align_t) char buffer[32768];
-  std::pmr::monotonic_buffer_resource pool(buffer, sizeof buffer);
+  StackPool pool; // (the roots' nodes: common/stack_pool.h)
   PlanePositions root(&pool);
   if (!roots_along(outer, index, chart, root)) return std::nullopt;
   const int first_free = ring_kept ? 2 : 1;

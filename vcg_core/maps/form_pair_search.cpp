@@ -187,6 +187,9 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   const size_t first_round = std::min<size_t>(pairs.size(), forms.genus == 2 ? 1 : 3);
   std::vector<std::pair<size_t, Attempt>> solved, degree_off;
   auto generic_kept = [&] { return best && best->generic; };
+  auto less_crowded = [](const std::pair<size_t, Attempt> &a, const std::pair<size_t, Attempt> &b) {
+    return a.second.crowded < b.second.crowded;
+  };
   for (size_t k = 0; k < first_round && !generic_kept(); ++k) {
     Attempt result = solve(k, true);
     if (result.degree_off) {
@@ -199,17 +202,13 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
       solved.emplace_back(k, std::move(result));
       // Only the one to be finished first (the least crowded, the first of equals) keeps its
       // solve to go on from: both charts' systems, as much memory as the solve itself.
-      auto first_to_finish = std::min_element(solved.begin(), solved.end(), [](auto &a, auto &b) {
-        return a.second.crowded < b.second.crowded;
-      });
+      auto first_to_finish = std::min_element(solved.begin(), solved.end(), less_crowded);
       for (auto at = solved.begin(); at != solved.end(); ++at)
         if (at != first_to_finish) at->second.resumable.reset();
     }
   }
-  auto least_crowded_first = [](std::vector<std::pair<size_t, Attempt>> &attempts) {
-    std::stable_sort(attempts.begin(), attempts.end(), [](const auto &a, const auto &b) {
-      return a.second.crowded < b.second.crowded;
-    });
+  auto least_crowded_first = [&](std::vector<std::pair<size_t, Attempt>> &attempts) {
+    std::stable_sort(attempts.begin(), attempts.end(), less_crowded);
   };
   least_crowded_first(solved);
   for (auto &[k, result] : solved) {
