@@ -4,7 +4,8 @@
 // about 50k, 200k and 800k: each step multiplies by four). Per mesh, each job in a process of its
 // own (so its peak memory is its own):
 // - the floor: reading the file, the cotangent Laplacian, one CHOLMOD factorization (supernodal,
-//   CHOLMOD's default ordering) and 2g solves (two for genus 0, the map's two coordinates);
+//   CHOLMOD's default ordering, every OpenMP region through libgomp as in any program) and 2g
+//   solves (two for genus 0, the map's two coordinates);
 // - the main job as `meromorph param` runs it: reading the file and `parameterize_surface`, with
 //   the time of every stage, the rest (validation) and the total, the ratio of the total to the
 //   floor, the peak memory, and the longest time without a call of the progress callback.
@@ -39,6 +40,7 @@
 #include <Eigen/CholmodSupport>
 
 #include "common/process_memory.h"
+#include "common/serial_openmp_regions.h"
 #include "io/mesh_reader.h"
 #include "io/mesh_writer.h"
 #include "maps/surface_map.h"
@@ -118,6 +120,9 @@ struct Source {
 };
 
 Figures floor_job(const std::string &path, int genus) {
+  // (in a process of its own) libgomp's regions as they come, not ours
+  // (common/serial_openmp_regions.h)
+  hand_every_openmp_region_to_libgomp();
   Figures out;
   Mesh mesh;
   out["read"] = milliseconds([&] { read_mesh(path, mesh); });
