@@ -1,6 +1,7 @@
 // The settings a job runs with: the heap reservation's estimate (common/process_memory.h), the
-// BLAS threads of small and large jobs (common/blas_threads.h) and the OpenMP teams of a
-// factorization (common/factorization_threads.h), read back from OpenBLAS and libgomp themselves.
+// BLAS threads of small and large jobs (common/blas_threads.h), the OpenMP teams of a
+// factorization (common/factorization_threads.h) and the regions of one thread
+// (common/serial_openmp_regions.h), read back from OpenBLAS and libgomp themselves.
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -21,6 +22,7 @@
 #include "common/factorization_threads.h"
 #include "common/parallel_for.h"
 #include "common/process_memory.h"
+#include "common/serial_openmp_regions.h"
 
 namespace meromorph {
 namespace {
@@ -178,6 +180,67 @@ TEST(ProcessSettings, FactorizationsRunOpenMpTeamsOfOneAndGiveTheLevelsBack) {
     EXPECT_EQ(team, 1);
   }
   EXPECT_EQ(omp_get_max_active_levels(), levels);
+}
+
+// What one `#pragma omp parallel` saw.
+struct RegionSeen {
+  int level = -1, threads = 0;
+  std::vector<char> thread_ran;
+};
+
+RegionSeen one_region(bool parallel) {
+  RegionSeen seen;
+  seen.thread_ran.assign(8, 0);
+#pragma omp parallel if (parallel) num_threads(2)
+  {
+#pragma omp single
+    {
+      seen.level = omp_get_level();
+      seen.threads = omp_get_num_threads();
+    }
+    seen.thread_ran[size_t(omp_get_thread_num())] = 1; // (each thread its own byte)
+  }
+  return seen;
+}
+
+// The tests link common/serial_openmp_regions.cpp as the command-line tool does: a region that
+// can only have one thread is a plain call (no team: the nesting level stays 0), a team of two
+// still gets its two threads, and after hand_every_openmp_region_to_libgomp libgomp makes every
+// team (level 1 inside, even for one thread). Without GCC's OpenMP (the sanitizer builds) every
+// region is libgomp's or the compiler's own.
+TEST(ProcessSettings, RegionsOfOneThreadAreCallsAndTeamsStillGetTheirThreads) {
+  const RegionSeen team = one_region(true);
+  EXPECT_EQ(team.level, 1);
+  EXPECT_EQ(team.threads, 2);
+  EXPECT_TRUE(team.thread_ran[0] && team.thread_ran[1]);
+  const RegionSeen alone = one_region(false);
+  EXPECT_EQ(alone.threads, 1);
+  EXPECT_TRUE(alone.thread_ran[0]);
+  RegionSeen in_factorization;
+  {
+    const FactorizationThreads factorization(parallel_blas_unknowns * 2);
+    in_factorization = one_region(true);
+  }
+  EXPECT_EQ(in_factorization.threads, 1);
+#if defined(MEROMORPH_SERIAL_OPENMP_REGIONS)
+  EXPECT_EQ(alone.level, 0);
+  EXPECT_EQ(in_factorization.level, 0);
+#endif
+  // A loop below the threads' threshold, as plain calls, and one above it, as a team.
+  std::vector<int> squares(5000);
+  parallel_for(100, [&](size_t i) { squares[i] = int(i * i); });
+  parallel_for(squares.size(), [&](size_t i) { squares[i] = int(i * i); });
+  EXPECT_EQ(squares[99], 9801);
+  EXPECT_EQ(squares[4999], 24990001);
+}
+
+// (Its own process under ctest: every test is run alone.)
+TEST(ProcessSettings, EveryRegionGoesToLibgompOnceHandedOver) {
+  hand_every_openmp_region_to_libgomp();
+  const RegionSeen alone = one_region(false);
+  EXPECT_EQ(alone.level, 1);
+  EXPECT_EQ(alone.threads, 1);
+  EXPECT_EQ(one_region(true).threads, 2);
 }
 #endif
 
