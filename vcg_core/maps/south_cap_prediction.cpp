@@ -128,6 +128,8 @@ std::vector<char> predicted_south_cap(const PreparedMesh &prepared,
     for (int &node : node_of)
       node = of[size_t(node)];
   }
+  // Not coarsened: predicting would cost the factorization it saves.
+  if (graph.nodes == n) return {};
 
   // The pole: the nodes holding the puncture face's corners left out, their neighbours pinned.
   std::vector<char> pinned_flag(size_t(graph.nodes), 0);
