@@ -42,6 +42,7 @@
 #include "maps/genus0_map.h"
 #include "maps/genus1_branch_placement.h"
 #include "maps/parts_map.h"
+#include "maps/south_cap_prediction.h"
 #include "maps/star_kernel.h"
 #include "mesh/cotan_laplacian.h"
 #include "mesh/face_vectors.h"
@@ -1366,6 +1367,40 @@ TEST(Genus0Map, RefinementOnlyWhereTheValuesCrowd) {
   EXPECT_TRUE(values_crowd(edges, z));
   z[1] = Complex(1e-6, 0);
   EXPECT_FALSE(values_crowd(edges, z));
+}
+
+// The south-pole step's cap predicted from a coarse map (south_cap_prediction.h): none on a mesh
+// of at most 4096 vertices (the coarse map would be the mesh's own, a factorization as dear as
+// the one the prediction saves); above, about a tenth of the vertices, opposite the puncture on a
+// sphere (a pinned-pole map is a stereographic projection from the pole there).
+TEST(SouthCapPrediction, NoneWhereNothingIsCoarsenedElseACapOppositeThePole) {
+  for (int subdivisions : {4, 5}) { // 2562 and 10242 vertices
+    Mesh sphere;
+    make_icosphere(sphere, subdivisions);
+    const PreparedMesh prepared = prepare_mesh(sphere);
+    const int pole = default_puncture_face(prepared);
+    int raised = 0;
+    const std::vector<char> cap =
+        predicted_south_cap(prepared, positive_weights(prepared.weights, {}, raised), pole);
+    const size_t n = sphere.vert.size();
+    if (n <= 4096) {
+      EXPECT_TRUE(cap.empty()) << n << " vertices";
+      continue;
+    }
+    ASSERT_EQ(cap.size(), n);
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    int count = 0;
+    for (size_t v = 0; v < n; ++v)
+      if (cap[v]) {
+        centroid += sphere.vert[v].cP().ToEigenVector<Eigen::Vector3d>();
+        ++count;
+      }
+    EXPECT_NEAR(double(count) / double(n), south_cap_share, 0.03);
+    Eigen::Vector3d pole_centre = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k)
+      pole_centre += sphere.face[size_t(pole)].cP(k).ToEigenVector<Eigen::Vector3d>();
+    EXPECT_LT(centroid.normalized().dot(pole_centre.normalized()), -0.9);
+  }
 }
 
 TEST(PartsMap, TextureGridAndEachPartMappedOnItsOwn) {
