@@ -520,6 +520,36 @@ TEST(ClusterJacobi, ClustersOfAtMostSixteenAndABlockMatrixInOneStep) {
   EXPECT_EQ(chained.cluster_count(), 2); // 16 and 4, joined along the chain
 }
 
+// Each cluster's block applied as its exact inverse: a complex Hermitian positive definite block of
+// four (with a stiff coupling that joins it) gives z = B^-1 r to rounding, also from the lower
+// triangle alone; a block that is not positive definite (a matrix no chart makes, as rounding
+// might) falls back to Jacobi's 1 / a_ii on its unknowns.
+TEST(ClusterJacobi, BlocksAppliedAsTheirInverseOrJacobisWhereNotPositive) {
+  Eigen::MatrixXcd block(4, 4);
+  block << Complex(9, 0), Complex(-4, 1), Complex(0.5, -2), Complex(1, 0.25), //
+      Complex(-4, -1), Complex(8, 0), Complex(-3, 0.5), Complex(0, -1),       //
+      Complex(0.5, 2), Complex(-3, -0.5), Complex(7, 0), Complex(-2.5, 1.5),  //
+      Complex(1, -0.25), Complex(0, 1), Complex(-2.5, -1.5), Complex(6, 0);
+  ASSERT_EQ(Eigen::LLT<Eigen::MatrixXcd>(block).info(), Eigen::Success);
+  const Eigen::SparseMatrix<Complex> both = block.sparseView();
+  const Eigen::SparseMatrix<Complex> lower = both.triangularView<Eigen::Lower>();
+  const Eigen::VectorXcd r = Eigen::VectorXcd::LinSpaced(4, Complex(1, -1), Complex(-2, 3));
+  const Eigen::VectorXcd expected = block.llt().solve(r);
+  for (const Eigen::SparseMatrix<Complex> *a : {&both, &lower}) {
+    ClusterJacobi clusters;
+    clusters.compute(*a);
+    EXPECT_EQ(clusters.cluster_count(), 1);
+    EXPECT_LT((clusters.solve(r) - expected).norm(), 1e-13 * expected.norm());
+  }
+  Eigen::MatrixXcd indefinite(2, 2); // eigenvalues 3 and -1
+  indefinite << Complex(1, 0), Complex(2, 0), Complex(2, 0), Complex(1, 0);
+  ClusterJacobi fallback;
+  fallback.compute(Eigen::SparseMatrix<Complex>(indefinite.sparseView()));
+  EXPECT_EQ(fallback.cluster_count(), 1);
+  const Eigen::VectorXcd pair(Eigen::VectorXcd::LinSpaced(2, Complex(2, 1), Complex(-1, 4)));
+  EXPECT_LT((fallback.solve(pair) - pair).norm(), 1e-15); // r / a_ii, a_ii = 1
+}
+
 // The elimination order of one factorization handed to the next on a subset (as the genus-0
 // south-pole step does), and several right-hand sides at once: the same solutions, for both
 // factorizations; the order returned lists every free vertex once.
