@@ -36,8 +36,15 @@ double share(const std::vector<double> &diagonal, int i, int j, std::complex<dou
   return std::sqrt(std::norm(value)) / std::min(diagonal[size_t(i)], diagonal[size_t(j)]);
 }
 
-// A Hermitian positive definite block (column-major, m x m, its lower triangle read) replaced by
-// its inverse: A = L L^H (Cholesky), W = L^-1, A^-1 = W^H W, about m^3 / 2 complex
+// Entry (i, j), i >= j, of an m x m block's lower triangle packed column by column (column j's
+// rows j to m - 1 after columns 0 to j - 1): m (m + 1) / 2 entries, the upper triangle being
+// their conjugates.
+inline int packed(int i, int j, int m) {
+  return j * m - j * (j - 1) / 2 + (i - j);
+}
+
+// A Hermitian positive definite block (its lower triangle packed: `packed`) replaced by its
+// inverse's: A = L L^H (Cholesky), W = L^-1, A^-1 = W^H W, about m^3 / 2 complex
 // multiply-adds, a third of what Eigen's LLT solved against the identity took (the blocks of a
 // raw marching-cubes genus-10 mesh with needles, 178k vertices, six charts: 143-183 -> 61-66 ms;
 // the same map to the byte). False, the block untouched, where a pivot is not positive (the block
@@ -50,14 +57,14 @@ bool inverted_in_place(std::complex<double> *block, int m) {
   }
   std::array<Scalar, size_t(cluster_size * cluster_size)> l{}, w{};
   for (int j = 0; j < m; ++j) {
-    double pivot = block[j + m * j].real();
+    double pivot = block[packed(j, j, m)].real();
     for (int k = 0; k < j; ++k)
       pivot -= std::norm(l[size_t(j + m * k)]);
     if (!(pivot > 0)) return false;
     const double diagonal = std::sqrt(pivot);
     l[size_t(j + m * j)] = diagonal;
     for (int i = j + 1; i < m; ++i) {
-      Scalar sum = block[i + m * j];
+      Scalar sum = block[packed(i, j, m)];
       for (int k = 0; k < j; ++k)
         sum -= l[size_t(i + m * k)] * std::conj(l[size_t(j + m * k)]);
       l[size_t(i + m * j)] = sum / diagonal;
@@ -77,8 +84,7 @@ bool inverted_in_place(std::complex<double> *block, int m) {
       Scalar sum(0, 0);
       for (int k = i; k < m; ++k)
         sum += std::conj(w[size_t(k + m * i)]) * w[size_t(k + m * j)];
-      block[i + m * j] = sum;
-      block[j + m * i] = std::conj(sum);
+      block[packed(i, j, m)] = sum;
     }
   return true;
 }
@@ -143,7 +149,7 @@ void ClusterJacobi::build(const CompressedColumns &a, bool clustered) {
   block_start_.assign(size_t(clusters) + 1, 0);
   for (int c = 0; c < clusters; ++c) {
     const size_t m = size_t(cluster_start_[size_t(c) + 1] - cluster_start_[size_t(c)]);
-    block_start_[size_t(c) + 1] = block_start_[size_t(c)] + m * m;
+    block_start_[size_t(c) + 1] = block_start_[size_t(c)] + m * (m + 1) / 2;
   }
   inverses_.assign(block_start_.back(), Scalar(0, 0));
   for (int j = 0; j < n; ++j) {
@@ -153,17 +159,21 @@ void ClusterJacobi::build(const CompressedColumns &a, bool clustered) {
     for (int k = a.outer[j]; k < a.outer[j + 1]; ++k) {
       const int i = a.inner[k];
       if (cluster_of[size_t(i)] != c) continue;
-      block[place[size_t(i)] + m * place[size_t(j)]] = a.values[k];
-      if (i != j) block[place[size_t(j)] + m * place[size_t(i)]] = std::conj(a.values[k]);
+      // (places follow the unknowns' order: an entry of A's lower triangle is the block's)
+      const int row = place[size_t(i)], column = place[size_t(j)];
+      if (row >= column)
+        block[packed(row, column, m)] = a.values[k];
+      else
+        block[packed(column, row, m)] = std::conj(a.values[k]);
     }
   }
   for (int c = 0; c < clusters; ++c) {
     const int m = cluster_start_[size_t(c) + 1] - cluster_start_[size_t(c)];
     Scalar *block = &inverses_[block_start_[size_t(c)]];
     if (!inverted_in_place(block, m)) { // (rounding can leave a nearly singular block
-      for (int i = 0; i < m; ++i)       // indefinite: Jacobi there)
-        for (int j = 0; j < m; ++j)
-          block[i + m * j] = i == j ? Scalar(1) / block[i + m * i] : Scalar(0, 0);
+      for (int j = 0; j < m; ++j)       // indefinite: Jacobi there)
+        for (int i = j; i < m; ++i)
+          block[packed(i, j, m)] = i == j ? Scalar(1) / block[packed(i, i, m)] : Scalar(0, 0);
     }
   }
 }
@@ -183,8 +193,10 @@ void ClusterJacobi::solve_into(const Eigen::VectorXcd &r, Eigen::VectorXcd &z) c
     const Scalar *inverse = &inverses_[block_start_[size_t(c)]];
     for (int i = 0; i < m; ++i) {
       Scalar sum(0, 0);
-      for (int j = 0; j < m; ++j)
-        sum += inverse[i + m * j] * r[member[j]];
+      for (int j = 0; j <= i; ++j)
+        sum += inverse[packed(i, j, m)] * r[member[j]];
+      for (int j = i + 1; j < m; ++j)
+        sum += std::conj(inverse[packed(j, i, m)]) * r[member[j]];
       z[member[i]] = sum;
     }
   }

@@ -69,7 +69,7 @@ private:
   std::vector<int> members_;        // the unknowns, cluster by cluster
   std::vector<int> cluster_start_;  // per cluster its first place in members_; one more at the end
   std::vector<size_t> block_start_; // per cluster its first entry in inverses_
-  std::vector<Scalar> inverses_;    // per cluster its block's inverse, column-major
+  std::vector<Scalar> inverses_;    // per cluster its block's inverse, its lower triangle packed
 };
 
 } // namespace meromorph

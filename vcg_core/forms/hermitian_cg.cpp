@@ -7,11 +7,12 @@
 
 namespace meromorph {
 
-HermitianConjugateGradients::HermitianConjugateGradients(Eigen::SparseMatrix<Complex> lower,
+HermitianConjugateGradients::HermitianConjugateGradients(Eigen::SparseMatrix<Complex> &&lower,
                                                          Eigen::VectorXcd right,
                                                          Eigen::VectorXcd start,
                                                          Preconditioner kind)
-    : lower_(std::move(lower)), right_(std::move(right)), x_(std::move(start)) {
+    : right_(std::move(right)), x_(std::move(start)) {
+  lower_.swap(lower);
   lower_.makeCompressed();
   preconditioner_.build(
       {int(lower_.rows()), lower_.outerIndexPtr(), lower_.innerIndexPtr(), lower_.valuePtr()},

@@ -128,23 +128,25 @@ ChartSystem chart_system(const Mesh &mesh, const MeshEdges &edges, const FaceInc
 // Hermitian matrix), written in place: each column's room counted first (its diagonal and one
 // entry per edge of the system whose other end has a larger unknown), no list of entries and no
 // transposed copy (at 2.7M vertices those were 0.4 GB of the peak, both charts together; both
-// triangles another 0.2 GB); empty when an entry is not finite.
-std::optional<Eigen::SparseMatrix<Complex>> hermitian_matrix(const MeshEdges &edges,
-                                                             const ChartSystem &system) {
+// triangles another 0.2 GB); empty (0 x 0) when an entry is not finite. Returned as itself (Eigen
+// 3.4's SparseMatrix has no move constructor: an std::optional of it, or a move into an
+// argument taken by value, copied its arrays).
+Eigen::SparseMatrix<Complex> hermitian_matrix(const MeshEdges &edges, const ChartSystem &system) {
   auto finite = [](Complex z) { return std::isfinite(z.real()) && std::isfinite(z.imag()); };
+  Eigen::SparseMatrix<Complex> lower;
   Eigen::VectorXi per_column = Eigen::VectorXi::Ones(system.unknowns);
   for (size_t e = 0; e < system.along_edge.size(); ++e) {
     if (!system.edge_in_system[e]) continue;
-    if (!finite(system.along_edge[e])) return std::nullopt;
+    if (!finite(system.along_edge[e])) return lower;
     ++per_column[std::min(system.id[size_t(edges.vertices[e][0])],
                           system.id[size_t(edges.vertices[e][1])])];
   }
-  Eigen::SparseMatrix<Complex> lower(system.unknowns, system.unknowns);
+  for (const Complex &entry : system.diagonal)
+    if (!finite(entry)) return lower;
+  lower.resize(system.unknowns, system.unknowns);
   lower.reserve(per_column);
-  for (size_t i = 0; i < system.diagonal.size(); ++i) {
-    if (!finite(system.diagonal[i])) return std::nullopt;
+  for (size_t i = 0; i < system.diagonal.size(); ++i)
     lower.insert(int(i), int(i)) = system.diagonal[i];
-  }
   for (size_t e = 0; e < system.along_edge.size(); ++e) {
     if (!system.edge_in_system[e]) continue;
     const int from = system.id[size_t(edges.vertices[e][0])];
@@ -177,8 +179,8 @@ struct ChartSolve {
   ChartSolve(const MeshEdges &edges, ChartSystem system, const std::vector<Complex> &start) {
     // (CHOLMOD cannot analyse an empty matrix, and Eigen does not check that it could.)
     if (system.unknowns == 0 || !system.right.allFinite()) return;
-    std::optional<Eigen::SparseMatrix<Complex>> matrix = hermitian_matrix(edges, system);
-    if (!matrix) return;
+    Eigen::SparseMatrix<Complex> matrix = hermitian_matrix(edges, system);
+    if (matrix.rows() == 0) return;
     system.diagonal = {};
     system.along_edge = {};
     system.edge_in_system = {};
@@ -191,9 +193,9 @@ struct ChartSolve {
       }
     system.id = {};
     if (!first.allFinite()) first.setZero();
-    const bool stiff = stiffly_coupled({int(matrix->rows()), matrix->outerIndexPtr(),
-                                        matrix->innerIndexPtr(), matrix->valuePtr()});
-    iterated.emplace(std::move(*matrix), std::move(system.right), std::move(first),
+    const bool stiff = stiffly_coupled(
+        {int(matrix.rows()), matrix.outerIndexPtr(), matrix.innerIndexPtr(), matrix.valuePtr()});
+    iterated.emplace(std::move(matrix), std::move(system.right), std::move(first),
                      stiff ? HermitianConjugateGradients::Preconditioner::clusters
                            : HermitianConjugateGradients::Preconditioner::diagonal);
   }
