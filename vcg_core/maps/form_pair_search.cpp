@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <tuple>
+#include <utility>
 
 #include "common/errors.h"
 #include "forms/holomorphic_forms.h"
@@ -54,16 +55,22 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   };
   // The pair's numerator omega1 + omega2 and denominator omega1 - omega2 (form_pairs.h), per
   // edge (for snapping) and their dz coefficients per face (for the map and its forecast), the
-  // latter combined from the normalized forms' dz coefficients, worked out once for all pairs.
+  // latter combined from the normalized forms' dz coefficients (forms x faces), worked out when a
+  // pair first needs them and kept for the next pairs (but see dz_ahead below).
   auto forms_of = [&](const FormPair &pair) { return ratio_forms(pair, forms.normalized); };
-  const Eigen::MatrixXcd normalized_dz =
-      dz_coefficients(mesh, prepared.edges, prepared.geometry, forms.normalized);
-  auto dz_of = [&](const FormPair &pair) { return ratio_dz(pair, normalized_dz); };
+  std::optional<Eigen::MatrixXcd> normalized_dz;
+  auto combined_dz = [&](const FormPair &pair) {
+    if (!normalized_dz)
+      normalized_dz = dz_coefficients(mesh, prepared.edges, prepared.geometry, forms.normalized);
+    return ratio_dz(pair, *normalized_dz);
+  };
   // Genus 3 and up: where the first pair's guessed map crowds (guessed_crowding: before any
   // solve or snapping), the pair whose guess crowds least (the first such) is tried first, the
   // others after it in the list's order.
   if (pairs.size() > 1 && forms.genus > 2) {
-    auto crowding = [&](const FormPair &pair) { return guessed_crowding(prepared, dz_of(pair)); };
+    auto crowding = [&](const FormPair &pair) {
+      return guessed_crowding(prepared, combined_dz(pair));
+    };
     int least = crowding(pairs[0]);
     size_t least_at = 0;
     for (size_t k = 1; k < pairs.size() && least > 0; ++k) {
@@ -75,6 +82,10 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
     }
     std::rotate(pairs.begin(), pairs.begin() + long(least_at), pairs.begin() + long(least_at) + 1);
   }
+  std::vector<RatioDz> dz_ahead(pairs.size()); // pairs' dz coefficients worked out ahead
+  auto dz_of = [&](size_t k) {
+    return dz_ahead[k][0].empty() ? combined_dz(pairs[k]) : std::exchange(dz_ahead[k], {});
+  };
   // A pair's map centred and judged: its crowding before any snapping (snapping moves a few
   // values around critical points: on the test and bench meshes the crowded faces were the same
   // before and after, or two apart), and whether its image area is 2g - 2 spheres.
@@ -95,7 +106,7 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
   bool screening = false;
   auto solve = [&](size_t k, bool first_round_pair) {
     progress.report(0.6 + 0.1 * double(k) / double(pairs.size()), "meromorphic function");
-    auto map = std::make_unique<RatioMap>(prepared, dz_of(pairs[k]));
+    auto map = std::make_unique<RatioMap>(prepared, dz_of(k));
     if (k == 0 && first_round_pair) {
       map->advance(screening_tolerance);
       screening = map->steps() > screening_steps;
@@ -123,7 +134,7 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
         for (PlaneValue &value : start)
           value = undo.apply(value);
       }
-      result.values = form_ratio_map(prepared, dz_of(pairs[k]), {RatioSolve().tolerance, &start});
+      result.values = form_ratio_map(prepared, dz_of(k), {RatioSolve().tolerance, &start});
     }
     if (mobius) result.centring = center_on_sphere(result.values, areas);
     result.screened = false;
@@ -191,6 +202,15 @@ PairSearch search_form_pairs(const PreparedMesh &prepared, const HolomorphicForm
     return a.second.crowded < b.second.crowded;
   };
   for (size_t k = 0; k < first_round && !generic_kept(); ++k) {
+    // Past the first pair, the round's other pairs' dz coefficients are combined at once and the
+    // normalized forms' let go while those pairs are solved (where they take less room: genus 5
+    // and up), the stage's peak (57 MB at genus 10 and 178k vertices, beside a kept pair's
+    // solve); they are worked out again only if a later pair needs them.
+    if (k == 1 && 2 * (first_round - 1) < size_t(forms.genus)) {
+      for (size_t later = 1; later < first_round; ++later)
+        dz_ahead[later] = combined_dz(pairs[later]);
+      normalized_dz.reset();
+    }
     Attempt result = solve(k, true);
     if (result.degree_off) {
       result.resumable.reset(); // (finished last if at all: solved again from its values then)
