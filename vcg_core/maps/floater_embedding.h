@@ -5,7 +5,8 @@
 // Out: each free vertex at the mean of its neighbours weighted by mean-value weights of the
 //      surface, (tan(alpha / 2) + tan(beta / 2)) / |ij| with alpha, beta the angles at it of the
 //      two faces on the edge: positive on any triangulation, so there is no fold when the fixed
-//      rim is convex (Floater 2003). Solved at once by Eigen's sparse LU (the regions are small).
+//      rim is convex (Floater 2003). Solved at once: as a dense matrix up to 64 free vertices
+//      (branch snapping's thousands of small regions), by Eigen's sparse LU above.
 //      False, nothing changed, where a weight is not finite (an edge of zero length), a fixed
 //      neighbour has no position or the system cannot be solved (free vertices out of reach of
 //      every fixed one).
