@@ -972,6 +972,24 @@ std::set<int> within_rings(const FaceIncidence &in, int v, int rings) {
   return region;
 }
 
+// Chart positions for a Floater embedding: every vertex of `free_set` at the chart's centre, every
+// vertex next to it (its rim, fixed) where `chart` puts its point on the unit sphere; false where
+// the chart cannot take one.
+bool free_at_centre_rim_in_chart(const Mesh &mesh, const FaceIncidence &in,
+                                 const std::set<int> &free_set, const GnomonicChart &chart,
+                                 PlanePositions &positions) {
+  for (int v : free_set)
+    for (int f : in.faces_of_vertex[size_t(v)])
+      for (int w : in.corners[size_t(f)])
+        if (!free_set.count(w) &&
+            !chart.to_chart(mesh.vert[size_t(w)].cP().ToEigenVector<Eigen::Vector3d>().normalized(),
+                            positions[w]))
+          return false;
+  for (int v : free_set)
+    positions[v] = Eigen::Vector2d::Zero();
+  return true;
+}
+
 // The faces with a corner in `free_set` whose chart positions turn clockwise or not at all.
 int turned_over(const FaceIncidence &in, const std::set<int> &free_set,
                 const PlanePositions &positions) {
@@ -1000,20 +1018,9 @@ TEST(FloaterEmbedding, ADiskInTheGnomonicChartHasNoFold) {
   EXPECT_LT((at_p.to_sphere(x) - q).norm(), 1e-12);
   // Two rings around vertex 0 free, started all at the centre; the third ring fixed.
   const std::set<int> free_set = within_rings(in, 0, 2);
-  std::set<int> rim;
-  for (int v : free_set)
-    for (int f : in.faces_of_vertex[size_t(v)])
-      for (int w : in.corners[size_t(f)])
-        if (!free_set.count(w)) rim.insert(w);
   PlanePositions positions;
-  for (int v : rim) {
-    ASSERT_TRUE(chart.to_chart(
-        mesh.vert[size_t(v)].cP().ToEigenVector<Eigen::Vector3d>().normalized(), positions[v]));
-  }
-  for (int v : free_set)
-    positions[v] = Eigen::Vector2d::Zero();
-  const std::vector<int> free(free_set.begin(), free_set.end());
-  ASSERT_TRUE(floater_embedding(mesh, in, free, positions));
+  ASSERT_TRUE(free_at_centre_rim_in_chart(mesh, in, free_set, chart, positions));
+  ASSERT_TRUE(floater_embedding(mesh, in, {free_set.begin(), free_set.end()}, positions));
   EXPECT_EQ(turned_over(in, free_set, positions), 0);
 }
 
@@ -1032,14 +1039,7 @@ TEST(FloaterEmbedding, EachFreeVertexAtItsNeighboursWeightedMeanDenseOrSparse) {
     const std::set<int> free_set = within_rings(in, 0, rings);
     EXPECT_EQ(free_set.size(), rings == 2 ? 19u : 91u) << rings;
     PlanePositions positions;
-    for (int v : free_set)
-      for (int f : in.faces_of_vertex[size_t(v)])
-        for (int w : in.corners[size_t(f)])
-          if (!free_set.count(w)) {
-            ASSERT_TRUE(chart.to_chart(point(w).normalized(), positions[w]));
-          }
-    for (int v : free_set)
-      positions[v] = Eigen::Vector2d::Zero();
+    ASSERT_TRUE(free_at_centre_rim_in_chart(mesh, in, free_set, chart, positions));
     ASSERT_TRUE(floater_embedding(mesh, in, {free_set.begin(), free_set.end()}, positions));
     double worst = 0;
     for (int v : free_set) {
