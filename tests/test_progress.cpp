@@ -81,6 +81,41 @@ TEST(Progress, ACancelStopsTheJobAtItsNextReportAndAJobsErrorReachesTheCaller) {
   EXPECT_EQ(ran_on, std::this_thread::get_id());
 }
 
+// Relayed jobs one after another run on the same kept thread (its OpenMP team kept with it); a
+// job that comes while that thread is busy (another caller's) runs on a thread of its own.
+TEST(Progress, JobsOneAfterAnotherShareTheirThreadAndJobsAtOnceEachGetOne) {
+  const Progress progress([](double, const std::string &) { return true; });
+  auto job_thread = [&] {
+    std::thread::id ran_on;
+    run_reporting(progress, [&](const Progress &relay) {
+      ran_on = std::this_thread::get_id();
+      relay.report(1.0, "done");
+    });
+    return ran_on;
+  };
+  const std::thread::id first = job_thread();
+  EXPECT_NE(first, std::this_thread::get_id());
+  EXPECT_EQ(job_thread(), first);
+
+  std::atomic<int> running{0};
+  std::atomic<bool> both_at_once{false};
+  std::thread::id outer_thread, inner_thread;
+  auto meet = [&](std::thread::id &ran_on) {
+    ran_on = std::this_thread::get_id();
+    ++running;
+    for (int wait = 0; wait < 500 && running < 2; ++wait)
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    both_at_once = both_at_once || running == 2;
+  };
+  std::thread other_caller(
+      [&] { run_reporting(progress, [&](const Progress &) { meet(inner_thread); }); });
+  run_reporting(progress, [&](const Progress &) { meet(outer_thread); });
+  other_caller.join();
+  EXPECT_TRUE(both_at_once);
+  EXPECT_NE(outer_thread, inner_thread);
+  EXPECT_EQ(job_thread(), first); // the kept thread is free again afterwards
+}
+
 // A callback for any thread (the terminal's bar): the job runs on the caller's thread and its
 // reports reach the callback as they come, ranges and cancelling as with any other.
 TEST(Progress, ACallbackForAnyThreadIsCalledByTheJobItself) {

@@ -4,8 +4,8 @@
 //      MeshLab's CallBackPos, Blender's progress_update); it returns false to cancel.
 // Out: `Progress::report` calls it with a fraction in [0, 1]; when the callback asks to cancel,
 //      `report` throws `Cancelled`. `Progress::range` hands a sub-stage its own 0..1 slice.
-//      `run_reporting` runs a whole job on a worker thread that reports into a relay, while the
-//      calling thread hands the latest report to the callback at least every quarter second:
+//      `run_reporting` runs a whole job on a kept worker thread that reports into a relay, while
+//      the calling thread hands the latest report to the callback at least every quarter second:
 //      the callback (a GUI's) is only ever called on the caller's thread, steadily, and a cancel
 //      stops the job at its next report.
 #pragma once
@@ -45,12 +45,13 @@ private:
   bool any_thread_ = false;
 };
 
-// `job(relay)` runs on another thread; every 0.25 s the latest of its reports reaches `progress`
-// from this thread (new or not: the bar stays alive), and the last one when it ends; its
-// exception, if any, is thrown here. When the callback cancels, the job's next report throws
-// Cancelled there and this call throws Cancelled once the job has unwound. Without a callback,
-// or with one for any thread, the job simply runs here. (This thread is not woken by the job's
-// reports: on two cores a third busy thread beside the job's two stalled a 4k-vertex map.)
+// `job(relay)` runs on another thread (one kept for the next job, so that its OpenMP team is kept
+// too; a job that comes while it is busy gets a thread of its own); every 0.25 s the latest of its
+// reports reaches `progress` from this thread (new or not: the bar stays alive), and the last one
+// when it ends; its exception, if any, is thrown here. When the callback cancels, the job's next
+// report throws Cancelled there and this call throws Cancelled once the job has unwound. Without a
+// callback, or with one for any thread, the job simply runs here. (This thread is not woken by the
+// job's reports: on two cores a third busy thread beside the job's two stalled a 4k-vertex map.)
 void run_reporting(const Progress &progress, const std::function<void(const Progress &relay)> &job);
 
 } // namespace meromorph
