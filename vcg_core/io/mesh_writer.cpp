@@ -6,10 +6,17 @@
 #include <filesystem>
 
 #include <vcg/complex/append.h>
+// vcglib's exporters write value by value (a PLY face: about a dozen fwrite calls), each taking
+// the FILE's lock; the FILE is the exporter's own, used on one thread: its unlocked twin does the
+// same writing (the same bytes) without the locks. Writing `param`'s PLY files: a 4k-vertex
+// surface 1.6 -> 0.95 ms (least of 6); maxplanck x16 (200k vertices), the surface 85 -> 50 ms and
+// the layered sphere 52 -> 26 ms.
+#define fwrite fwrite_unlocked
 #include <wrap/io_trimesh/export_obj.h>
 #include <wrap/io_trimesh/export_off.h>
 #include <wrap/io_trimesh/export_ply.h>
 #include <wrap/io_trimesh/export_stl.h>
+#undef fwrite
 
 #include "common/errors.h"
 #include "io/mesh_format.h"
