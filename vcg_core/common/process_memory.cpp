@@ -94,4 +94,17 @@ void tune_process_memory(size_t expected_bytes) {
 #endif
 }
 
+void advise_huge_pages(void *data, size_t bytes) {
+#if defined(__GLIBC__)
+  const uintptr_t huge_page = uintptr_t(2) << 20;
+  const uintptr_t start =
+      (reinterpret_cast<uintptr_t>(data) + huge_page - 1) / huge_page * huge_page;
+  const uintptr_t end = (reinterpret_cast<uintptr_t>(data) + bytes) / huge_page * huge_page;
+  if (end > start) madvise(reinterpret_cast<void *>(start), end - start, MADV_HUGEPAGE);
+#else
+  (void)data;
+  (void)bytes;
+#endif
+}
+
 } // namespace meromorph

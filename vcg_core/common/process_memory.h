@@ -33,4 +33,11 @@ void tune_process_memory(size_t expected_bytes);
 size_t heap_bytes_for_files(const std::vector<std::string> &paths, size_t at_least = size_t(256)
                                                                                      << 20);
 
+// For one large array not yet touched, in any process (a host's too: it changes nothing but how
+// these pages come): the whole 2 MiB blocks inside [data, data + bytes) asked for transparent huge
+// pages (madvise), so that first touching them costs one page fault a block instead of one a
+// 4 KiB page. Where the pages already come huge (the CLI's heap) or the system has no such
+// pages, nothing changes.
+void advise_huge_pages(void *data, size_t bytes);
+
 } // namespace meromorph

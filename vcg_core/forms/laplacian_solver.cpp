@@ -9,6 +9,7 @@
 #include "common/errors.h"
 #include "common/factorization_threads.h"
 #include "common/parallel_for.h"
+#include "common/process_memory.h"
 #include "forms/metis_order.h"
 
 namespace meromorph {
@@ -279,6 +280,14 @@ private:
     cholmod_sparse *permuted =
         cholmod_ptranspose(&matrix, 2, static_cast<int *>(factor_->Perm), nullptr, 0, &common_);
     upper.release();
+    // The factor's values allocated here rather than inside the factorization, so that their
+    // pages come huge where the process's heap does not give them so (a host program's:
+    // common/process_memory.h); the factorization clears them first.
+    if (!cholmod_change_factor(CHOLMOD_REAL, true, true, true, true, factor_, &common_)) {
+      cholmod_free_sparse(&permuted, &common_);
+      return false;
+    }
+    advise_huge_pages(factor_->x, factor_->xsize * sizeof(double));
     double zero[2] = {0, 0};
     const bool factored =
         permuted && cholmod_super_numeric(permuted, nullptr, zero, factor_, &common_);
