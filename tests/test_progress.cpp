@@ -5,6 +5,9 @@
 #include <chrono>
 #include <thread>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include "common/errors.h"
 #include "common/progress.h"
 
@@ -114,6 +117,32 @@ TEST(Progress, JobsOneAfterAnotherShareTheirThreadAndJobsAtOnceEachGetOne) {
   EXPECT_TRUE(both_at_once);
   EXPECT_NE(outer_thread, inner_thread);
   EXPECT_EQ(job_thread(), first); // the kept thread is free again afterwards
+}
+
+// A child of fork() (Python's multiprocessing, a host's worker processes) has none of its
+// parent's threads: its relayed jobs still run, on a kept thread of its own.
+TEST(Progress, AForkedChildRunsRelayedJobsOfItsOwn) {
+  const Progress progress([](double, const std::string &) { return true; });
+  std::thread::id parent_thread;
+  run_reporting(progress, [&](const Progress &) { parent_thread = std::this_thread::get_id(); });
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    alarm(20); // a job that never runs ends the child by SIGALRM
+    int jobs_run = 0;
+    for (int job = 0; job < 2; ++job)
+      run_reporting(progress, [&](const Progress &relay) {
+        relay.report(1.0, "done");
+        ++jobs_run;
+      });
+    _exit(jobs_run == 2 ? 0 : 1);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << "status " << status;
+  std::thread::id again;
+  run_reporting(progress, [&](const Progress &) { again = std::this_thread::get_id(); });
+  EXPECT_EQ(again, parent_thread); // the parent's kept thread, untouched by the fork
 }
 
 // A callback for any thread (the terminal's bar): the job runs on the caller's thread and its

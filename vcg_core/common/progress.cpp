@@ -9,6 +9,8 @@
 #include <mutex>
 #include <thread>
 
+#include <pthread.h>
+
 #include "common/errors.h"
 #include "common/parallel_for.h"
 
@@ -48,13 +50,25 @@ public:
     }).detach();
   }
 
-  // Never destroyed: its thread waits for the next job until the process ends.
+  // The process's; never destroyed: its thread waits for the next job until the process ends (a
+  // library holding it is not unloaded by its hosts: MeshLab, Python's ctypes). A child of fork()
+  // has none of its parent's threads: it gets an object of its own, whose thread starts at its
+  // first job (the parent's object is left as the fork found it, never used there).
   static KeptJobThread &instance() {
-    static KeptJobThread *kept = new KeptJobThread;
-    return *kept;
+    static std::once_flag once;
+    std::call_once(once, [] {
+      current() = new KeptJobThread;
+      pthread_atfork(nullptr, nullptr, [] { current() = new KeptJobThread; });
+    });
+    return *current();
   }
 
 private:
+  static KeptJobThread *&current() {
+    static KeptJobThread *kept = nullptr;
+    return kept;
+  }
+
   void serve() {
     std::unique_lock<std::mutex> lock(mutex_);
     while (true) {
