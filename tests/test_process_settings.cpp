@@ -1,7 +1,8 @@
 // The settings a job runs with: the heap reservation's estimate (common/process_memory.h), the
 // BLAS threads of small and large jobs (common/blas_threads.h), the OpenMP teams of a
 // factorization (common/factorization_threads.h) and the regions of one thread
-// (common/serial_openmp_regions.h), read back from OpenBLAS and libgomp themselves.
+// (common/serial_openmp_regions.h), read back from OpenBLAS and libgomp themselves, and the
+// threads' scratch arrays released between jobs (common/thread_scratch.h).
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
@@ -23,6 +24,7 @@
 #include "common/parallel_for.h"
 #include "common/process_memory.h"
 #include "common/serial_openmp_regions.h"
+#include "common/thread_scratch.h"
 
 namespace meromorph {
 namespace {
@@ -148,6 +150,45 @@ TEST(ProcessSettings, AProgramOwningItsProcessEndsOpenBlasIdleThreadsWhenASmallJ
 
 #if defined(_OPENMP) // (built with OpenMP wherever the compiler has it: vcg_core/CMakeLists.txt)
 // The serial work runs on this thread while the team starts; the loops after it find the team.
+// Each thread of a team has its own scratch per tag, kept from one use to the next; releasing
+// the team's scratch empties every thread's, and the next use starts afresh.
+TEST(ProcessSettings, ThreadScratchIsEachThreadsOwnAndTheTeamsIsReleasedAtOnce) {
+  struct First;
+  struct Second;
+  const int threads = 2;
+  std::vector<size_t> kept(threads, 0), released(threads, 1), second(threads, 1);
+  auto on_each_thread = [&](auto body) {
+#if defined(_OPENMP)
+#pragma omp parallel num_threads(threads)
+    body(omp_get_thread_num());
+#else
+    body(0);
+#endif
+  };
+  on_each_thread([&](int t) {
+    std::vector<int> &scratch = thread_scratch<First, std::vector<int>>();
+    scratch.assign(size_t(1000 * (t + 1)), t);
+  });
+  on_each_thread([&](int t) {
+    const std::vector<int> &scratch = thread_scratch<First, std::vector<int>>();
+    kept[size_t(t)] = scratch.size() == size_t(1000 * (t + 1)) && scratch.front() == t;
+    second[size_t(t)] = thread_scratch<Second, std::vector<int>>().size();
+  });
+  release_team_scratch();
+  on_each_thread(
+      [&](int t) { released[size_t(t)] = thread_scratch<First, std::vector<int>>().capacity(); });
+#if defined(_OPENMP)
+  const int ran = threads;
+#else
+  const int ran = 1;
+#endif
+  for (int t = 0; t < ran; ++t) {
+    EXPECT_EQ(kept[size_t(t)], 1u) << "thread " << t;
+    EXPECT_EQ(second[size_t(t)], 0u) << "thread " << t; // another tag, another array
+    EXPECT_EQ(released[size_t(t)], 0u) << "thread " << t;
+  }
+}
+
 TEST(ProcessSettings, SerialWorkRunsHereWhileTheOtherThreadsStart) {
   const std::thread::id caller = std::this_thread::get_id();
   std::thread::id ran_on;

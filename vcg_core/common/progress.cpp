@@ -13,6 +13,7 @@
 
 #include "common/errors.h"
 #include "common/parallel_for.h"
+#include "common/thread_scratch.h"
 
 namespace meromorph {
 namespace {
@@ -79,6 +80,7 @@ private:
       deliver_ = nullptr;
       lock.unlock();
       const std::exception_ptr error = work();
+      release_team_scratch(); // this thread outlives the job: common/thread_scratch.h
       lock.lock();
       busy_ = false; // free before the caller hears the job is done
       lock.unlock();

@@ -4,18 +4,21 @@
 // Out: `numbers(item)`: the item's position in that order, -1 for any other item of the set.
 //      One array over the whole set per thread and `Tag` (each use names its own, so that one
 //      numbering can be held while another is made inside it): set by the constructor, cleared by
-//      the destructor, so a numbering costs the items' count, not the set's size, after the first.
+//      the destructor, so a numbering costs the items' count, not the set's size, after the first
+//      (kept between uses as the thread's scratch: common/thread_scratch.h).
 #pragma once
 
 #include <cstddef>
 #include <vector>
+
+#include "common/thread_scratch.h"
 
 namespace meromorph {
 
 template <class Tag> class LocalNumbers {
 public:
   template <class Items> LocalNumbers(const Items &items, std::size_t set_size) {
-    thread_local std::vector<int> numbers;
+    std::vector<int> &numbers = thread_scratch<Tag, std::vector<int>>(); // common/thread_scratch.h
     if (numbers.size() < set_size) numbers.assign(set_size, -1);
     numbers_ = &numbers;
     for (const auto &item : items)

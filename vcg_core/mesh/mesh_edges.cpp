@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "common/errors.h"
+#include "common/thread_scratch.h"
 
 namespace meromorph {
 
@@ -171,7 +172,8 @@ int RingDistances::at(int vertex) const {
 RingDistances ring_distances(const FaceIncidence &in, const std::vector<int> &sources, int radius) {
   // Per vertex of the mesh, whether the search has reached it: set while a search runs, cleared
   // after (one array per thread, kept between searches: a search touches only its region).
-  thread_local std::vector<char> reached;
+  struct Reached; // (the scratch's tag: common/thread_scratch.h)
+  std::vector<char> &reached = thread_scratch<Reached, std::vector<char>>();
   if (reached.size() < in.faces_of_vertex.size()) reached.assign(in.faces_of_vertex.size(), 0);
   std::vector<RingDistances::Entry> found; // breadth first: its own queue
   for (int v : sources)
