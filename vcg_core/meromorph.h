@@ -65,7 +65,8 @@ typedef enum meromorph_remedy {
 } meromorph_remedy;
 
 /* Progress: fraction in [0, 1] and the stage in words. Return 0 to cancel, non-zero to go on.
-   It is called on the thread that called meromorph (the work runs on a worker thread meanwhile),
+   It is called on the thread that called meromorph (the work runs meanwhile on a worker thread
+   that the library keeps for the next call, or on one of its own when that one is busy),
    at least every quarter second while the work runs; after a cancel the call returns when the
    work reaches its next report (at most the end of one Laplacian factorization). */
 typedef int (*meromorph_progress_fn)(double fraction, const char *stage, void *user);
