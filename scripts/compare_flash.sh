@@ -41,6 +41,8 @@ least_ms() { # least wall time of N runs of a command, in ms
   echo "$((best / 10)).$((best % 10))"
 }
 
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.1f", a / b}'; }
+
 echo "| mesh | vertices | FLASH (Octave, algorithm) | meromorph param (whole process) | FLASH / meromorph | meromorph in process (as the Blender add-on) | FLASH / meromorph in process |"
 echo "|---|---|---|---|---|---|---|"
 for mesh in "$@"; do
@@ -55,6 +57,5 @@ for mesh in "$@"; do
   ours_ms=$(least_ms 7 "$tool" param "$mesh" -o "$scratch/out.ply" --quiet)
   in_process=$(/usr/bin/python3 "$here/flash/time_in_process.py" "$addon" "$mesh" 3)
   in_process_ms=$(echo "$in_process" | awk '/least_ms/ {print $2}')
-  ratio() { awk -v a="$1" -v b="$2" 'BEGIN {printf "%.1f", a / b}'; }
   echo "| $(basename "$mesh") | $vertices | $flash_ms ms | $ours_ms ms | $(ratio "$flash_ms" "$ours_ms") | $in_process_ms ms | $(ratio "$flash_ms" "$in_process_ms") |"
 done

@@ -19,6 +19,7 @@ namespace meromorph {
 namespace {
 
 constexpr size_t bytes_per_file_byte = 100;
+constexpr uintptr_t huge_page = uintptr_t(2) << 20; // a transparent huge page (x86-64)
 
 size_t physical_memory() {
 #if defined(__GLIBC__)
@@ -60,7 +61,6 @@ void tune_process_memory(size_t expected_bytes) {
   // one page of it touched), so that the job's arrays start at one. Below it, up to 2 MiB of
   // ordinary pages came one fault at a time: about 400 faults of 12 microseconds each on a
   // 4k-vertex map.
-  const uintptr_t huge_page = uintptr_t(2) << 20;
   const uintptr_t free_top_start = reinterpret_cast<uintptr_t>(sbrk(0)) - mallinfo2().keepcost;
   const uintptr_t to_boundary = (huge_page - free_top_start % huge_page) % huge_page;
   // The heap grown by the reservation, at most 1 GiB at a time (mallopt takes an int): requests
@@ -96,7 +96,6 @@ void tune_process_memory(size_t expected_bytes) {
 
 void advise_huge_pages(void *data, size_t bytes) {
 #if defined(__GLIBC__)
-  const uintptr_t huge_page = uintptr_t(2) << 20;
   const uintptr_t start =
       (reinterpret_cast<uintptr_t>(data) + huge_page - 1) / huge_page * huge_page;
   const uintptr_t end = (reinterpret_cast<uintptr_t>(data) + bytes) / huge_page * huge_page;

@@ -283,14 +283,13 @@ private:
     // The factor's values allocated here rather than inside the factorization, so that their
     // pages come huge where the process's heap does not give them so (a host program's:
     // common/process_memory.h); the factorization clears them first.
-    if (!cholmod_change_factor(CHOLMOD_REAL, true, true, true, true, factor_, &common_)) {
-      cholmod_free_sparse(&permuted, &common_);
-      return false;
+    bool factored =
+        permuted && cholmod_change_factor(CHOLMOD_REAL, true, true, true, true, factor_, &common_);
+    if (factored) {
+      advise_huge_pages(factor_->x, factor_->xsize * sizeof(double));
+      double zero[2] = {0, 0};
+      factored = cholmod_super_numeric(permuted, nullptr, zero, factor_, &common_);
     }
-    advise_huge_pages(factor_->x, factor_->xsize * sizeof(double));
-    double zero[2] = {0, 0};
-    const bool factored =
-        permuted && cholmod_super_numeric(permuted, nullptr, zero, factor_, &common_);
     cholmod_free_sparse(&permuted, &common_);
     return factored;
   }
