@@ -1,7 +1,9 @@
 // libFuzzer target: the C ABI's mesh intake. The bytes become a vertex count, a triangle count,
 // options and the arrays (with whatever values they hold: NaN, huge, negative or out-of-range
 // indices, mismatched counts within the buffers given); meromorph_parameterize_d must return a
-// status, never crash, and a successful result must answer every getter.
+// status, never crash, and a successful result must answer every getter. Built a second time
+// with MEROMORPH_FUZZ_REMESH (fuzz_c_abi_remesh): meromorph_remesh_d with a vertex target and
+// area correction from the bytes too (any int64, any int), its result answering every getter.
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -44,6 +46,32 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   for (int32_t &t : triangles)
     t = (flags & 128) ? take<int32_t>(data, size)
                       : int32_t(take<uint8_t>(data, size) % (vertex_count + 1));
+#ifdef MEROMORPH_FUZZ_REMESH
+  const int64_t target = (flags & 1) ? take<int64_t>(data, size) : take<int16_t>(data, size);
+  const int area_correct = (flags & 2) ? take<int32_t>(data, size) : 1;
+  meromorph_remesh_result *remesh = nullptr;
+  const meromorph_status remeshed =
+      meromorph_remesh_d(positions.data(), vertex_count, triangles.data(), triangle_count, &options,
+                         target, area_correct, &remesh);
+  if (remeshed == MEROMORPH_OK) {
+    const size_t n = meromorph_remesh_vertex_count(remesh),
+                 t = meromorph_remesh_triangle_count(remesh);
+    if (target > 0 && n > size_t(64 * target + 10000)) __builtin_trap(); // the target holds
+    std::vector<double> xyz(3 * n), sphere(3 * n);
+    std::vector<int32_t> corners(3 * t), layer(n), branch(n);
+    if (meromorph_remesh_mesh(remesh, xyz.data(), corners.data(), layer.data(), branch.data(),
+                              sphere.data()) != MEROMORPH_OK)
+      __builtin_trap();
+    for (int32_t c : corners)
+      if (c < 0 || size_t(c) >= n) __builtin_trap();
+    (void)std::strlen(meromorph_remesh_report_json(remesh));
+    (void)std::strlen(meromorph_remesh_summary(remesh));
+  } else if (remesh != nullptr || std::strlen(meromorph_last_error()) == 0) {
+    __builtin_trap();
+  }
+  meromorph_remesh_free(remesh);
+  return 0;
+#endif
   meromorph_result *result = nullptr;
   const meromorph_status status = meromorph_parameterize_d(
       positions.data(), vertex_count, triangles.data(), triangle_count, &options, &result);

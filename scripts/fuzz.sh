@@ -12,7 +12,8 @@ corpus="$here/tests/fuzz_corpus"
 mkdir -p "$bin/findings"
 status=0
 printf '| target | seconds | executions | executions/s | findings |\n|---|---|---|---|---|\n'
-for target in fuzz_read_ply fuzz_read_off fuzz_read_obj fuzz_read_stl fuzz_c_abi; do
+for target in fuzz_read_ply fuzz_read_off fuzz_read_obj fuzz_read_stl fuzz_c_abi \
+  fuzz_c_abi_remesh fuzz_job_forms fuzz_job_remesh; do
   work="$bin/corpus/$target"
   mkdir -p "$work"
   seeds=()
@@ -23,8 +24,15 @@ for target in fuzz_read_ply fuzz_read_off fuzz_read_obj fuzz_read_stl fuzz_c_abi
       [ -f "$f" ] && [ "$(stat -c %s "$f")" -lt 20000 ] && cp -n "$f" "$work/" 2>/dev/null
     done
     ;;
-  fuzz_c_abi)
+  fuzz_c_abi | fuzz_c_abi_remesh)
     for f in "$corpus"/seeds/*.abi; do [ -f "$f" ] && cp -n "$f" "$work/"; done
+    ;;
+  fuzz_job_*)
+    # Two leading bytes (options, scale: 30 = 10^0) before each OFF seed.
+    for f in "$corpus"/seeds/*.off "$corpus"/regressions/*.off; do
+      [ -f "$f" ] && [ "$(stat -c %s "$f")" -lt 20000 ] &&
+        { printf '\x00\x1e'; cat "$f"; } >"$work/$(basename "$f")"
+    done
     ;;
   esac
   log="$bin/$target.log"

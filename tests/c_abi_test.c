@@ -4,6 +4,7 @@
 #include <math.h>
 #include <pthread.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -375,6 +376,14 @@ int main(void) {
     CHECK(meromorph_remesh_d(positions, V, triangles, F, &options, V, 2, &remesh) ==
           MEROMORPH_ERROR_ARGUMENT);
     CHECK(remesh == NULL && strstr(meromorph_last_error(), "area_correct") != NULL);
+    /* Vertex targets beyond the command line's bound (or below 12) are refused before any work. */
+    CHECK(meromorph_remesh_d(positions, V, triangles, F, &options, INT64_MAX, 1, &remesh) ==
+          MEROMORPH_ERROR_ARGUMENT);
+    CHECK(remesh == NULL && strstr(meromorph_last_error(), "target_vertices") != NULL);
+    CHECK(meromorph_remesh_d(positions, V, triangles, F, &options, 2000000001, 1, &remesh) ==
+          MEROMORPH_ERROR_ARGUMENT);
+    CHECK(meromorph_remesh_d(positions, V, triangles, F, &options, 5, 1, &remesh) ==
+          MEROMORPH_ERROR_ARGUMENT);
     CHECK(meromorph_remesh_d(positions, V, triangles, F, &options, 0, 1, &remesh) == MEROMORPH_OK);
     n = meromorph_remesh_vertex_count(remesh);
     t = meromorph_remesh_triangle_count(remesh);

@@ -1,5 +1,8 @@
 // Broken files: a clear error with the path (and line), never a crash or a half-read mesh.
+#include <chrono>
+#include <cmath>
 #include <fstream>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -149,6 +152,36 @@ TEST(BadFiles, BinaryContentWithTheWrongExtension) {
   expect_read_error<InputError>(dir.write("noise.ply", noise), "not a PLY file");
   expect_read_error<InputError>(dir.write("noise.stl", noise), "not an STL file");
   expect_read_error<InputError>(dir.write("noise.off", noise), "not an OFF file");
+}
+
+// Inputs shaped to make work quadratic get linear work: one OBJ polygon of 200,000 corners (a
+// fan: every half-edge at one vertex; validation paired them in time quadratic in the valence,
+// 15 s at 100,000) and one quad repeated 40,000 times (80,000 faces on four vertices; the
+// non-manifold split and the duplicate search were quadratic, 11 s at 10,000). The bound below
+// is a hang guard, a hundred times what the work takes here, not a timing.
+TEST(BadFiles, ValencesAndRepeatsThatMadeWorkQuadraticStayLinear) {
+  TempDir dir;
+  std::ostringstream fan, quads;
+  const int corners = 200000;
+  for (int i = 0; i < corners; ++i)
+    fan << "v " << std::cos(2 * M_PI * i / corners) << " " << std::sin(2 * M_PI * i / corners)
+        << " 0\n";
+  fan << "f";
+  for (int i = 1; i <= corners; ++i)
+    fan << " " << i;
+  fan << "\n";
+  quads << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+  for (int i = 0; i < 40000; ++i)
+    quads << "f 1 2 3 4\n";
+  const auto start = std::chrono::steady_clock::now();
+  const test::RunResult info = test::run_cli({"info", dir.write("fan.obj", fan.str())});
+  EXPECT_EQ(info.exit_code, 3) << info.err;
+  EXPECT_NE(info.out.find("of 200000 edges"), std::string::npos) << info.out;
+  const test::RunResult split =
+      test::run_cli({"param", dir.write("quads.obj", quads.str()), "-o", dir.path("out.ply"),
+                     "--split-nonmanifold", "--close-holes", "--quiet"});
+  EXPECT_EQ(split.exit_code, 3) << split.err;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 60.0);
 }
 
 } // namespace

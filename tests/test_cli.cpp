@@ -106,10 +106,17 @@ TEST(Cli, FormsWritesAReportWithTheModulus) {
   EXPECT_LT(report["residuals"]["closedness"].get<double>(), 1e-12);
   EXPECT_LT(report["non_holomorphicity"]["mean"].get<double>(), 0.1);
 
-  const test::RunResult genus2 = run_cli({"forms", test::data_path("eight.off"), "--quiet"});
-  ASSERT_EQ(genus2.exit_code, 0) << genus2.err;
-  const nlohmann::json report2 = nlohmann::json::parse(genus2.out.substr(genus2.out.find('{')));
-  EXPECT_EQ(report2["riemann_matrix"].size(), 2u);
+  // Without --report, standard output is the JSON and nothing else (`forms IN > f.json`); the
+  // summary line goes to standard error unless --quiet.
+  for (const bool quiet : {true, false}) {
+    const test::RunResult genus2 = quiet
+                                       ? run_cli({"forms", test::data_path("eight.off"), "--quiet"})
+                                       : run_cli({"forms", test::data_path("eight.off")});
+    ASSERT_EQ(genus2.exit_code, 0) << genus2.err;
+    ASSERT_TRUE(nlohmann::json::accept(genus2.out)) << genus2.out;
+    EXPECT_EQ(nlohmann::json::parse(genus2.out)["riemann_matrix"].size(), 2u);
+    EXPECT_EQ(genus2.err.find("genus 2, Riemann matrix") == std::string::npos, quiet) << genus2.err;
+  }
 
   const test::RunResult open = run_cli({"forms", test::data_path("eight.hole.off")});
   EXPECT_EQ(open.exit_code, 3);

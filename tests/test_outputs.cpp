@@ -1,9 +1,15 @@
 // Outputs are all-or-nothing and never clash; results do not depend on the unit; odd but valid
 // meshes (pillows, coincident vertices, huge and tiny coordinates) get a map or a clear refusal.
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <set>
+
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -20,12 +26,18 @@ bool exists(const std::string &path) {
   return std::filesystem::exists(path);
 }
 
-// Nothing but the input in `dir`: no output and no partial file was left.
+// What is in `dir`, files, folders and links alike: no output and no partial file or staging
+// folder is left.
 size_t files_in(const TempDir &dir) {
   size_t count = 0;
-  for (const auto &entry : std::filesystem::directory_iterator(dir.path("")))
-    count += entry.is_regular_file();
+  for ([[maybe_unused]] const auto &entry : std::filesystem::directory_iterator(dir.path("")))
+    ++count;
   return count;
+}
+
+std::string file_text(const std::string &path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 nlohmann::json read_json(const std::string &path) {
@@ -97,6 +109,77 @@ TEST(Outputs, AllOrNothing) {
               exists(dir.path("r.json")));
 }
 
+// The staging files cannot be aimed elsewhere: a link planted where an earlier release staged
+// its output (OUT.meromorph-partial, pointing to the input) is left alone and the input keeps
+// its bytes; outputs that exist and are not regular files (a FIFO, a socket, a folder) are
+// refused with exit 2 before any work and stay what they were; one new file spelled two ways
+// (relative, through `.` or `..`) is refused; written outputs get the permissions of any new
+// file (the umask), and no staging folder is left behind.
+TEST(Outputs, StagingCannotBeRedirected) {
+  TempDir dir;
+  const std::string original = file_text(test::data_path("eight.off"));
+  const std::string input = dir.write("eight.off", original);
+  std::filesystem::create_symlink(input, dir.path("out.ply.meromorph-partial"));
+  const test::RunResult planted = run_cli({"param", input, "-o", dir.path("out.ply"), "--quiet"});
+  EXPECT_EQ(planted.exit_code, 0) << planted.err;
+  EXPECT_EQ(file_text(input), original) << "the input was written into";
+  EXPECT_TRUE(std::filesystem::is_symlink(dir.path("out.ply.meromorph-partial")));
+  EXPECT_EQ(files_in(dir), 3u); // the input, the link, out.ply
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  EXPECT_EQ(std::filesystem::status(dir.path("out.ply")).permissions(),
+            std::filesystem::perms(0666 & ~mask));
+
+  ASSERT_EQ(::mkfifo(dir.path("pipe.ply").c_str(), 0600), 0);
+  const int listening = ::socket(AF_UNIX, SOCK_STREAM, 0);
+  sockaddr_un address{};
+  address.sun_family = AF_UNIX;
+  const std::string socket_path = dir.path("socket.json");
+  ASSERT_LT(socket_path.size(), sizeof(address.sun_path));
+  std::strcpy(address.sun_path, socket_path.c_str());
+  ASSERT_EQ(::bind(listening, reinterpret_cast<sockaddr *>(&address), sizeof(address)), 0);
+  std::filesystem::create_directory(dir.path("folder.ply"));
+  for (const auto &[option, path, what] :
+       {std::tuple<std::string, std::string, std::string>{"-o", dir.path("pipe.ply"), "FIFO"},
+        {"--sphere", dir.path("pipe.ply"), "FIFO"},
+        {"--report", socket_path, "socket"},
+        {"-o", dir.path("folder.ply"), "folder"}}) {
+    std::vector<std::string> arguments = {"param", input, "--quiet"};
+    if (option != "-o") arguments.insert(arguments.end(), {"-o", dir.path("new.ply")});
+    arguments.insert(arguments.end(), {option, path});
+    const test::RunResult r = run_cli(arguments);
+    EXPECT_EQ(r.exit_code, 2) << path << ": " << r.err;
+    EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
+    EXPECT_FALSE(exists(dir.path("new.ply")));
+  }
+  ::close(listening);
+  EXPECT_TRUE(std::filesystem::is_fifo(dir.path("pipe.ply")));
+  EXPECT_TRUE(std::filesystem::is_socket(socket_path));
+  EXPECT_TRUE(std::filesystem::is_directory(dir.path("folder.ply")));
+  EXPECT_EQ(files_in(dir), 6u);
+
+  // Relative spellings of one new file, from inside the folder.
+  const std::filesystem::path previous = std::filesystem::current_path();
+  std::filesystem::current_path(dir.path(""));
+  for (const std::vector<std::string> &clash :
+       {std::vector<std::string>{"-o", "same.ply", "--sphere", "./same.ply"},
+        {"-o", "same.ply", "--report", "folder.ply/../same.ply"},
+        {"-o", "eight.off.ply", "--sphere",
+         "../" + std::filesystem::path(dir.path("")).parent_path().filename().string() +
+             "/eight.off.ply"}}) {
+    std::vector<std::string> arguments = {"param", "eight.off", "--quiet"};
+    arguments.insert(arguments.end(), clash.begin(), clash.end());
+    const test::RunResult r = run_cli(arguments);
+    EXPECT_EQ(r.exit_code, 2) << clash[3] << ": " << r.err;
+    EXPECT_NE(r.err.find("two outputs"), std::string::npos) << r.err;
+  }
+  const test::RunResult into_input = run_cli({"param", "eight.off", "-o", "./eight.off"});
+  std::filesystem::current_path(previous);
+  EXPECT_EQ(into_input.exit_code, 2) << into_input.err;
+  EXPECT_EQ(file_text(input), original);
+  EXPECT_EQ(files_in(dir), 6u);
+}
+
 TEST(Outputs, AnInvalidMapWritesNothing) {
   TempDir dir;
   // Limbs 20 times longer than thick: their images shrink below what doubles resolve.
@@ -153,6 +236,33 @@ TEST(Outputs, TheMapDoesNotDependOnTheUnit) {
     }
     EXPECT_EQ(branch, branch_at_one) << "scale " << scale;
     EXPECT_NEAR(error, error_at_one, 1e-9) << "scale " << scale;
+  }
+}
+
+// The remesh does not depend on the unit either, from 1e-200 to 1e200: the same vertex and face
+// counts, the same Hausdorff distance over the diagonal, its positions at the input's scale.
+TEST(Outputs, TheRemeshDoesNotDependOnTheUnit) {
+  TempDir dir;
+  nlohmann::json at_one;
+  for (double scale : {1.0, 1e-200, 1e-50, 1e40, 1e200}) {
+    const std::string input = scaled_eight(dir, scale);
+    const test::RunResult r = run_cli({"remesh", input, "-o", input + ".remesh.off", "--vertices",
+                                       "400", "--report", input + ".json", "--quiet"});
+    ASSERT_EQ(r.exit_code, 0) << scale << ": " << r.err;
+    const nlohmann::json quality = read_json(input + ".json")["remesh"];
+    if (scale == 1.0) at_one = quality;
+    EXPECT_EQ(quality["vertices"], at_one["vertices"]) << scale;
+    EXPECT_EQ(quality["faces"], at_one["faces"]) << scale;
+    EXPECT_NEAR(quality["hausdorff_over_diagonal"]["to_input"].get<double>(),
+                at_one["hausdorff_over_diagonal"]["to_input"].get<double>(), 1e-6)
+        << scale;
+    Mesh remeshed;
+    test::load(input + ".remesh.off", remeshed);
+    double largest = 0;
+    for (const MeshVertex &v : remeshed.vert)
+      largest = std::max(largest, std::abs(v.cP()[0]) / scale);
+    EXPECT_GT(largest, 0.1) << scale; // eight.off spans about [-1, 1]
+    EXPECT_LT(largest, 2.0) << scale;
   }
 }
 

@@ -492,6 +492,12 @@ meromorph_status meromorph_remesh_d(const double *positions, size_t vertex_count
                         if (area_correct != 0 && area_correct != 1)
                           throw meromorph::ArgumentError(
                               "area_correct is " + std::to_string(area_correct) + "; use 0 or 1");
+                        if (target_vertices > meromorph::max_remesh_vertices ||
+                            (target_vertices > 0 && target_vertices < 12))
+                          throw meromorph::ArgumentError(
+                              "target_vertices is " + std::to_string(target_vertices) +
+                              "; give 12 to " + std::to_string(meromorph::max_remesh_vertices) +
+                              ", or 0 for the input's vertex count");
                         return remesh_result(arrays, settings, target_vertices, area_correct == 1);
                       });
 }

@@ -67,16 +67,19 @@ int run_forms(const FormsOptions &options) {
     write_text_file(report_file, json_text(report) + "\n");
     outputs.commit();
   }
-  if (!options.quiet || options.report.empty()) {
-    std::cout << "genus " << forms.genus;
+  // Standard output carries the JSON alone when no report file is named: the summary line then
+  // goes to standard error.
+  if (!options.quiet) {
+    std::ostream &summary = options.report.empty() ? std::cerr : std::cout;
+    summary << "genus " << forms.genus;
     if (forms.modulus)
-      std::cout << ", modulus " << forms.modulus->real()
-                << (forms.modulus->imag() < 0 ? " - " : " + ") << std::abs(forms.modulus->imag())
-                << "i";
-    if (forms.genus >= 2) std::cout << ", Riemann matrix (see the report)";
-    std::cout << ", non-holomorphicity " << forms.non_holomorphicity_mean << "\n";
-    if (options.report.empty()) std::cout << json_text(report) << "\n";
+      summary << ", modulus " << forms.modulus->real()
+              << (forms.modulus->imag() < 0 ? " - " : " + ") << std::abs(forms.modulus->imag())
+              << "i";
+    if (forms.genus >= 2) summary << ", Riemann matrix (see the report)";
+    summary << ", non-holomorphicity " << forms.non_holomorphicity_mean << "\n";
   }
+  if (options.report.empty()) std::cout << json_text(report) << "\n";
   return int(ExitCode::done);
 }
 
@@ -88,11 +91,13 @@ Command add_forms_command(CLI::App &app) {
       "forms", "Holomorphic 1-forms of a closed surface: periods, the modulus (genus 1) or the "
                "Riemann matrix (genus >= 2), with residuals and timings.");
   forms->add_option("INPUT", options->input, "mesh file (.ply, .obj, .off, .stl)")->required();
-  forms->add_option("--report", options->report, "write the JSON report here (else to stdout)");
+  forms->add_option("--report", options->report,
+                    "write the JSON report here (else to standard output, the summary line then to "
+                    "standard error)");
   forms->add_option("--solver", options->solver, "cholmod (default) or ldlt")
       ->check(CLI::IsMember({"cholmod", "ldlt"}));
   forms->add_flag("--repair", options->repair, "apply the safe repairs first (see info --help)");
-  forms->add_flag("--quiet", options->quiet, "no progress bar");
+  forms->add_flag("--quiet", options->quiet, "no progress bar and no summary line");
   return [options] { return run_forms(*options); };
 }
 

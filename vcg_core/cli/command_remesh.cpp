@@ -128,7 +128,7 @@ Command add_remesh_command(CLI::App &app) {
   remesh
       ->add_option("--vertices", options->vertices,
                    "about this many vertices in the result (default: as many as the input)")
-      ->check(CLI::Range(12LL, 2000000000LL));
+      ->check(CLI::Range(12LL, max_remesh_vertices));
   remesh->add_flag("--no-area-correct", options->no_area_correct,
                    "sample the map as centred, without the Moebius area correction (long parts "
                    "then get fewer samples)");

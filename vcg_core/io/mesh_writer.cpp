@@ -6,37 +6,16 @@
 #include <filesystem>
 
 #include <vcg/complex/append.h>
-// vcglib's exporters write value by value (a PLY face: about a dozen fwrite calls), each taking
-// the FILE's lock; the FILE is the exporter's own, used on one thread: its unlocked twin does the
-// same writing (the same bytes) without the locks. Writing `param`'s PLY files: a 4k-vertex
-// surface 1.6 -> 0.95 ms (least of 6); maxplanck x16 (200k vertices), the surface 85 -> 50 ms and
-// the layered sphere 52 -> 26 ms.
-#define fwrite fwrite_unlocked
 #include <wrap/io_trimesh/export_obj.h>
 #include <wrap/io_trimesh/export_off.h>
 #include <wrap/io_trimesh/export_ply.h>
 #include <wrap/io_trimesh/export_stl.h>
-#undef fwrite
 
 #include "common/errors.h"
 #include "io/mesh_format.h"
 #include "io/staged_outputs.h"
 
 namespace meromorph {
-
-void refuse_to_overwrite(const std::string &output, const std::vector<std::string> &inputs) {
-  namespace fs = std::filesystem;
-  std::error_code error;
-  for (const std::string &input : inputs) {
-    const bool same =
-        fs::exists(output, error) && fs::exists(input, error)
-            ? fs::equivalent(output, input, error)
-            : fs::weakly_canonical(output, error) == fs::weakly_canonical(input, error);
-    if (same)
-      throw ArgumentError(output + ": this is the input file; meromorph never writes over its "
-                                   "input, choose another output name");
-  }
-}
 
 void save_mesh(const Mesh &mesh, MeshFormat format, const std::string &file,
                const WriteOptions &options) {

@@ -39,9 +39,6 @@ struct WriteOptions {
   std::vector<FloatVertexProperty> float_vertex_properties; // PLY only
 };
 
-// Throws ArgumentError if `output` names the same file as any of `inputs`.
-void refuse_to_overwrite(const std::string &output, const std::vector<std::string> &inputs);
-
 // Writes `mesh` to exactly `file` in `format` (a staged temporary path, see staged_outputs.h).
 void save_mesh(const Mesh &mesh, MeshFormat format, const std::string &file,
                const WriteOptions &options = {});

@@ -473,6 +473,7 @@ MeshArrays read_ply(const std::string &path, const std::string &bytes,
   }
   std::vector<int> polygon;
   for (const Element &element : header.elements) {
+    if (element.properties.empty()) continue; // its instances take no bytes: nothing to read
     for (uint64_t i = 0; i < element.count; ++i) {
       Point3 position(0, 0, 0);
       polygon.clear();

@@ -2,11 +2,15 @@
 // name, and moved into place only when all of them were written.
 //
 // In:  the job's inputs (never written over) and its output paths, one `add` each.
-// Out: for each output, the temporary path to write it to; `commit` moves them all into place.
-//      Whatever was not committed is removed when the object goes away, so a failed job leaves
-//      no output and no partial file behind.
-// Errors: ArgumentError when an output is an input, names the same file as another output, or is
-//      a folder; WriteError (with the system's reason) when a file cannot be written or moved.
+// Out: for each output, the temporary path to write it to: a file created exclusively (never
+//      through a link) in a folder of its own with an unpredictable name (mode 0700), made in the
+//      target's folder, so no other user can aim the write elsewhere; `commit` renames them all
+//      into place. Whatever was not committed is removed when the object goes away, so a failed
+//      job leaves no output and no partial file behind.
+// Errors (from `add`, before any work): ArgumentError when an output is an input, names the same
+//      file as another output (after `.`, `..` and links are resolved), or exists and is not a
+//      regular file (a folder, a device, a FIFO, a socket); WriteError (with the system's reason)
+//      when the target's folder cannot take a file, or a file cannot be written or moved.
 #pragma once
 
 #include <string>
@@ -27,7 +31,7 @@ public:
   void commit();
 
 private:
-  std::vector<std::string> inputs_, outputs_, temporaries_;
+  std::vector<std::string> inputs_, outputs_, folders_, temporaries_;
 };
 
 // Writes `text` to `path` (the whole file or nothing); throws WriteError with the system's reason.

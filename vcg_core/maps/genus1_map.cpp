@@ -48,8 +48,9 @@ std::vector<Complex> integrate_from(int root, const IndexLists &incident, const 
 // each half period): the narrower its widest corner, the better.
 // An angle (radians) rounded to 1e-9: on symmetric meshes many vertices tie, and ties are broken
 // by vertex index, not by rounding noise (which a scale of the input or a summation order moves).
+// A NaN (a degenerate flat corner) counts as the widest: sorts need a strict weak order.
 double settled(double angle) {
-  return std::round(angle * 1e9);
+  return std::isnan(angle) ? std::numeric_limits<double>::infinity() : std::round(angle * 1e9);
 }
 
 std::vector<int> origin_candidates(const PreparedMesh &prepared, const Eigen::VectorXcd &psi,
@@ -59,12 +60,17 @@ std::vector<int> origin_candidates(const PreparedMesh &prepared, const Eigen::Ve
   const std::vector<double> widest = widest_flat_corners(prepared, psi);
   const std::vector<double> scale = flat_area_ratios(prepared, psi);
   std::vector<double> sorted = scale;
+  for (double &ratio : sorted) // NaN (degenerate faces) would break nth_element's order
+    if (std::isnan(ratio)) ratio = 0;
   const auto high = sorted.begin() + std::ptrdiff_t(0.9 * double(vertex_count - 1));
   std::nth_element(sorted.begin(), high, sorted.end());
   const double enough = 0.5 * *high;
   std::vector<int> candidates;
   for (size_t v = 0; v < vertex_count; ++v)
     if (scale[v] >= enough) candidates.push_back(int(v));
+  if (candidates.empty()) // no finite area ratio reaches the bar (needles): every vertex competes
+    for (size_t v = 0; v < vertex_count; ++v)
+      candidates.push_back(int(v));
   const size_t kept = std::min<size_t>(8, candidates.size());
   std::partial_sort(candidates.begin(), candidates.begin() + std::ptrdiff_t(kept), candidates.end(),
                     [&](int a, int b) {

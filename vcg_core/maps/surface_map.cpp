@@ -37,6 +37,14 @@ const Finding *finding_left(const Validation &validation, bool close_holes) {
   return left;
 }
 
+// Findings about single vertices and faces, which taking non-manifold spots apart leaves as they
+// are.
+bool split_leaves_it(FindingKind kind) {
+  return kind == FindingKind::empty_mesh || kind == FindingKind::non_finite_coordinates ||
+         kind == FindingKind::repeated_vertex_in_face ||
+         kind == FindingKind::unreferenced_vertices || kind == FindingKind::beyond_double_precision;
+}
+
 // What param cannot take, as the refusal says it: the finding (with its remedies: the option
 // that would take it), and which of the vertices named are copies the split made (it numbers them
 // after the input's).
@@ -113,6 +121,14 @@ Parameterization parameterize_surface_here(Mesh &input, const ParameterizeOption
   Mesh split_mesh;
   NonmanifoldSplit split_spots;
   if (split) {
+    // What taking the spots apart cannot change is refused first: the split costs far more.
+    Validation unaffected = validation;
+    unaffected.findings.erase(
+        std::remove_if(unaffected.findings.begin(), unaffected.findings.end(),
+                       [](const Finding &finding) { return !split_leaves_it(finding.kind); }),
+        unaffected.findings.end());
+    if (const Finding *left = finding_left(unaffected, options.close_holes))
+      refuse(*left, nonmanifold, false, input, split_spots);
     split_spots = split_nonmanifold(input, split_mesh);
     validation = validate_mesh(split_mesh);
   }

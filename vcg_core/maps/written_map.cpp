@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <optional>
 
+#include "common/errors.h"
 #include "maps/fold_untangling.h"
 #include "maps/genus1_branch_placement.h"
 
@@ -74,6 +75,7 @@ void finish_on_sphere(const PreparedMesh &prepared, bool mobius, const Genus1Map
 WrittenSphere written_genus1_map(const PreparedMesh &prepared, const HolomorphicForms &forms,
                                  const std::vector<int> &origins, bool mobius,
                                  const Progress &progress, StageClock &clock) {
+  if (origins.empty()) throw InternalError("genus 1: no vertex to place the double pole on");
   std::optional<WrittenSphere> first;
   for (size_t k = 0; k < std::min<size_t>(4, origins.size()); ++k) {
     const Genus1Map map = genus1_map(prepared, forms.normalized[0], Complex(1, 0),

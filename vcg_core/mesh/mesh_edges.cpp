@@ -21,12 +21,9 @@ std::vector<int> first_half_edge_on_same_vertices(const Mesh &mesh) {
   for (size_t v = 0; v < mesh.vert.size(); ++v)
     for (int i = start[v]; i < start[v + 1]; ++i) {
       const int h = by_low[size_t(i)];
-      first[size_t(h)] = h;
-      for (int j = start[v]; j < i; ++j)
-        if (high[size_t(by_low[size_t(j)])] == high[size_t(h)]) {
-          first[size_t(h)] = first[size_t(by_low[size_t(j)])];
-          break;
-        }
+      const bool same_as_previous =
+          i > start[v] && high[size_t(by_low[size_t(i - 1)])] == high[size_t(h)];
+      first[size_t(h)] = same_as_previous ? first[size_t(by_low[size_t(i - 1)])] : h;
     }
   return first;
 }
@@ -50,10 +47,21 @@ HalfEdgesByLowVertex half_edges_by_low_vertex(const Mesh &mesh) {
   }
   for (size_t v = 0; v < mesh.vert.size(); ++v)
     out.start[v + 1] += out.start[v];
-  out.by_low.resize(size_t(out.start.back()));
+  // First by the higher vertex (stable in h), then by the lower one (stable): ordered by
+  // (low, high, h).
+  std::vector<int> high_start(mesh.vert.size() + 1, 0);
+  for (size_t h = 0; h < half_edges; ++h)
+    if (out.low[h] >= 0) ++high_start[size_t(out.high[h]) + 1];
+  for (size_t v = 0; v < mesh.vert.size(); ++v)
+    high_start[v + 1] += high_start[v];
+  std::vector<int> by_high(size_t(high_start.back()));
+  for (size_t h = 0; h < half_edges; ++h)
+    if (out.low[h] >= 0) by_high[size_t(high_start[size_t(out.high[h])]++)] = int(h);
+  high_start = {};
+  out.by_low.resize(by_high.size());
   std::vector<int> fill(out.start.begin(), out.start.end() - 1);
-  for (size_t h = 0; h < half_edges; ++h) // in increasing h within each vertex
-    if (out.low[h] >= 0) out.by_low[size_t(fill[size_t(out.low[h])]++)] = int(h);
+  for (int h : by_high)
+    out.by_low[size_t(fill[size_t(out.low[size_t(h)])]++)] = h;
   return out;
 }
 

@@ -31,8 +31,9 @@ struct MeshEdges {
 MeshEdges build_mesh_edges(const Mesh &mesh);
 
 // The half-edges h = 3 f + k (side k of face f, deleted faces left out: low = -1) grouped by
-// their lower vertex in linear time (a counting sort): those of vertex v are
-// by_low[start[v] .. start[v + 1]), in increasing h; `high` is each one's other vertex.
+// their lower vertex in linear time (two counting sorts): those of vertex v are
+// by_low[start[v] .. start[v + 1]), ordered by their other vertex `high`, then by h; so the
+// half-edges on the same two vertices are consecutive, whatever the vertex's valence.
 struct HalfEdgesByLowVertex {
   std::vector<int> low, high, start, by_low;
 };

@@ -1,6 +1,7 @@
 #include "mesh/nonmanifold_split.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <tuple>
@@ -115,17 +116,46 @@ struct CornerGluing {
       corners.join(corner_at(one, vertex), corner_at(other, vertex));
   }
 
+  // Per face around an edge, the (at most two) first other faces whose fan meets its own at an
+  // end of the edge, in increasing order: enough to tell none, one, or more. Linear in the
+  // number of faces (up to sorting), however many share the edge.
+  std::vector<std::vector<size_t>> joined_through_fans(const std::vector<EdgeUse> &around) {
+    const size_t n = around.size();
+    std::array<std::vector<std::pair<int, size_t>>, 2> by_set; // (set at the end, face), sorted
+    for (int end = 0; end < 2; ++end) {
+      for (size_t i = 0; i < n; ++i)
+        by_set[size_t(end)].push_back(
+            {set_at(around[i], end == 0 ? around[i].low : around[i].high), i});
+      std::sort(by_set[size_t(end)].begin(), by_set[size_t(end)].end());
+    }
+    std::vector<std::vector<size_t>> joined(n);
+    for (size_t i = 0; i < n; ++i) {
+      std::vector<size_t> found;
+      for (int end = 0; end < 2; ++end) {
+        const auto &sets = by_set[size_t(end)];
+        const int set = set_at(around[i], end == 0 ? around[i].low : around[i].high);
+        size_t taken = 0;
+        for (auto at = std::lower_bound(sets.begin(), sets.end(), std::make_pair(set, size_t(0)));
+             at != sets.end() && at->first == set && taken < 2; ++at)
+          if (at->second != i) {
+            found.push_back(at->second);
+            ++taken;
+          }
+      }
+      std::sort(found.begin(), found.end());
+      found.erase(std::unique(found.begin(), found.end()), found.end());
+      if (found.size() > 2) found.resize(2);
+      joined[i] = std::move(found);
+    }
+    return joined;
+  }
+
   // Around an edge with more than two faces: two faces whose fans already meet at an end of the
   // edge must be glued to each other (else the edge keeps more than two faces); the others are
   // paired by their geometry.
   void glue_crowded_edge(const std::vector<EdgeUse> &around) {
+    const std::vector<std::vector<size_t>> joined = joined_through_fans(around);
     const size_t n = around.size();
-    std::vector<std::vector<size_t>> joined(n);
-    for (size_t i = 0; i < n; ++i)
-      for (size_t j = 0; j < n; ++j)
-        if (i != j && (set_at(around[i], around[i].low) == set_at(around[j], around[j].low) ||
-                       set_at(around[i], around[i].high) == set_at(around[j], around[j].high)))
-          joined[i].push_back(j);
     std::vector<EdgeUse> free;
     for (size_t i = 0; i < n; ++i) {
       if (joined[i].empty()) free.push_back(around[i]);

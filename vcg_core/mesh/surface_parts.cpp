@@ -42,6 +42,21 @@ void close_loop(const std::vector<int> &loop, std::vector<Point3> &positions,
         arc[i] + (positions[size_t(loop[(i + 1) % n])] - positions[size_t(loop[i])]).Norm();
   }
   centre /= double(n);
+  // At extreme scales (1e-300, 1e200) squared lengths underflow or overflow: measure relative to
+  // the loop's extent then, and where even that gives no finite length, by vertex count.
+  if (!(arc[n] > 0 && std::isfinite(arc[n]))) {
+    double extent = 0;
+    for (int v : loop)
+      for (int axis = 0; axis < 3; ++axis)
+        extent = std::max(extent, std::abs(positions[size_t(v)][axis] - centre[axis]));
+    for (size_t i = 0; i < n; ++i) {
+      const Point3 side = positions[size_t(loop[(i + 1) % n])] - positions[size_t(loop[i])];
+      arc[i + 1] = arc[i] + (extent > 0 && std::isfinite(extent) ? (side / extent).Norm() : 0.0);
+    }
+    if (!(arc[n] > 0 && std::isfinite(arc[n])))
+      for (size_t i = 0; i <= n; ++i)
+        arc[i] = double(i);
+  }
   const auto on_loop = [&](double s) { // the point at arc-length fraction s of the loop
     const double at = s * arc[n];
     size_t i = 0;

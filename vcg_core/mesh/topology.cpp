@@ -47,22 +47,20 @@ std::vector<int> half_edge_partners(const Mesh &mesh) {
   std::vector<int> partner(half_edges, -1);
   std::vector<char> non_manifold(mesh.vert.size(), 0);
   parallel_for(mesh.vert.size(), [&](size_t v) {
-    for (int i = start[v]; i < start[v + 1]; ++i) {
+    // The half-edges on the same two vertices are consecutive (half_edges_by_low_vertex).
+    for (int i = start[v]; i < start[v + 1];) {
       const int h = by_low[size_t(i)];
-      if (partner[size_t(h)] >= 0) continue;
-      int found = -1, count = 1;
-      for (int j = i + 1; j < start[v + 1]; ++j) {
-        const int other = by_low[size_t(j)];
-        if (high[size_t(other)] != high[size_t(h)]) continue;
-        ++count;
-        found = other;
-      }
-      if (count > 2) { // a non-manifold edge
+      int end = i + 1;
+      while (end < start[v + 1] && high[size_t(by_low[size_t(end)])] == high[size_t(h)])
+        ++end;
+      if (end - i > 2) { // a non-manifold edge
         non_manifold[v] = 1;
         return;
       }
-      partner[size_t(h)] = count == 2 ? found : h;
-      if (count == 2) partner[size_t(found)] = h;
+      const int other = by_low[size_t(end - 1)];
+      partner[size_t(h)] = other;
+      partner[size_t(other)] = h;
+      i = end;
     }
   });
   if (std::find(non_manifold.begin(), non_manifold.end(), 1) != non_manifold.end()) return {};

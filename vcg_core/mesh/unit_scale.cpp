@@ -15,6 +15,13 @@ Point3 UnitScale::apply(const Point3 &position) const {
   return out;
 }
 
+Point3 UnitScale::undo(const Point3 &unit) const {
+  Point3 out;
+  for (int k = 0; k < 3; ++k)
+    out[k] = std::ldexp(unit[k], -exponent) + centre[k];
+  return out;
+}
+
 UnitScale unit_scale_of(const Mesh &mesh) {
   UnitScale scale;
   if (mesh.vert.empty()) return scale;

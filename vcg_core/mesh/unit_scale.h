@@ -22,6 +22,8 @@ struct UnitScale {
   int exponent = 0;       // factor = 2^exponent; the largest |coordinate - centre| is in [0.5, 1)
   // The unit-scale position of an input position (safe up to the largest doubles).
   Point3 apply(const Point3 &position) const;
+  // The input position of a unit-scale one.
+  Point3 undo(const Point3 &unit) const;
 };
 
 UnitScale unit_scale_of(const Mesh &mesh);

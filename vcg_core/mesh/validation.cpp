@@ -247,11 +247,12 @@ void check_vertices(const Mesh &mesh, Validation &out) {
   Finding duplicates(FindingKind::duplicate_vertices, true);
   std::vector<char> boundary;
   int kept_apart = 0;
+  size_t first = 0; // where the run of vertices at the position of order[i] starts
   for (size_t i = 1; i < order.size(); ++i) {
-    if (key(order[i]) != key(order[i - 1])) continue;
-    size_t first = i - 1;
-    while (first > 0 && key(order[first - 1]) == key(order[i]))
-      --first;
+    if (key(order[i]) != key(order[i - 1])) {
+      first = i;
+      continue;
+    }
     if (boundary.empty()) boundary = boundary_vertices(mesh);
     if (!boundary[size_t(order[first])] || !boundary[size_t(order[i])]) {
       ++kept_apart;

@@ -7,6 +7,7 @@
 #include <vcg/complex/algorithms/update/topology.h>
 
 #include "common/errors.h"
+#include "mesh/unit_scale.h"
 #include "remesh/flat_torus_lift.h"
 #include "remesh/geodesic_sphere.h"
 #include "remesh/layered_sphere_lift.h"
@@ -320,12 +321,20 @@ void append_part(const LiftedSphere &lifted, int part, SurfaceRemesh &out) {
 
 } // namespace
 
-void remesh_through_sphere(const Mesh &input, const Parameterization &map,
+void remesh_through_sphere(const Mesh &given, const Parameterization &map,
                            const RemeshOptions &options, const Progress &progress,
                            SurfaceRemesh &out) {
   if (options.resolution > 12)
     throw ArgumentError("the resolution is at most 12 (167 million sphere vertices)");
-  if (map.sphere.empty() || input.vert.empty()) throw ArgumentError("remesh: the mesh is empty");
+  if (options.vertices > max_remesh_vertices || (options.vertices >= 0 && options.vertices < 12))
+    throw ArgumentError("the vertex target is " + std::to_string(options.vertices) +
+                        "; give 12 to " + std::to_string(max_remesh_vertices));
+  if (map.sphere.empty() || given.vert.empty()) throw ArgumentError("remesh: the mesh is empty");
+  // Computed at unit scale (unit_scale.h), so that a surface in nanometres or light years gives
+  // the same remesh; its positions are put back at the input's scale at the end.
+  const UnitScale scale = unit_scale_of(given);
+  Mesh input;
+  copy_at_unit_scale(given, scale, input);
   const MappedMesh mapped = mapped_mesh(input, map);
   const int parts = map.components.empty() ? 1 : int(map.components.size());
   const long long target = options.vertices > 0 ? options.vertices : (long long)input.vert.size();
@@ -383,6 +392,8 @@ void remesh_through_sphere(const Mesh &input, const Parameterization &map,
   }
   progress.report(0.8, "remesh quality");
   out.quality = measure_remesh(input, out.mesh, out.local_degree);
+  for (MeshVertex &vertex : out.mesh.vert)
+    vertex.P() = scale.undo(vertex.cP());
   // Evening out fills the regions the sphere samples sparsely; without it they are reported.
   if (!options.even_out && parts == 1 && map.sphere_faces.empty())
     out.sparse_regions = sparsely_sampled_regions(

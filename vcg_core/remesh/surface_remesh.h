@@ -34,6 +34,9 @@
 
 namespace meromorph {
 
+// The largest vertex target (the command line's and the C library's bound).
+constexpr long long max_remesh_vertices = 2000000000LL;
+
 struct RemeshOptions {
   int resolution = -1;     // N >= 0: frequency 2^N; -1: from the vertex target
   long long vertices = -1; // the vertex target; -1: the input's vertex count
