@@ -9,7 +9,7 @@
 // - the main job as `meromorph param` runs it: reading the file and `parameterize_surface`, with
 //   the time of every stage, the rest (validation) and the total, the ratio of the total to the
 //   floor, the peak memory, and the longest time without a call of the progress callback.
-// Both jobs run with the process memory settings of the CLI (common/process_memory.h), each
+// Both jobs run with the process settings of the CLI (cli/process_settings.h), each
 // REPEATS times (default 3), one after the other in turns; the run with the least total of each
 // is shown (a shared virtual machine's run-to-run noise is 10-30%, always upwards).
 // Then per genus and stage the scaling exponent: the slope of log time against log vertices over
@@ -20,6 +20,8 @@
 //        closed surface; its genus from its Euler characteristic).
 //        bench_meshes --large [REPEATS]: the same row for the generated genus-5 surface at 2.7M
 //        vertices (default one run: about a minute and a half each).
+//        bench_meshes --threads SHARED_MESHES_DIR [REPEATS]: `param` with the default threads
+//        against one thread, on an idle machine and beside one and two busy processes.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -33,20 +35,23 @@
 #include <string>
 #include <vector>
 
+#include <csignal>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <Eigen/CholmodSupport>
+#if defined(_OPENMP)
+#include <omp.h>
+#endif
 
-#include "common/process_memory.h"
-#include "common/serial_openmp_regions.h"
+#include "cli/process_settings.h"
 #include "io/mesh_reader.h"
 #include "io/mesh_writer.h"
-#include "maps/surface_map.h"
+#include "job/surface_map.h"
 #include "mesh/cotan_laplacian.h"
 #include "mesh/mesh_edges.h"
-#include "shapes/test_surfaces.h"
+#include "shapes/generated_surfaces.h"
 
 using namespace meromorph;
 
@@ -120,9 +125,6 @@ struct Source {
 };
 
 Figures floor_job(const std::string &path, int genus) {
-  // (in a process of its own) libgomp's regions as they come, not ours
-  // (common/serial_openmp_regions.h)
-  hand_every_openmp_region_to_libgomp();
   Figures out;
   Mesh mesh;
   out["read"] = milliseconds([&] { read_mesh(path, mesh); });
@@ -292,6 +294,87 @@ int large_row(const std::string &path, int repeats) {
   return status;
 }
 
+// Processes that keep a core busy (a loop with nothing to wait for), as other work on the machine
+// does, until `stop_busy` ends them.
+std::vector<pid_t> start_busy(int count) {
+  std::vector<pid_t> busy;
+  for (int k = 0; k < count; ++k) {
+    const pid_t child = fork();
+    if (child == 0) {
+      volatile double x = 1;
+      while (true)
+        x = x * 1.0000001 + 1e-9;
+    }
+    busy.push_back(child);
+  }
+  return busy;
+}
+
+void stop_busy(const std::vector<pid_t> &busy) {
+  for (pid_t child : busy) {
+    kill(child, SIGKILL);
+    waitpid(child, nullptr, 0);
+  }
+}
+
+// `param` with the default threads and with one thread (omp_set_num_threads(1) in the job's
+// process: the threads policy, common/job_threads.h, then has one to give), on an idle machine
+// and beside one and two busy processes; the least of `repeats` runs each, in turns.
+int threads_table(const std::string &shared, int repeats) {
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("meromorph-bench-threads-" + std::to_string(getpid()) + ".ply"))
+                               .string();
+  struct Case {
+    std::string name;
+    std::function<void(Mesh &)> make;
+  };
+  const std::vector<Case> cases = {
+      {"maxplanck x1", [&](Mesh &m) { read_mesh(shared + "/maxplanck.nf25k.off", m); }},
+      {"maxplanck x4",
+       [&](Mesh &m) { read_mesh(shared + "/maxplanck.nf25k.off", m), subdivide_flat(m, 1); }},
+      {"kitten x1", [&](Mesh &m) { read_mesh(shared + "/kitten.nv40k.off", m); }},
+      {"kitten x4",
+       [&](Mesh &m) { read_mesh(shared + "/kitten.nv40k.off", m), subdivide_flat(m, 1); }},
+      {"eight x64", [&](Mesh &m) { read_mesh(shared + "/eight.off", m), subdivide_flat(m, 3); }},
+      {"eight x256", [&](Mesh &m) { read_mesh(shared + "/eight.off", m), subdivide_flat(m, 4); }},
+      {"genus 5 (generated) x16",
+       [](Mesh &m) { make_genus_surface(m, 5, 24), subdivide_flat(m, 2); }},
+  };
+  std::printf("| mesh | vertices | idle: default | idle: one thread | ratio | one busy "
+              "process: default | one thread | ratio | two busy: default | one thread | ratio "
+              "|\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const Case &c : cases) {
+    const Figures made = in_child([&]() -> Figures {
+      Mesh mesh;
+      c.make(mesh);
+      write_mesh(mesh, path);
+      return {{"vertices", double(mesh.VN())}};
+    });
+    if (made.empty()) continue;
+    std::printf("| %s | %.0f |", c.name.c_str(), made.at("vertices"));
+    for (int busy_count : {0, 1, 2}) {
+      double least[2] = {1e300, 1e300};
+      for (int run = 0; run < repeats; ++run)
+        for (int one : {0, 1}) {
+          const std::vector<pid_t> busy = start_busy(busy_count);
+          const Figures figures = in_child([&] {
+#if defined(_OPENMP)
+            if (one) omp_set_num_threads(1);
+#endif
+            return param_job(path);
+          });
+          stop_busy(busy);
+          if (!figures.empty()) least[one] = std::min(least[one], figures.at("total"));
+        }
+      std::printf(" %.0f ms | %.0f ms | %.2f |", least[0], least[1], least[0] / least[1]);
+    }
+    std::printf("\n");
+    std::fflush(stdout);
+  }
+  std::filesystem::remove(path);
+  return 0;
+}
+
 } // namespace
 
 int main(int argc, char **argv) {
@@ -299,14 +382,18 @@ int main(int argc, char **argv) {
     std::fprintf(stderr,
                  "usage: bench_meshes SHARED_MESHES_DIR [SIZES LARGEST_VERTICES [REPEATS]]\n"
                  "       bench_meshes --mesh MESH_FILE [REPEATS]\n"
-                 "       bench_meshes --large [REPEATS]\n");
+                 "       bench_meshes --large [REPEATS]\n"
+                 "       bench_meshes --threads SHARED_MESHES_DIR [REPEATS]\n");
     return 2;
   }
-  // As the CLI does (the jobs run as `param` runs them), with room for the largest meshes.
-  tune_process_memory(heap_bytes_for_files({}, size_t(8) << 30));
+  // As the CLI does (the jobs run as `param` runs them).
+  cli::tune_command_line_process();
   if (std::string(argv[1]) == "--mesh")
     return mesh_file_row(argv[2], argc > 3 ? std::max(1, std::atoi(argv[3])) : 3,
                          std::filesystem::path(argv[2]).filename().string());
+  if (std::string(argv[1]) == "--threads")
+    return threads_table(argc > 2 ? argv[2] : "../shared/meshes",
+                         argc > 3 ? std::max(1, std::atoi(argv[3])) : 3);
   if (std::string(argv[1]) == "--large")
     return large_row((std::filesystem::temp_directory_path() /
                       ("meromorph-bench-large-" + std::to_string(getpid()) + ".ply"))

@@ -14,7 +14,7 @@
 #include "common/errors.h"
 #include "forms/holomorphic_pipeline.h"
 #include "io/format_readers.h"
-#include "maps/surface_map.h"
+#include "job/surface_map.h"
 #include "mesh/mesh_from_arrays.h"
 #include "remesh/surface_remesh.h"
 

@@ -223,7 +223,7 @@ FetchedMap fetch_map(const meromorph_result *result, size_t vertex_count, size_t
   map.branch_degrees.resize(map.branch_vertices.size());
   if (!map.branch_vertices.empty())
     meromorph_branch_points(result, map.branch_vertices.data(), map.branch_degrees.data());
-  meromorph_get_distortion(result, &map.distortion);
+  meromorph_map_distortion(result, &map.distortion);
   map.genus = meromorph_genus(result);
   map.degree = meromorph_degree(result);
   map.riemann_hurwitz = meromorph_riemann_hurwitz_ok(result) != 0;

@@ -1,11 +1,14 @@
 #!/usr/bin/env bash
-# Installs everything meromorph needs on Debian 12 from Debian's own packages, then fetches the
-# MeshLab source package (which carries vcglib and MeshLab's plugin headers) into .cache/.
+# Installs what meromorph needs on Debian 12 from Debian's own packages, then fetches the MeshLab
+# source package (which carries vcglib and MeshLab's plugin headers) into .cache/.
+# Usage: scripts/setup.sh [core|all]   core: what the command-line tool and the C library need;
+#        all (default): that, and MeshLab, Blender, Xvfb, GoogleTest and clang for the tests.
 # Idempotent: a second run installs nothing and downloads nothing.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cache="$here/.cache"
 mkdir -p "$cache"
+what="${1:-all}"
 
 sudo_if_needed() { if [ "$(id -u)" -eq 0 ]; then "$@"; else sudo "$@"; fi; }
 
@@ -13,13 +16,18 @@ packages=(
   build-essential cmake ninja-build pkg-config git
   libeigen3-dev libsuitesparse-dev libopenblas0-pthread libopenblas-dev libmetis-dev
   libgfortran-12-dev
-  libgtest-dev googletest
-  qtbase5-dev libqt5opengl5-dev libglew-dev
-  meshlab xvfb xauth
-  blender python3-numpy
   libcli11-dev nlohmann-json3-dev
-  dpkg-dev clang-format clang libclang-rt-14-dev
+  dpkg-dev
 )
+if [ "$what" = all ]; then
+  packages+=(
+    libgtest-dev googletest
+    qtbase5-dev libqt5opengl5-dev libglew-dev
+    meshlab xvfb xauth
+    blender python3-numpy
+    clang-format clang libclang-rt-14-dev
+  )
+fi
 
 missing=()
 for p in "${packages[@]}"; do

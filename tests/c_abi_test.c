@@ -145,8 +145,14 @@ int main(void) {
   CHECK(meromorph_branch_points(result, branch_vertices, branch_degrees) == MEROMORPH_OK);
   for (v = 0; v < branch_count; ++v)
     CHECK(branch_degrees[v] == 2 && branch_vertices[v] < V);
-  CHECK(meromorph_get_distortion(result, &distortion) == MEROMORPH_OK);
+  CHECK(meromorph_map_distortion(result, &distortion) == MEROMORPH_OK);
   CHECK(distortion.folded_faces_away_from_branch_points == 0);
+  {
+    /* The old name gives the same figures (kept for one release). */
+    meromorph_distortion old_name;
+    CHECK(meromorph_get_distortion(result, &old_name) == MEROMORPH_OK);
+    CHECK(old_name.angle_error_mean_degrees == distortion.angle_error_mean_degrees);
+  }
   CHECK(distortion.quasi_conformal_mean >= 1.0);
   CHECK(strstr(meromorph_report_json(result), "\"degree\": 2") != NULL);
   meromorph_result_free(result);
@@ -274,6 +280,25 @@ int main(void) {
   CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_OK);
   meromorph_result_free(result);
   result = NULL;
+  /* A caller of meromorph 0.1 (ABI 5 without area_correct): its struct is read up to pack_uv,
+     whatever follows it in memory; area_correct 1 changes the report's area_correction. */
+  meromorph_default_options(&options);
+  options.struct_size = offsetof(meromorph_options, area_correct);
+  options.area_correct = 7; /* beyond the old struct: never read */
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_OK);
+  CHECK(strstr(meromorph_report_json(result), "\"area_correction\"") == NULL);
+  meromorph_result_free(result);
+  result = NULL;
+  meromorph_default_options(&options);
+  options.area_correct = 1;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_OK);
+  CHECK(strstr(meromorph_report_json(result), "\"area_correction\"") != NULL);
+  meromorph_result_free(result);
+  result = NULL;
+  options.area_correct = 2;
+  CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
+        MEROMORPH_ERROR_ARGUMENT);
+  CHECK(strstr(meromorph_last_error(), "area_correct") != NULL);
   meromorph_default_options(&options);
   options.origin_vertex = V + 100;
   CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
@@ -412,6 +437,17 @@ int main(void) {
     CHECK(meromorph_remesh_mesh(NULL, xyz, NULL, NULL, NULL, NULL) == MEROMORPH_ERROR_ARGUMENT);
     meromorph_remesh_free(remesh);
     meromorph_remesh_free(NULL);
+    {
+      /* The same from float positions. */
+      float *single = malloc(sizeof(float) * 3 * V);
+      for (k = 0; k < 3 * (size_t)V; ++k)
+        single[k] = (float)positions[k];
+      remesh = NULL;
+      CHECK(meromorph_remesh_f(single, V, triangles, F, &options, 0, 1, &remesh) == MEROMORPH_OK);
+      CHECK(meromorph_remesh_vertex_count(remesh) > 0.9 * V);
+      meromorph_remesh_free(remesh);
+      free(single);
+    }
     free(xyz);
     free(values);
     free(faces);

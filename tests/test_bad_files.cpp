@@ -9,7 +9,7 @@
 #include "common/errors.h"
 #include "io/mesh_reader.h"
 #include "io/mesh_writer.h"
-#include "shapes/test_surfaces.h"
+#include "shapes/generated_surfaces.h"
 #include "test_support.h"
 
 namespace meromorph {

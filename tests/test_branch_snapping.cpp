@@ -13,7 +13,7 @@
 #include "maps/genus1_map.h"
 #include "mesh/face_vectors.h"
 #include "mesh/prepared_mesh.h"
-#include "shapes/test_surfaces.h"
+#include "shapes/generated_surfaces.h"
 #include "sphere/branch_points.h"
 #include "sphere/mobius_centering.h"
 

@@ -11,8 +11,8 @@
 #include "forms/holomorphic_pipeline.h"
 #include "mesh/cotan_laplacian.h"
 #include "mesh/mesh_edges.h"
+#include "shapes/generated_surfaces.h"
 #include "shapes/rigid_motion.h"
-#include "shapes/test_surfaces.h"
 #include "test_support.h"
 
 namespace meromorph {

@@ -1,5 +1,5 @@
 // The MeshLab plugin in the real MeshLab: meshlabserver under xvfb-run loads it from the build tree
-// (a copy of meshlabserver beside a plugins/ folder with the system plugins and ours).
+// the way a user without root runs it (scripts/meshlab_user.sh).
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -21,21 +21,14 @@ namespace fs = std::filesystem;
 
 class MeshLab {
 public:
-  MeshLab() {
-    fs::create_directories(dir_.path("plugins"));
-    fs::copy_file("/usr/bin/meshlabserver", dir_.path("meshlabserver"));
-    fs::permissions(dir_.path("meshlabserver"), fs::perms::owner_all);
-    // The system's plugins, but never an installed copy of ours: the build tree's is under test.
-    for (const auto &entry : fs::directory_iterator("/usr/lib/x86_64-linux-gnu/meshlab/plugins"))
-      if (entry.path().filename() != "libfilter_meromorph.so")
-        fs::create_symlink(entry.path(), dir_.path("plugins/" + entry.path().filename().string()));
-    fs::create_symlink(MEROMORPH_MESHLAB_PLUGIN, dir_.path("plugins/libfilter_meromorph.so"));
-  }
-  // Runs meshlabserver with `arguments`; returns the exit code, the output in `log`.
+  // Runs meshlabserver with `arguments` as a user without root does (scripts/meshlab_user.sh: a
+  // copy of meshlabserver beside a plugins/ folder with the system's plugins and the build tree's
+  // meromorph plugin, never an installed copy); returns the exit code, the output in `log`.
   int run(const std::string &arguments, std::string &log) const {
-    const std::string command =
-        "cd '" + dir_.path("") + "' && LD_LIBRARY_PATH=/usr/lib/x86_64-linux-gnu/meshlab " +
-        "timeout 300 xvfb-run -a ./meshlabserver " + arguments + " > run.log 2>&1";
+    const std::string command = "cd '" + dir_.path("") + "' && timeout 300 xvfb-run -a bash '" +
+                                MEROMORPH_SOURCE_DIR + "/scripts/meshlab_user.sh' --home '" +
+                                dir_.path("meshlab") + "' --plugin '" + MEROMORPH_MESHLAB_PLUGIN +
+                                "' meshlabserver " + arguments + " > run.log 2>&1";
     const int status = std::system(command.c_str());
     std::ifstream stream(dir_.path("run.log"));
     std::stringstream text;

@@ -16,7 +16,7 @@
 #include "maps/parameterization.h"
 #include "mesh/face_vectors.h"
 #include "mesh/prepared_mesh.h"
-#include "shapes/test_surfaces.h"
+#include "shapes/generated_surfaces.h"
 #include "sphere/mobius_centering.h"
 #include "test_support.h"
 

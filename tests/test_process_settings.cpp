@@ -1,191 +1,52 @@
-// The settings a job runs with: the heap reservation's estimate (common/process_memory.h), the
-// BLAS threads of small and large jobs (common/blas_threads.h), the OpenMP teams of a
-// factorization (common/factorization_threads.h) and the regions of one thread
-// (common/serial_openmp_regions.h), read back from OpenBLAS and libgomp themselves, and the
-// threads' scratch arrays released between jobs (common/thread_scratch.h).
-#include <cstdint>
-#include <cstdio>
-#include <filesystem>
-#include <fstream>
+// The threads a job runs with: serial work while the team starts (common/parallel_for.h), each
+// thread's own scratch (common/thread_scratch.h), and a factorization's OpenMP teams of one on
+// its own thread only (solvers/factorization_threads.h), read back from libgomp itself.
+#include <atomic>
+#include <chrono>
 #include <stdexcept>
-#include <string>
 #include <thread>
 #include <vector>
 
-#include <dlfcn.h>
-#include <gtest/gtest.h>
+#include <csignal>
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <gtest/gtest.h>
 #if defined(_OPENMP)
 #include <omp.h>
 #endif
 
-#include "common/blas_threads.h"
-#include "common/factorization_threads.h"
+#include "common/job_threads.h"
 #include "common/parallel_for.h"
-#include "common/process_memory.h"
-#include "common/serial_openmp_regions.h"
 #include "common/thread_scratch.h"
+#include "solvers/factorization_threads.h"
 
 namespace meromorph {
 namespace {
 
-constexpr size_t mebibyte = size_t(1) << 20;
-
-size_t half_the_memory() {
-  return size_t(sysconf(_SC_PHYS_PAGES)) * size_t(sysconf(_SC_PAGESIZE)) / 2;
-}
-
-TEST(ProcessSettings, HeapReservationIsAHundredTimesTheLargestInputWithinBounds) {
-  const std::filesystem::path file =
-      std::filesystem::temp_directory_path() / ("meromorph_heap_" + std::to_string(getpid()));
-  {
-    std::ofstream out(file, std::ios::binary);
-    const std::string megabyte(mebibyte, 'x');
-    for (int k = 0; k < 4; ++k)
-      out << megabyte;
-  }
-  // 4 MiB of input: 400 MiB, above the least reservation (256 MiB).
-  EXPECT_EQ(heap_bytes_for_files({file.string(), "no such file", "/"}), 400 * mebibyte);
-  // Names that are not regular files count 0: the least reservation.
-  EXPECT_EQ(heap_bytes_for_files({"no such file", "/"}), 256 * mebibyte);
-  EXPECT_EQ(heap_bytes_for_files({}, 8 * mebibyte), 8 * mebibyte);
-  // Never more than half the machine's memory.
-  EXPECT_EQ(heap_bytes_for_files({}, size_t(1) << 50), half_the_memory());
-  std::filesystem::remove(file);
-}
-
-#if defined(MEROMORPH_GLIBC_MALLOC) // (tests/CMakeLists.txt: not under AddressSanitizer)
-// The job's arrays start at a 2 MiB boundary, where transparent huge pages can back them whole.
-TEST(ProcessSettings, TheReservedHeapStartsAtAHugePageBoundary) {
-  tune_process_memory(64 * mebibyte);
-  const std::vector<char> array(16 * mebibyte, 1);
-  const uintptr_t offset = reinterpret_cast<uintptr_t>(array.data()) % (2 * mebibyte);
-  EXPECT_LT(offset, 64 * 1024u) << "(gtest's own small allocations may come first)";
-}
-#endif
-
-// OpenBLAS's thread setting, from the BLAS that CHOLMOD loaded (Debian's libblas.so.3 is
-// OpenBLAS where setup.sh installed it, as on CI).
-struct OpenBlas {
-  void (*set)(int) = nullptr;
-  int (*get)() = nullptr;
-};
-OpenBlas open_blas() {
-  OpenBlas blas;
-  for (const char *library : {"libblas.so.3", "libopenblas.so.0"}) {
-    void *handle = dlopen(library, RTLD_LAZY | RTLD_NOLOAD);
-    if (!handle) continue;
-    blas.set = reinterpret_cast<void (*)(int)>(dlsym(handle, "openblas_set_num_threads"));
-    blas.get = reinterpret_cast<int (*)()>(dlsym(handle, "openblas_get_num_threads"));
-    dlclose(handle);
-    if (blas.set && blas.get) return blas;
-  }
-  return {};
-}
-
-TEST(ProcessSettings, SmallJobsRunOpenBlasOnOneThreadAndGiveTheSettingBack) {
-  const OpenBlas blas = open_blas();
-  ASSERT_TRUE(blas.set && blas.get) << "the BLAS loaded is not OpenBLAS";
-  blas.set(2);
-  const int before = blas.get(); // 2 where the machine has two cores or more
-  ASSERT_GE(before, 1);
-  {
-    const BlasThreads small(parallel_blas_unknowns - 1);
-    EXPECT_EQ(blas.get(), 1);
-    {
-      const BlasThreads nested(1000);
-      EXPECT_EQ(blas.get(), 1);
-    }
-    EXPECT_EQ(blas.get(), 1); // the outer guard still lives
-  }
-  EXPECT_EQ(blas.get(), before);
-  {
-    const BlasThreads large(parallel_blas_unknowns);
-    EXPECT_EQ(blas.get(), before);
-  }
-  EXPECT_EQ(blas.get(), before);
-}
-
-size_t threads_of_this_process() {
-  size_t count = 0;
-  for (const auto &entry : std::filesystem::directory_iterator("/proc/self/task")) {
-    (void)entry;
-    ++count;
-  }
-  return count;
-}
-
-TEST(ProcessSettings, AProgramOwningItsProcessEndsOpenBlasIdleThreadsWhenASmallJobStarts) {
-  const OpenBlas blas = open_blas();
-  ASSERT_TRUE(blas.set && blas.get) << "the BLAS loaded is not OpenBLAS";
-  blas.set(2); // its worker threads run (the machines this runs on have two cores or more)
-  ASSERT_EQ(blas.get(), 2);
-  const size_t with_workers = threads_of_this_process();
-  {
-    const BlasThreads not_owned(1000); // a host's process: its threads are left alone
-    EXPECT_EQ(threads_of_this_process(), with_workers);
-  }
-  own_blas_threads(); // as tune_process_memory does for the CLI and the bench
-  {
-    const BlasThreads small(1000);
-    EXPECT_LT(threads_of_this_process(), with_workers);
-    EXPECT_EQ(blas.get(), 1);
-  }
-  EXPECT_EQ(blas.get(), 1); // left so: no threads started again only to idle until the exit
-  EXPECT_LT(threads_of_this_process(), with_workers);
-  {
-    const BlasThreads large(parallel_blas_unknowns); // a large job takes them back
-    EXPECT_EQ(blas.get(), 2);
-    {
-      const BlasThreads small_inside(1000);
-      EXPECT_EQ(blas.get(), 1);
-    }
-  }
-  {
-    const BlasThreads small(1000);
-    const BlasThreads large_beside(parallel_blas_unknowns); // a small job running keeps one
-    EXPECT_EQ(blas.get(), 1);
-  }
-}
-
 #if defined(_OPENMP) // (built with OpenMP wherever the compiler has it: vcg_core/CMakeLists.txt)
-// The serial work runs on this thread while the team starts; the loops after it find the team.
-// Each thread of a team has its own scratch per tag, kept from one use to the next; releasing
-// the team's scratch empties every thread's, and the next use starts afresh.
-TEST(ProcessSettings, ThreadScratchIsEachThreadsOwnAndTheTeamsIsReleasedAtOnce) {
+// Each thread of a team has its own scratch per tag, kept from one use to the next.
+TEST(ProcessSettings, ThreadScratchIsEachThreadsOwn) {
   struct First;
   struct Second;
   const int threads = 2;
-  std::vector<size_t> kept(threads, 0), released(threads, 1), second(threads, 1);
-  auto on_each_thread = [&](auto body) {
-#if defined(_OPENMP)
+  std::vector<size_t> kept(threads, 0), second(threads, 1);
 #pragma omp parallel num_threads(threads)
-    body(omp_get_thread_num());
-#else
-    body(0);
-#endif
-  };
-  on_each_thread([&](int t) {
+  {
+    const int t = omp_get_thread_num();
     std::vector<int> &scratch = thread_scratch<First, std::vector<int>>();
     scratch.assign(size_t(1000 * (t + 1)), t);
-  });
-  on_each_thread([&](int t) {
+  }
+#pragma omp parallel num_threads(threads)
+  {
+    const int t = omp_get_thread_num();
     const std::vector<int> &scratch = thread_scratch<First, std::vector<int>>();
     kept[size_t(t)] = scratch.size() == size_t(1000 * (t + 1)) && scratch.front() == t;
     second[size_t(t)] = thread_scratch<Second, std::vector<int>>().size();
-  });
-  release_team_scratch();
-  on_each_thread(
-      [&](int t) { released[size_t(t)] = thread_scratch<First, std::vector<int>>().capacity(); });
-#if defined(_OPENMP)
-  const int ran = threads;
-#else
-  const int ran = 1;
-#endif
-  for (int t = 0; t < ran; ++t) {
+  }
+  for (int t = 0; t < threads; ++t) {
     EXPECT_EQ(kept[size_t(t)], 1u) << "thread " << t;
     EXPECT_EQ(second[size_t(t)], 0u) << "thread " << t; // another tag, another array
-    EXPECT_EQ(released[size_t(t)], 0u) << "thread " << t;
   }
 }
 
@@ -206,82 +67,97 @@ TEST(ProcessSettings, SerialWorkRunsHereWhileTheOtherThreadsStart) {
   EXPECT_EQ(doubled[9999], 19998);
 }
 
-TEST(ProcessSettings, FactorizationsRunOpenMpTeamsOfOneAndGiveTheLevelsBack) {
-  const int levels = omp_get_max_active_levels();
-  ASSERT_GT(levels, 0);
+// The threads of one region that asks for four, as CHOLMOD's supernodes do.
+int team_asking_for_four() {
+  int team = 0;
+#pragma omp parallel num_threads(4)
   {
-    const FactorizationThreads factorization(parallel_blas_unknowns * 2);
-    EXPECT_EQ(omp_get_max_active_levels(), 0);
-    int team = 0;
-#pragma omp parallel
-    {
 #pragma omp single
-      team = omp_get_num_threads();
-    }
-    EXPECT_EQ(team, 1);
+    team = omp_get_num_threads();
   }
+  return team;
+}
+
+// While a factorization runs, the regions of its thread get one thread even where they ask for
+// four; a region of another thread at the same time gets its four (nothing process-wide
+// changed: a host's threads keep their teams); afterwards this thread's settings are back.
+TEST(ProcessSettings, FactorizationsRunTeamsOfOneOnTheirOwnThreadOnly) {
+  const int levels = omp_get_max_active_levels(), dynamic = omp_get_dynamic(),
+            threads = omp_get_max_threads();
+  std::atomic<int> phase{0};
+  int other_team = 0;
+  std::thread other([&] {
+    while (phase.load() == 0)
+      std::this_thread::yield();
+    other_team = team_asking_for_four();
+    phase = 2;
+  });
+  {
+    const FactorizationThreads factorization;
+    EXPECT_EQ(team_asking_for_four(), 1);
+    phase = 1;
+    while (phase.load() != 2)
+      std::this_thread::yield();
+    EXPECT_EQ(team_asking_for_four(), 1);
+  }
+  other.join();
+  EXPECT_EQ(other_team, 4);
+  EXPECT_EQ(team_asking_for_four(), 4);
   EXPECT_EQ(omp_get_max_active_levels(), levels);
+  EXPECT_EQ(omp_get_dynamic(), dynamic);
+  EXPECT_EQ(omp_get_max_threads(), threads);
 }
-
-// What one `#pragma omp parallel` saw.
-struct RegionSeen {
-  int level = -1, threads = 0;
-  std::vector<char> thread_ran;
-};
-
-RegionSeen one_region(bool parallel) {
-  RegionSeen seen;
-  seen.thread_ran.assign(8, 0);
-#pragma omp parallel if (parallel) num_threads(2)
-  {
-#pragma omp single
-    {
-      seen.level = omp_get_level();
-      seen.threads = omp_get_num_threads();
-    }
-    seen.thread_ran[size_t(omp_get_thread_num())] = 1; // (each thread its own byte)
-  }
-  return seen;
-}
-
-// The tests link common/serial_openmp_regions.cpp as the command-line tool does: a region that
-// can only have one thread is a plain call (no team: the nesting level stays 0), a team of two
-// still gets its two threads, and after hand_every_openmp_region_to_libgomp libgomp makes every
-// team (level 1 inside, even for one thread). Without GCC's OpenMP (the sanitizer builds) every
-// region is libgomp's or the compiler's own.
-TEST(ProcessSettings, RegionsOfOneThreadAreCallsAndTeamsStillGetTheirThreads) {
-  const RegionSeen team = one_region(true);
-  EXPECT_EQ(team.level, 1);
-  EXPECT_EQ(team.threads, 2);
-  EXPECT_TRUE(team.thread_ran[0] && team.thread_ran[1]);
-  const RegionSeen alone = one_region(false);
-  EXPECT_EQ(alone.threads, 1);
-  EXPECT_TRUE(alone.thread_ran[0]);
-  RegionSeen in_factorization;
-  {
-    const FactorizationThreads factorization(parallel_blas_unknowns * 2);
-    in_factorization = one_region(true);
-  }
-  EXPECT_EQ(in_factorization.threads, 1);
-#if defined(MEROMORPH_SERIAL_OPENMP_REGIONS)
-  EXPECT_EQ(alone.level, 0);
-  EXPECT_EQ(in_factorization.level, 0);
 #endif
-  // A loop below the threads' threshold, as plain calls, and one above it, as a team.
-  std::vector<int> squares(5000);
-  parallel_for(100, [&](size_t i) { squares[i] = int(i * i); });
-  parallel_for(squares.size(), [&](size_t i) { squares[i] = int(i * i); });
-  EXPECT_EQ(squares[99], 9801);
-  EXPECT_EQ(squares[4999], 24990001);
+
+// The rule: the usable CPUs (capped by OpenMP's limit) less the other processes' runnable
+// threads, at least one; with nothing known of the others, every usable CPU.
+TEST(ProcessSettings, TheJobsTeamLeavesCoresBusyElsewhereToTheirWork) {
+  EXPECT_EQ(team_size_for(2, 2, 1, 1), 2); // only this thread runs
+  EXPECT_EQ(team_size_for(2, 2, 3, 2), 1); // one other process busy
+  EXPECT_EQ(team_size_for(2, 2, 5, 1), 1); // more than the cores: still one
+  EXPECT_EQ(team_size_for(8, 8, 4, 1), 5);
+  EXPECT_EQ(team_size_for(8, 3, 1, 1), 3); // OMP_NUM_THREADS=3
+  EXPECT_EQ(team_size_for(2, 2, -1, 1), 2);
 }
 
-// (Its own process under ctest: every test is run alone.)
-TEST(ProcessSettings, EveryRegionGoesToLibgompOnceHandedOver) {
-  hand_every_openmp_region_to_libgomp();
-  const RegionSeen alone = one_region(false);
-  EXPECT_EQ(alone.level, 1);
-  EXPECT_EQ(alone.threads, 1);
-  EXPECT_EQ(one_region(true).threads, 2);
+#if defined(_OPENMP)
+// With every core kept busy by other processes, a job's loops run on its own thread alone; a
+// JobThreads made inside keeps the outer one's team; after the job, loops get OpenMP's maximum.
+TEST(ProcessSettings, BesideBusyProcessesAJobRunsOnOneThread) {
+  std::vector<pid_t> busy;
+  for (int k = 0; k < omp_get_num_procs(); ++k) {
+    const pid_t child = fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      alarm(60);
+      volatile double x = 1;
+      while (true)
+        x = x * 1.0000001 + 1e-9;
+    }
+    busy.push_back(child);
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(50)); // they run
+  std::atomic<int> widest{0};
+  {
+    const JobThreads job;
+    EXPECT_EQ(job.threads(), 1);
+    {
+      const JobThreads inner;
+      EXPECT_EQ(inner.threads(), 1);
+    }
+    parallel_for(100000, [&](size_t) {
+      int expected = widest.load();
+      while (omp_get_num_threads() > expected &&
+             !widest.compare_exchange_weak(expected, omp_get_num_threads())) {
+      }
+    });
+  }
+  for (pid_t child : busy) {
+    kill(child, SIGKILL);
+    waitpid(child, nullptr, 0);
+  }
+  EXPECT_EQ(widest.load(), 1);
+  EXPECT_EQ(job_team_size(), omp_get_max_threads());
 }
 #endif
 

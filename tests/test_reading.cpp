@@ -6,7 +6,7 @@
 #include "io/mesh_writer.h"
 #include "mesh/mesh_from_arrays.h"
 #include "mesh/topology.h"
-#include "shapes/test_surfaces.h"
+#include "shapes/generated_surfaces.h"
 #include "test_support.h"
 
 namespace meromorph {

@@ -21,17 +21,12 @@
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 
-#include "forms/cluster_jacobi.h"
 #include "forms/harmonic_forms.h"
-#include "forms/hermitian_cg.h"
 #include "forms/holomorphic_forms.h"
 #include "forms/holomorphic_pipeline.h"
 #include "forms/homology_basis.h"
-#include "forms/laplacian_solver.h"
-#include "forms/leading_block_solve.h"
-#include "forms/metis_order.h"
 #include "forms/periods.h"
-#include "forms/reweighted_solve.h"
+#include "job/parts_map.h"
 #include "maps/branch_star.h"
 #include "maps/floater_embedding.h"
 #include "maps/fold_untangling.h"
@@ -41,7 +36,6 @@
 #include "maps/genus0_correction.h"
 #include "maps/genus0_map.h"
 #include "maps/genus1_branch_placement.h"
-#include "maps/parts_map.h"
 #include "maps/south_cap_prediction.h"
 #include "maps/star_kernel.h"
 #include "mesh/cotan_laplacian.h"
@@ -54,7 +48,13 @@
 #include "mesh/topology.h"
 #include "mesh/validation.h"
 #include "mesh/zero_area_faces.h"
-#include "shapes/test_surfaces.h"
+#include "shapes/generated_surfaces.h"
+#include "solvers/cluster_jacobi.h"
+#include "solvers/hermitian_cg.h"
+#include "solvers/laplacian_solver.h"
+#include "solvers/leading_block_solve.h"
+#include "solvers/metis_order.h"
+#include "solvers/reweighted_solve.h"
 #include "sphere/arc_grid.h"
 #include "sphere/branch_points.h"
 #include "sphere/map_quality.h"
@@ -424,7 +424,7 @@ TEST(ClusterJacobi, StiffPairsConvergeInAFractionOfJacobisSteps) {
   EXPECT_LT((by_lower - expected).norm(), 1e-8 * expected.norm());
 }
 
-// The charts' conjugate gradients (forms/hermitian_cg.h), from the lower triangle of a stiff
+// The charts' conjugate gradients (solvers/hermitian_cg.h), from the lower triangle of a stiff
 // system: to the direct solution with either preconditioner, the clusters in a fraction of the
 // diagonal's steps; stopped at 1e-3 and gone on to 1e-10, the same steps and the same solution
 // to the bit as in one pass, and the residual of each pass within its tolerance.
@@ -1469,7 +1469,7 @@ TEST(SouthCapPrediction, NoneWhereNothingIsCoarsenedElseACapOppositeThePole) {
     Mesh sphere;
     make_icosphere(sphere, subdivisions);
     const PreparedMesh prepared = prepare_mesh(sphere);
-    const int pole = default_puncture_face(prepared);
+    const int pole = default_pole_face(prepared);
     int raised = 0;
     const std::vector<char> cap =
         predicted_south_cap(prepared, positive_weights(prepared.weights, {}, raised), pole);

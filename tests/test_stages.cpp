@@ -11,16 +11,16 @@
 #include <gtest/gtest.h>
 
 #include "forms/holomorphic_pipeline.h"
+#include "job/surface_map.h"
+#include "job/zero_area_images.h"
 #include "maps/genus1_map.h"
 #include "maps/map_validity.h"
-#include "maps/surface_map.h"
 #include "maps/written_map.h"
-#include "maps/zero_area_images.h"
 #include "mesh/mesh_from_arrays.h"
 #include "mesh/prepared_mesh.h"
 #include "mesh/unit_scale.h"
 #include "mesh/validation.h"
-#include "shapes/test_surfaces.h"
+#include "shapes/generated_surfaces.h"
 #include "sphere/branch_points.h"
 #include "test_support.h"
 

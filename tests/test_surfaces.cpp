@@ -10,8 +10,8 @@
 #include "mesh/mesh_from_arrays.h"
 #include "mesh/topology.h"
 #include "mesh/validation.h"
+#include "shapes/generated_surfaces.h"
 #include "shapes/rigid_motion.h"
-#include "shapes/test_surfaces.h"
 
 namespace meromorph {
 namespace {

@@ -5,7 +5,7 @@
 
 #include "mesh/topology.h"
 #include "mesh/validation.h"
-#include "shapes/test_surfaces.h"
+#include "shapes/generated_surfaces.h"
 #include "test_support.h"
 
 namespace meromorph {

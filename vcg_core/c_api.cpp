@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "common/errors.h"
+#include "job/surface_map.h"
 #include "maps/parameterization.h"
-#include "maps/surface_map.h"
 #include "mesh/mesh_from_arrays.h"
 #include "remesh/surface_remesh.h"
 #include "report/remesh_summary.h"
@@ -65,6 +65,8 @@ std::string check_options(const meromorph_options &options, size_t vertex_count,
            "; use 0 or 1";
   if (options.pack_uv != 0 && options.pack_uv != 1)
     return "options.pack_uv is " + std::to_string(options.pack_uv) + "; use 0 or 1";
+  if (options.area_correct != 0 && options.area_correct != 1)
+    return "options.area_correct is " + std::to_string(options.area_correct) + "; use 0 or 1";
   if (options.origin_vertex < -1 || (long long)options.origin_vertex >= (long long)vertex_count)
     return "options.origin_vertex is " + std::to_string(options.origin_vertex) +
            "; use -1 (automatic) or a vertex from 0 to " + std::to_string(vertex_count - 1);
@@ -101,11 +103,13 @@ std::pair<meromorph_status, std::string> check_arrays(const Scalar *positions, s
 std::string read_options(const meromorph_options *options, meromorph_options &settings) {
   meromorph_default_options(&settings);
   if (!options) return "";
-  // Version 1 ended before close_holes, version 2 before split_nonmanifold.
-  const size_t version_1_size = offsetof(meromorph_options, close_holes),
-               version_2_size = offsetof(meromorph_options, split_nonmanifold);
-  if (options->struct_size != sizeof(meromorph_options) && options->struct_size != version_1_size &&
-      options->struct_size != version_2_size)
+  // Version 1 ended before close_holes, version 2 before split_nonmanifold, version 5 (up to
+  // meromorph 0.1) before area_correct.
+  const size_t known_sizes[] = {
+      offsetof(meromorph_options, close_holes), offsetof(meromorph_options, split_nonmanifold),
+      offsetof(meromorph_options, area_correct), sizeof(meromorph_options)};
+  if (std::find(std::begin(known_sizes), std::end(known_sizes), options->struct_size) ==
+      std::end(known_sizes))
     return "options.struct_size is " + std::to_string(options->struct_size) +
            ", which matches no version of meromorph_options (this library's is " +
            std::to_string(sizeof(meromorph_options)) +
@@ -117,16 +121,17 @@ std::string read_options(const meromorph_options *options, meromorph_options &se
 
 meromorph::ParameterizeOptions core_options(const meromorph_options &settings) {
   meromorph::ParameterizeOptions parameters;
-  parameters.uv =
+  parameters.uv_kind =
       settings.uv_kind == 1 ? meromorph::UvKind::stereographic : meromorph::UvKind::spherical;
   parameters.mobius = settings.mobius != 0;
   parameters.origin_vertex = settings.origin_vertex;
   parameters.form_pair = {settings.form_pair[0], settings.form_pair[1]};
   parameters.layer_gap = settings.layer_gap;
-  parameters.puncture_face = settings.pole_face;
+  parameters.pole_face = settings.pole_face;
   parameters.close_holes = settings.close_holes != 0;
   parameters.split_nonmanifold = settings.split_nonmanifold != 0;
   parameters.pack_uv = settings.pack_uv != 0;
+  parameters.area_correct = settings.area_correct != 0;
   return parameters;
 }
 
@@ -157,10 +162,16 @@ meromorph::MeshArrays mesh_arrays(const Scalar *positions, size_t vertex_count,
 std::unique_ptr<meromorph_result> map_result(meromorph::MeshArrays &arrays,
                                              const meromorph_options &settings) {
   using namespace meromorph;
-  Mesh mesh;
-  mesh_from_arrays(arrays, mesh);
+  // The C++ entry point (job/surface_map.h) over the arrays as they are (no copy).
+  using Positions = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
+  using Corners = Eigen::Matrix<int32_t, Eigen::Dynamic, 3, Eigen::RowMajor>;
+  static_assert(sizeof(Point3) == 3 * sizeof(double) && sizeof(arrays.triangles[0]) == 12);
+  const Eigen::Map<const Positions> V(reinterpret_cast<const double *>(arrays.positions.data()),
+                                      Eigen::Index(arrays.positions.size()), 3);
+  const Eigen::Map<const Corners> F(reinterpret_cast<const int32_t *>(arrays.triangles.data()),
+                                    Eigen::Index(arrays.triangles.size()), 3);
   auto out = std::make_unique<meromorph_result>();
-  out->map = parameterize_surface(mesh, core_options(settings), core_progress(settings));
+  out->map = parameterize_arrays(V, F, core_options(settings), core_progress(settings));
   nlohmann::json report = parameterization_json(out->map);
   report["version"] = MEROMORPH_VERSION;
   out->report = json_text(report);
@@ -279,9 +290,27 @@ std::unique_ptr<meromorph_remesh_result> remesh_result(meromorph::MeshArrays &ar
   return out;
 }
 
-} // namespace
+template <typename Scalar>
+meromorph_status remesh(const Scalar *positions, size_t vertex_count, const int32_t *triangles,
+                        size_t triangle_count, const meromorph_options *options,
+                        int64_t target_vertices, int area_correct,
+                        meromorph_remesh_result **result) {
+  return checked_call(positions, vertex_count, triangles, triangle_count, options, result,
+                      [&](meromorph::MeshArrays &arrays, const meromorph_options &settings) {
+                        if (area_correct != 0 && area_correct != 1)
+                          throw meromorph::ArgumentError(
+                              "area_correct is " + std::to_string(area_correct) + "; use 0 or 1");
+                        if (target_vertices > meromorph::max_remesh_vertices ||
+                            (target_vertices > 0 && target_vertices < 12))
+                          throw meromorph::ArgumentError(
+                              "target_vertices is " + std::to_string(target_vertices) +
+                              "; give 12 to " + std::to_string(meromorph::max_remesh_vertices) +
+                              ", or 0 for the input's vertex count");
+                        return remesh_result(arrays, settings, target_vertices, area_correct == 1);
+                      });
+}
 
-extern "C" {} // namespace
+} // namespace
 
 extern "C" {
 
@@ -468,6 +497,10 @@ meromorph_status meromorph_branch_points(const meromorph_result *r, int32_t *ver
 }
 
 meromorph_status meromorph_get_distortion(const meromorph_result *r, meromorph_distortion *d) {
+  return meromorph_map_distortion(r, d);
+}
+
+meromorph_status meromorph_map_distortion(const meromorph_result *r, meromorph_distortion *d) {
   MEROMORPH_CHECK(r, d);
   const auto &all = r->map.quality.overall;
   d->angle_error_mean_degrees = all.angle_error_mean_degrees;
@@ -487,19 +520,16 @@ meromorph_status meromorph_remesh_d(const double *positions, size_t vertex_count
                                     const int32_t *triangles, size_t triangle_count,
                                     const meromorph_options *options, int64_t target_vertices,
                                     int area_correct, meromorph_remesh_result **result) {
-  return checked_call(positions, vertex_count, triangles, triangle_count, options, result,
-                      [&](meromorph::MeshArrays &arrays, const meromorph_options &settings) {
-                        if (area_correct != 0 && area_correct != 1)
-                          throw meromorph::ArgumentError(
-                              "area_correct is " + std::to_string(area_correct) + "; use 0 or 1");
-                        if (target_vertices > meromorph::max_remesh_vertices ||
-                            (target_vertices > 0 && target_vertices < 12))
-                          throw meromorph::ArgumentError(
-                              "target_vertices is " + std::to_string(target_vertices) +
-                              "; give 12 to " + std::to_string(meromorph::max_remesh_vertices) +
-                              ", or 0 for the input's vertex count");
-                        return remesh_result(arrays, settings, target_vertices, area_correct == 1);
-                      });
+  return remesh(positions, vertex_count, triangles, triangle_count, options, target_vertices,
+                area_correct, result);
+}
+
+meromorph_status meromorph_remesh_f(const float *positions, size_t vertex_count,
+                                    const int32_t *triangles, size_t triangle_count,
+                                    const meromorph_options *options, int64_t target_vertices,
+                                    int area_correct, meromorph_remesh_result **result) {
+  return remesh(positions, vertex_count, triangles, triangle_count, options, target_vertices,
+                area_correct, result);
 }
 
 void meromorph_remesh_free(meromorph_remesh_result *r) {

@@ -30,6 +30,10 @@
 extern "C" {
 #endif
 
+/* The ABI's version: it changes only for a real break (and with it the library's SONAME and
+   symbol version, libmeromorph.so.5 and MEROMORPH_5). Additions do not change it: a new option is
+   a new field at the end of meromorph_options, which struct_size tells apart (an older caller's
+   struct gets the new field's default), and a new function is a new symbol. */
 #define MEROMORPH_ABI_VERSION 5
 
 #if defined(__GNUC__)
@@ -65,10 +69,10 @@ typedef enum meromorph_remedy {
 } meromorph_remedy;
 
 /* Progress: fraction in [0, 1] and the stage in words. Return 0 to cancel, non-zero to go on.
-   It is called on the thread that called meromorph (the work runs meanwhile on a worker thread
-   that the library keeps for the next call, or on one of its own when that one is busy),
-   at least every quarter second while the work runs; after a cancel the call returns when the
-   work reaches its next report (at most the end of one Laplacian factorization). */
+   It is called on the thread that called meromorph (the work runs meanwhile on a thread of its
+   own, which ends with the call), at least every quarter second while the work runs; after a cancel
+   the call returns when the work reaches its next report (at most the end of one Laplacian
+   factorization). */
 typedef int (*meromorph_progress_fn)(double fraction, const char *stage, void *user);
 
 typedef struct meromorph_options {
@@ -92,6 +96,9 @@ typedef struct meromorph_options {
   int pack_uv;           /* several parts, spherical uvs: 1 puts part k's uvs in cell k of a grid
                             over the unit square; 0: each part fills it (default). Since ABI
                             version 3. */
+  int area_correct;      /* 1: after centring, the Moebius transformation that spreads the map
+                            most evenly in area (angles unchanged); 0: not (default). Since
+                            meromorph 0.2; an older struct_size is accepted, with 0 here. */
 } meromorph_options;
 
 /* A map and everything measured on it; opaque. Made by meromorph_parameterize_*, read by the
@@ -230,6 +237,9 @@ typedef struct meromorph_distortion {
 /* Distortion over the input's faces.
    Inputs:  result  not NULL.  Outputs: *distortion (caller-owned, not NULL).
    Returns: MEROMORPH_OK, or MEROMORPH_ERROR_ARGUMENT if a pointer is NULL. */
+MEROMORPH_API meromorph_status meromorph_map_distortion(const meromorph_result *result,
+                                                        meromorph_distortion *distortion);
+/* The same under its old name (kept for one release). */
 MEROMORPH_API meromorph_status meromorph_get_distortion(const meromorph_result *result,
                                                         meromorph_distortion *distortion);
 
@@ -250,6 +260,12 @@ MEROMORPH_API const char *meromorph_report_json(const meromorph_result *result);
    Thread-safe: yes, for different calls at once. */
 typedef struct meromorph_remesh_result meromorph_remesh_result;
 MEROMORPH_API meromorph_status meromorph_remesh_d(const double *positions, size_t vertex_count,
+                                                  const int32_t *triangles, size_t triangle_count,
+                                                  const meromorph_options *options,
+                                                  int64_t target_vertices, int area_correct,
+                                                  meromorph_remesh_result **result);
+/* The same with float positions (since meromorph 0.2). */
+MEROMORPH_API meromorph_status meromorph_remesh_f(const float *positions, size_t vertex_count,
                                                   const int32_t *triangles, size_t triangle_count,
                                                   const meromorph_options *options,
                                                   int64_t target_vertices, int area_correct,

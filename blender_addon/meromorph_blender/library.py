@@ -32,6 +32,7 @@ class Options(ctypes.Structure):
         ("close_holes", ctypes.c_int),
         ("split_nonmanifold", ctypes.c_int),
         ("pack_uv", ctypes.c_int),
+        ("area_correct", ctypes.c_int),
     ]
 
 
@@ -89,7 +90,7 @@ def load():
             getattr(lib, "meromorph_" + name).argtypes = [ctypes.c_void_p]
         for name in ("sphere_positions", "layered_positions", "vertex_uvs", "corner_uvs", "layers",
                      "vertex_components",
-                     "report_json", "result_free", "get_distortion"):
+                     "report_json", "result_free", "map_distortion"):
             getattr(lib, "meromorph_" + name).argtypes = [ctypes.c_void_p] + (
                 [] if name in ("report_json", "result_free") else [ctypes.c_void_p])
         lib.meromorph_branch_points.argtypes = [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
@@ -223,7 +224,7 @@ def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
             statuses.append(lib.meromorph_branch_points(
                 result, out["branch_vertices"].ctypes.data, out["branch_degrees"].ctypes.data))
         distortion = Distortion()
-        statuses.append(lib.meromorph_get_distortion(result, ctypes.byref(distortion)))
+        statuses.append(lib.meromorph_map_distortion(result, ctypes.byref(distortion)))
         if any(statuses):
             raise MeromorphError(1, "reading the result failed: %s"
                                  % lib.meromorph_last_error().decode("utf-8", "replace"))

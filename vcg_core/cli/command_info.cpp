@@ -6,7 +6,7 @@
 #include "commands.h"
 #include "common/errors.h"
 #include "io/mesh_reader.h"
-#include "maps/surface_map.h"
+#include "job/surface_map.h"
 #include "mesh/repair.h"
 #include "mesh/topology.h"
 #include "mesh/validation.h"

@@ -8,8 +8,8 @@
 #include "io/mesh_reader.h"
 #include "io/mesh_writer.h"
 #include "mesh/topology.h"
+#include "shapes/generated_surfaces.h"
 #include "shapes/rigid_motion.h"
-#include "shapes/test_surfaces.h"
 
 namespace meromorph::cli {
 namespace {

@@ -15,9 +15,9 @@
 #include "io/mesh_reader.h"
 #include "io/mesh_writer.h"
 #include "io/staged_outputs.h"
+#include "job/surface_map.h"
 #include "job_input.h"
 #include "maps/parameterization.h"
-#include "maps/surface_map.h"
 #include "mesh/repair.h"
 #include "report/report_json.h"
 #include "terminal_progress.h"
@@ -34,18 +34,18 @@ struct ParamOptions {
   int origin = -1;
   std::vector<int> forms{-1, -1};
   double layer_gap = 0.0;
-  int puncture_face = -1;
+  int pole_face = -1;
 };
 
 // The core's options from the command line's.
 ParameterizeOptions settings_from(const ParamOptions &options) {
   ParameterizeOptions settings;
-  settings.uv = options.uv == "stereographic" ? UvKind::stereographic : UvKind::spherical;
+  settings.uv_kind = options.uv == "stereographic" ? UvKind::stereographic : UvKind::spherical;
   settings.mobius = !options.no_mobius;
   settings.origin_vertex = options.origin;
   settings.form_pair = {options.forms[0], options.forms[1]};
   settings.layer_gap = options.layer_gap;
-  settings.puncture_face = options.puncture_face;
+  settings.pole_face = options.pole_face;
   settings.solver = solver_from_name(options.solver);
   settings.close_holes = options.close_holes;
   settings.pack_uv = options.pack_uv;
@@ -200,7 +200,7 @@ Command add_param_command(CLI::App &app) {
   param->add_flag("--area-correct", options->area_correct,
                   "after centring, apply the Moebius transformation that makes the map most even "
                   "in area (the texture density spreads more evenly; angles are unchanged)");
-  param->add_option("--pole-face", options->puncture_face,
+  param->add_option("--pole-face", options->pole_face,
                     "genus 0: the face mapped around the north pole (default: the best-shaped face "
                     "of about median area)");
   param->add_option("--solver", options->solver, "cholmod (default) or ldlt")

@@ -1,22 +1,24 @@
 // meromorph: conformal maps of closed surfaces onto the sphere, from the command line.
-// Exit codes (cli/exit_codes.h): 0 done, 1 internal failure or cancelled, 2 bad arguments, 3 the
-// input cannot be parameterized, 4 an output cannot be written.
+// Exit codes (cli/exit_codes.h): 0 done, 1 internal failure (a bug), 2 bad arguments, 3 the input
+// cannot be parameterized, 4 an output cannot be written.
 #include <iostream>
 #include <map>
 
 #include "cli/exit_codes.h"
+#include "cli/process_settings.h"
 #include "cli/remedy_words.h"
 #include "commands.h"
-#include "common/process_memory.h"
 
 int main(int argc, char **argv) {
   using namespace meromorph;
   using cli::ExitCode;
-  tune_process_memory(heap_bytes_for_files({argv + 1, argv + argc}));
-  CLI::App app{"meromorph: conformal maps of closed surfaces of any genus onto the sphere.\n"
-               "Exit codes: 0 done, 1 internal failure or cancelled, 2 bad arguments, 3 the input "
-               "cannot be parameterized (or the map is not valid), 4 an output cannot be written.",
-               "meromorph"};
+  cli::tune_command_line_process(); // cli/process_settings.h: this process is ours
+  CLI::App app{
+      "meromorph: conformal maps of closed surfaces of any genus onto the sphere.\n"
+      "Exit codes: 0 done, 1 internal failure (a bug: please report it with the input), 2 bad "
+      "arguments, 3 the input "
+      "cannot be parameterized (or the map is not valid), 4 an output cannot be written.",
+      "meromorph"};
   app.set_version_flag("--version", std::string("meromorph ") + MEROMORPH_VERSION);
   app.require_subcommand(1);
 

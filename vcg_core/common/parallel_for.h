@@ -1,8 +1,9 @@
 // Loops over the machine's cores.
 //
 // In:  a count and a body. Out: `parallel_for`: body(i) has run for every i in [0, count), split
-//      into one contiguous block per core (OpenMP, static schedule), or in order on one thread
-//      where the count is small or OpenMP is missing. The body must not throw and must write only
+//      into one contiguous block per thread of the job's team (OpenMP, static schedule; the team's
+//      size: common/job_threads.h), or in order on this thread where the count is small, the team
+//      is one thread or OpenMP is missing. The body must not throw and must write only
 //      what belongs to its own index; sums over the results are left to the caller, in index
 //      order, so that they come out the same on any number of cores. `chunked_sum`: body(begin,
 //      end) returns the sum over one chunk of [0, count); the chunks (fixed, whatever the number
@@ -32,6 +33,8 @@
 #include <omp.h>
 #endif
 
+#include "common/job_threads.h"
+
 namespace meromorph {
 
 // Below this many items the threads' start costs more than the work.
@@ -42,7 +45,8 @@ constexpr std::size_t parallel_threshold = 4096;
 template <class Body>
 void parallel_for(std::size_t count, const Body &body, std::size_t threshold = parallel_threshold) {
 #if defined(_OPENMP)
-#pragma omp parallel for schedule(static) if (count >= threshold)
+  const int team = job_team_size(); // common/job_threads.h
+#pragma omp parallel for schedule(static) if (count >= threshold && team > 1) num_threads(team)
   for (long i = 0; i < long(count); ++i)
     body(std::size_t(i));
 #else
@@ -158,7 +162,8 @@ std::vector<std::pair<double, int>> parallel_smallest(std::size_t count, std::si
 template <class MakeState, class Body>
 void parallel_for_with(std::size_t count, const MakeState &make_state, const Body &body) {
 #if defined(_OPENMP)
-#pragma omp parallel if (count >= 2)
+  const int team = job_team_size(); // common/job_threads.h
+#pragma omp parallel if (count >= 2 && team > 1) num_threads(team)
   {
     auto state = make_state();
 #pragma omp for schedule(dynamic)

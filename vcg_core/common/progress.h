@@ -4,10 +4,10 @@
 //      MeshLab's CallBackPos, Blender's progress_update); it returns false to cancel.
 // Out: `Progress::report` calls it with a fraction in [0, 1]; when the callback asks to cancel,
 //      `report` throws `Cancelled`. `Progress::range` hands a sub-stage its own 0..1 slice.
-//      `run_reporting` runs a whole job on a kept worker thread that reports into a relay, while
-//      the calling thread hands the latest report to the callback at least every quarter second:
-//      the callback (a GUI's) is only ever called on the caller's thread, steadily, and a cancel
-//      stops the job at its next report.
+//      `run_reporting` runs a whole job on a worker thread of its own that reports into a relay,
+//      while the calling thread hands the latest report to the callback at least every quarter
+//      second: the callback (a GUI's) is only ever called on the caller's thread, steadily, and a
+//      cancel stops the job at its next report.
 #pragma once
 
 #include <functional>
@@ -45,8 +45,7 @@ private:
   bool any_thread_ = false;
 };
 
-// `job(relay)` runs on another thread (one kept for the next job, so that its OpenMP team is kept
-// too; a job that comes while it is busy gets a thread of its own); every 0.25 s the latest of its
+// `job(relay)` runs on a thread of its own (which ends with it); every 0.25 s the latest of its
 // reports reaches `progress` from this thread (new or not: the bar stays alive), and the last one
 // when it ends; its exception, if any, is thrown here. When the callback cancels, the job's next
 // report throws Cancelled there and this call throws Cancelled once the job has unwound. Without a

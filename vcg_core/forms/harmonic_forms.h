@@ -13,8 +13,8 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
-#include "forms/laplacian_solver.h"
 #include "mesh/mesh_edges.h"
+#include "solvers/laplacian_solver.h"
 
 namespace meromorph {
 

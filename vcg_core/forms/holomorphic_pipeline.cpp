@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 
 #include "common/errors.h"
+#include "common/job_threads.h"
 #include "common/parallel_for.h"
 #include "common/stage_clock.h"
 #include "forms/harmonic_forms.h"
@@ -171,8 +172,10 @@ HolomorphicForms compute_holomorphic_forms(const Mesh &input, SolverKind solver,
                                            const Progress &progress, const Validation *validated) {
   // The job runs on a worker thread; the callback is called on this one, steadily.
   HolomorphicForms out;
-  run_reporting(progress,
-                [&](const Progress &relay) { out = forms_of(input, solver, relay, validated); });
+  run_reporting(progress, [&](const Progress &relay) {
+    const JobThreads threads; // the team for this job's loops: common/job_threads.h
+    out = forms_of(input, solver, relay, validated);
+  });
   return out;
 }
 

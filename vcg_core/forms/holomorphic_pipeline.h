@@ -20,9 +20,9 @@
 #include "common/progress.h"
 #include "forms/homology_basis.h"
 #include "forms/intrinsic_delaunay.h"
-#include "forms/laplacian_solver.h"
 #include "mesh/mesh.h"
 #include "mesh/mesh_edges.h"
+#include "solvers/laplacian_solver.h"
 
 namespace meromorph {
 

@@ -8,12 +8,12 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/SparseCore>
 
-#include "common/factorization_threads.h"
 #include "common/parallel_for.h"
-#include "forms/cluster_jacobi.h"
-#include "forms/hermitian_cg.h"
 #include "mesh/face_vectors.h"
 #include "mesh/mesh_edges.h"
+#include "solvers/cluster_jacobi.h"
+#include "solvers/factorization_threads.h"
+#include "solvers/hermitian_cg.h"
 #include "sphere/sphere_geometry.h"
 
 namespace meromorph {
@@ -167,7 +167,7 @@ Eigen::SparseMatrix<Complex> hermitian_matrix(const MeshEdges &edges, const Char
 // condition does not grow with the mesh, so conjugate gradients converge in a number of steps
 // independent of its size, each a product with H. Needles and the close vertices of raw
 // marching cubes couple pairs of unknowns stiffly: then the steps are preconditioned over
-// clusters of them (forms/cluster_jacobi.h), else by the diagonal.
+// clusters of them (solvers/cluster_jacobi.h), else by the diagonal.
 struct ChartSolve {
   std::vector<int> vertex; // per unknown its mesh vertex
   std::optional<HermitianConjugateGradients> iterated;
@@ -208,7 +208,7 @@ struct ChartSolve {
     steps = iterated->steps();
     if (converged && iterated->solution().allFinite()) return;
     {
-      const FactorizationThreads threads(iterated->lower().rows()); // factorization_threads.h
+      const FactorizationThreads threads; // solvers/factorization_threads.h
       Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<Complex>, Eigen::Lower> factored(
           iterated->lower());
       if (factored.info() == Eigen::Success) {

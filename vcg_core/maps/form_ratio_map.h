@@ -52,7 +52,7 @@ std::vector<PlaneValue> form_ratio_map(const PreparedMesh &prepared, RatioDz dz,
 
 // The same, solved in passes: `advance(tolerance)` goes on from where the last pass stopped (a
 // screening pass and then the full one take the steps of the full one alone and end at the same
-// values: forms/hermitian_cg.h), `values(tolerance)` advances and returns the map; `steps()` the
+// values: solvers/hermitian_cg.h), `values(tolerance)` advances and returns the map; `steps()` the
 // most conjugate gradient steps a chart has taken so far. Holds both charts' systems (their
 // matrices, preconditioners and the solves' vectors) until it goes.
 class RatioMap {

@@ -33,7 +33,7 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
   // many obtuse triangles), the map with strictly positive weights cannot.
   // Weights are raised only near folds (two rings), round by round; all of them at the end.
   auto solve = [&](int pole_face) {
-    if (pole_face < 0) pole_face = default_puncture_face(prepared);
+    if (pole_face < 0) pole_face = default_pole_face(prepared);
     // With CHOLMOD, one factorization serves both steps where the south-pole step's cap is
     // predicted well enough (south_cap_prediction.h).
     std::vector<char> cap;
@@ -77,7 +77,7 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
   // (genus0_correction.h).
   auto solve_and_correct = [&](int pole_face) {
     Genus0Map map = solve(pole_face);
-    map.values = correct_genus0_map(prepared, map.weights, solver, map.puncture_face, map.values,
+    map.values = correct_genus0_map(prepared, map.weights, solver, map.pole_face, map.values,
                                     map.elimination_order, map.cap_last)
                      .values;
     map.cap_last = {};
@@ -123,7 +123,7 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
       }
     }
   }
-  return {map.values, map.puncture_face, map.raised_weights, std::move(centred_map)};
+  return {map.values, map.pole_face, map.raised_weights, std::move(centred_map)};
 }
 
 } // namespace meromorph

@@ -18,9 +18,9 @@
 #include <optional>
 #include <vector>
 
-#include "forms/laplacian_solver.h"
 #include "mesh/mesh_edges.h"
 #include "mesh/prepared_mesh.h"
+#include "solvers/laplacian_solver.h"
 #include "sphere/mobius_centering.h"
 #include "sphere/sphere_geometry.h"
 
@@ -28,7 +28,7 @@ namespace meromorph {
 
 struct Genus0Result {
   std::vector<PlaneValue> values;
-  int puncture_face = -1, raised_weights = 0;
+  int pole_face = -1, raised_weights = 0;
   // `values` centred (mobius_centering.h), where choosing the pole centred them already.
   std::optional<CentredValues> centred;
 };

@@ -5,10 +5,10 @@
 #include <optional>
 
 #include "common/parallel_for.h"
-#include "forms/leading_block_solve.h"
 #include "forms/region_extension.h"
 #include "maps/genus0_map.h"
 #include "mesh/cotan_laplacian.h"
+#include "solvers/leading_block_solve.h"
 #include "sphere/plane_triangles.h"
 
 namespace meromorph {
@@ -121,7 +121,7 @@ std::vector<int> folded_plane_faces(const FaceIncidence &in,
 
 Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
                                     const std::vector<double> &weights, SolverKind solver,
-                                    int puncture_face, const std::vector<PlaneValue> &pinned_map,
+                                    int pole_face, const std::vector<PlaneValue> &pinned_map,
                                     const std::vector<int> &elimination_order,
                                     const CapLastFactor &cap_last) {
   const MeshEdges &edges = prepared.edges;
@@ -147,7 +147,7 @@ Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
     outer[size_t(v)] = 0;
   std::vector<Complex> face_nu(in.corners.size(), Complex(NAN, NAN));
   parallel_for(in.corners.size(), [&](size_t f) {
-    if (int(f) == puncture_face) return;
+    if (int(f) == pole_face) return;
     for (int k = 0; k < 3; ++k)
       if (outer[size_t(in.corners[f][k])]) return;
     face_nu[f] = face_shear(prepared, int(f), pinned_map);

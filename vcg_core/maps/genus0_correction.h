@@ -29,11 +29,11 @@
 
 #include <vector>
 
-#include "forms/laplacian_solver.h"
 #include "maps/genus0_map.h"
 #include "mesh/mesh.h"
 #include "mesh/mesh_edges.h"
 #include "mesh/prepared_mesh.h"
+#include "solvers/laplacian_solver.h"
 #include "sphere/sphere_geometry.h"
 
 namespace meromorph {
@@ -55,7 +55,7 @@ struct Genus0Correction {
 // factorization, the predicted cap pinned, where it holds at least half of the map's own cap.
 Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
                                     const std::vector<double> &weights, SolverKind solver,
-                                    int puncture_face, const std::vector<PlaneValue> &pinned_map,
+                                    int pole_face, const std::vector<PlaneValue> &pinned_map,
                                     const std::vector<int> &elimination_order,
                                     const CapLastFactor &cap_last);
 

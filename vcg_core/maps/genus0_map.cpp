@@ -6,9 +6,9 @@
 #include "common/errors.h"
 #include "common/parallel_for.h"
 #include "forms/region_extension.h"
-#include "forms/reweighted_solve.h"
 #include "mesh/cotan_laplacian.h"
 #include "mesh/face_vectors.h"
+#include "solvers/reweighted_solve.h"
 #include "sphere/plane_triangles.h"
 #include "sphere/sphere_geometry.h"
 
@@ -51,7 +51,7 @@ std::vector<double> positive_weights(const std::vector<double> &weights,
   return positive;
 }
 
-int default_puncture_face(const PreparedMesh &prepared) {
+int default_pole_face(const PreparedMesh &prepared) {
   return best_shaped_face(prepared.mesh, prepared.geometry);
 }
 
@@ -60,9 +60,9 @@ namespace {
 // The pole triangle: 1 / (w - c) at the puncture face's corners, in the face's own frame (w
 // relative to its centroid, in units of the square root of its area). Fills the two coordinates
 // at those corners and returns them.
-std::vector<int> pole_triangle(const Mesh &mesh, const FaceGeometry &geometry, int puncture_face,
+std::vector<int> pole_triangle(const Mesh &mesh, const FaceGeometry &geometry, int pole_face,
                                Eigen::VectorXcd &fixed) {
-  const MeshFace &face = mesh.face[puncture_face];
+  const MeshFace &face = mesh.face[pole_face];
   std::vector<int> corners;
   Eigen::Vector3d p[3];
   for (int k = 0; k < 3; ++k) {
@@ -71,8 +71,8 @@ std::vector<int> pole_triangle(const Mesh &mesh, const FaceGeometry &geometry, i
   }
   const Eigen::Vector3d centroid = (p[0] + p[1] + p[2]) / 3.0;
   const Eigen::Vector3d e1 = (p[1] - p[0]).normalized();
-  const Eigen::Vector3d e2 = geometry.normal(size_t(puncture_face)).cross(e1);
-  const double size = std::sqrt(geometry.areas[puncture_face]);
+  const Eigen::Vector3d e2 = geometry.normal(size_t(pole_face)).cross(e1);
+  const double size = std::sqrt(geometry.areas[pole_face]);
   fixed = Eigen::VectorXcd::Zero(long(mesh.vert.size()));
   for (int k = 0; k < 3; ++k) {
     const Complex w((p[k] - centroid).dot(e1) / size, (p[k] - centroid).dot(e2) / size);
@@ -84,9 +84,9 @@ std::vector<int> pole_triangle(const Mesh &mesh, const FaceGeometry &geometry, i
 
 // Orientation in the plane: every face but the pole face must turn counter-clockwise.
 std::vector<int> folds_in_the_plane(const FaceIncidence &in, const std::vector<PlaneValue> &values,
-                                    int puncture_face) {
+                                    int pole_face) {
   return parallel_select(in.corners.size(), [&](size_t f) {
-    if (int(f) == puncture_face) return false;
+    if (int(f) == pole_face) return false;
     Complex z[3];
     for (int k = 0; k < 3; ++k)
       z[k] = values[size_t(in.corners[f][k])].w;
@@ -198,7 +198,7 @@ Eigen::VectorXcd harmonic_extension_by(const ColumnSolve &solve,
   return out;
 }
 
-Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int puncture_face,
+Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int pole_face,
                      const std::vector<char> &raise, const std::vector<char> &cap_to_eliminate_last,
                      const std::vector<int> &elimination_order) {
   const Mesh &mesh = prepared.mesh;
@@ -206,17 +206,17 @@ Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int punctu
   const std::vector<double> &weights = prepared.weights;
   Genus0Map out;
   const FaceGeometry &geometry = prepared.geometry;
-  if (puncture_face < 0) puncture_face = best_shaped_face(mesh, geometry);
-  if (puncture_face >= int(mesh.face.size()))
-    throw ArgumentError("puncture face " + std::to_string(puncture_face) + " does not exist");
-  out.puncture_face = puncture_face;
+  if (pole_face < 0) pole_face = best_shaped_face(mesh, geometry);
+  if (pole_face >= int(mesh.face.size()))
+    throw ArgumentError("puncture face " + std::to_string(pole_face) + " does not exist");
+  out.pole_face = pole_face;
 
   const std::vector<double> positive = positive_weights(weights, raise, out.raised_weights);
   auto laplacian = std::make_shared<const Eigen::SparseMatrix<double>>(
       cotan_laplacian(int(mesh.vert.size()), edges, positive));
 
   Eigen::VectorXcd fixed;
-  const std::vector<int> corners = pole_triangle(mesh, geometry, puncture_face, fixed);
+  const std::vector<int> corners = pole_triangle(mesh, geometry, pole_face, fixed);
 
   // Dirichlet problem: L_free z_free = -L_free,pinned z_pinned. Long thin parts crowd into spots
   // far smaller than the map's own scale, where one solve's error (relative to the whole map)
@@ -243,7 +243,7 @@ Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int punctu
     out.cap_last.weights = positive;
   }
   out.values = scaled_to_median_one(z);
-  out.folded_faces = folds_in_the_plane(prepared.incidence, out.values, puncture_face);
+  out.folded_faces = folds_in_the_plane(prepared.incidence, out.values, pole_face);
   out.weights = positive;
   return out;
 }
@@ -255,7 +255,7 @@ std::optional<Genus0Map> genus0_map_reweighted(const PreparedMesh &prepared, con
   const Mesh &mesh = prepared.mesh;
   const int n = int(mesh.vert.size());
   Genus0Map out;
-  out.puncture_face = first.puncture_face;
+  out.pole_face = first.pole_face;
   out.elimination_order = first.elimination_order;
   const std::vector<double> positive =
       positive_weights(prepared.weights, raise, out.raised_weights);
@@ -263,13 +263,13 @@ std::optional<Genus0Map> genus0_map_reweighted(const PreparedMesh &prepared, con
                               positive);
   if (!solve.usable()) return std::nullopt;
   Eigen::VectorXcd fixed;
-  pole_triangle(mesh, prepared.geometry, out.puncture_face, fixed);
+  pole_triangle(mesh, prepared.geometry, out.pole_face, fixed);
   const Eigen::VectorXcd z =
       harmonic_extension_by([&](const Eigen::MatrixXd &b) { return solve.solve_columns(b); },
                             cotan_laplacian(n, prepared.edges, positive), prepared.edges, positive,
                             fixed, refinement_steps);
   out.values = scaled_to_median_one(z);
-  out.folded_faces = folds_in_the_plane(prepared.incidence, out.values, out.puncture_face);
+  out.folded_faces = folds_in_the_plane(prepared.incidence, out.values, out.pole_face);
   out.weights = positive;
   return out;
 }
@@ -278,12 +278,12 @@ Genus0Map genus0_map_again_in(const PreparedMesh &prepared, const Genus0Map &fir
                               const std::vector<char> &raise, const std::vector<char> &region) {
   const int n = int(prepared.mesh.vert.size());
   Genus0Map out;
-  out.puncture_face = first.puncture_face;
+  out.pole_face = first.pole_face;
   out.elimination_order = first.elimination_order;
   const std::vector<double> positive =
       positive_weights(prepared.weights, raise, out.raised_weights);
   std::vector<char> free = region;
-  for (int v : prepared.incidence.corners[size_t(first.puncture_face)])
+  for (int v : prepared.incidence.corners[size_t(first.pole_face)])
     free[size_t(v)] = 0;
   Eigen::VectorXcd given(n);
   for (int v = 0; v < n; ++v)
@@ -292,7 +292,7 @@ Genus0Map genus0_map_again_in(const PreparedMesh &prepared, const Genus0Map &fir
   out.values.reserve(size_t(n));
   for (int i = 0; i < n; ++i)
     out.values.push_back({z[i], false});
-  out.folded_faces = folds_in_the_plane(prepared.incidence, out.values, out.puncture_face);
+  out.folded_faces = folds_in_the_plane(prepared.incidence, out.values, out.pole_face);
   out.weights = positive;
   return out;
 }

@@ -21,10 +21,10 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
-#include "forms/laplacian_solver.h"
 #include "mesh/mesh.h"
 #include "mesh/mesh_edges.h"
 #include "mesh/prepared_mesh.h"
+#include "solvers/laplacian_solver.h"
 #include "sphere/sphere_geometry.h"
 
 namespace meromorph {
@@ -41,7 +41,7 @@ struct CapLastFactor {
 
 struct Genus0Map {
   std::vector<PlaneValue> values;
-  int puncture_face = -1;
+  int pole_face = -1;
   int raised_weights = 0;
   std::vector<double> weights;   // the edge weights solved with (some raised)
   std::vector<int> folded_faces; // in the plane, before projection, among faces doubles resolve
@@ -75,7 +75,7 @@ Eigen::VectorXcd harmonic_extension_by(const ColumnSolve &solve,
 
 // The puncture face taken when none is asked for: among the faces of about median area, the one
 // with the largest smallest angle (the pole's model 1 / w is accurate on a small, round face).
-int default_puncture_face(const PreparedMesh &prepared);
+int default_pole_face(const PreparedMesh &prepared);
 
 // The weights below a floor of 1e-3 of the median positive weight raised to it, where `raise`
 // (one flag per edge; empty: all) allows; `raised` counts them.
@@ -99,7 +99,7 @@ void region_around_folds(const PreparedMesh &prepared, const std::vector<int> &f
 // eliminates those vertices last and is kept (Genus0Map::cap_last); `elimination_order`, if given,
 // is an earlier call's on the same puncture and cap (Genus0Map::elimination_order), not computed
 // again.
-Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int puncture_face = -1,
+Genus0Map genus0_map(const PreparedMesh &prepared, SolverKind solver, int pole_face = -1,
                      const std::vector<char> &raise = {},
                      const std::vector<char> &cap_to_eliminate_last = {},
                      const std::vector<int> &elimination_order = {});

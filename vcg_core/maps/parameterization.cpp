@@ -55,7 +55,7 @@ void describe_written_map(const std::vector<Point3> &input_positions, const Mesh
   clock.done("branching");
 
   progress.report(0.9, "texture coordinates and distortion");
-  out.uv = texture_coordinates(mesh, out.sphere, options.uv);
+  out.uv = texture_coordinates(mesh, out.sphere, options.uv_kind);
   out.quality = measure_map_quality(mesh, out.sphere, branching.branch_vertices);
   out.invalid = invalid_reasons(options, out);
   out.valid = out.invalid.empty();
@@ -97,8 +97,8 @@ Parameterization parameterize(Mesh &mesh, const ParameterizeOptions &options,
   progress.report(0.6, "meromorphic function");
   WrittenSphere written;
   if (out.genus == 0) {
-    const Genus0Result map = best_genus0_map(prepared, options.solver, options.puncture_face);
-    out.puncture_face = map.puncture_face;
+    const Genus0Result map = best_genus0_map(prepared, options.solver, options.pole_face);
+    out.pole_face = map.pole_face;
     out.raised_weights = map.raised_weights;
     out.method = "genus 0: harmonic map with a simple pole (strictly positive weights), inverse "
                  "stereographic projection";

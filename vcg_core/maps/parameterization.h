@@ -21,9 +21,9 @@
 
 #include "common/progress.h"
 #include "common/remedy.h"
-#include "forms/laplacian_solver.h"
 #include "maps/form_pairs.h"
 #include "mesh/mesh.h"
+#include "solvers/laplacian_solver.h"
 #include "sphere/area_correction.h"
 #include "sphere/map_quality.h"
 #include "sphere/mobius_centering.h"
@@ -34,13 +34,13 @@
 namespace meromorph {
 
 struct ParameterizeOptions {
-  UvKind uv = UvKind::spherical;
+  UvKind uv_kind = UvKind::spherical;
   bool mobius = true;
   int origin_vertex = -1; // genus 1: where z = 0, the double pole of P (-1: automatic)
   std::array<int, 2> form_pair{-1, -1}; // genus >= 2: (psi_i + psi_j) / (psi_i - psi_j); -1, -1:
                                         // a generic pair mixing all forms (parameterization.cpp)
   double layer_gap = 0.0;               // layer k on the sphere of radius 1 + gap * k
-  int puncture_face = -1;               // genus 0: the face at the pole (-1: automatic)
+  int pole_face = -1;                   // genus 0: the face at the pole (-1: automatic)
   SolverKind solver = SolverKind::cholmod;
   bool close_holes = false; // parameterize_surface: close holes for the computation only
   // parameterize_surface, several parts, spherical texture coordinates: part k's texture in cell k
@@ -107,7 +107,7 @@ struct Parameterization {
   TextureCoordinates uv;
   std::vector<std::pair<std::string, double>> timings_ms;
   // What the method used.
-  int puncture_face = -1, raised_weights = 0, origin_vertex = -1;
+  int pole_face = -1, raised_weights = 0, origin_vertex = -1;
   // Branch points placed on vertices fold-free: genus 1, half periods (genus1_branch_placement.h);
   // genus >= 2, critical points repaired inside faces (branch_snapping.h).
   int snapped_branch_points = 0;

@@ -4,9 +4,9 @@
 
 #include <Eigen/SparseCore>
 
-#include "forms/laplacian_solver.h"
 #include "maps/genus0_correction.h"
 #include "mesh/index_lists.h"
+#include "solvers/laplacian_solver.h"
 
 namespace meromorph {
 namespace {
@@ -105,8 +105,7 @@ WeightedGraph coarsened(const WeightedGraph &graph, const std::vector<int> &of, 
 } // namespace
 
 std::vector<char> predicted_south_cap(const PreparedMesh &prepared,
-                                      const std::vector<double> &positive_weights,
-                                      int puncture_face) {
+                                      const std::vector<double> &positive_weights, int pole_face) {
   const Mesh &mesh = prepared.mesh;
   const int n = int(mesh.vert.size());
   WeightedGraph graph;
@@ -133,7 +132,7 @@ std::vector<char> predicted_south_cap(const PreparedMesh &prepared,
 
   // The pole: the nodes holding the puncture face's corners left out, their neighbours pinned.
   std::vector<char> pinned_flag(size_t(graph.nodes), 0);
-  const std::array<int, 3> &corners = prepared.incidence.corners[size_t(puncture_face)];
+  const std::array<int, 3> &corners = prepared.incidence.corners[size_t(pole_face)];
   for (int c : corners)
     pinned_flag[size_t(node_of[size_t(c)])] = 2;
   for (const std::array<int, 2> &edge : graph.edges)

@@ -22,7 +22,6 @@
 namespace meromorph {
 
 std::vector<char> predicted_south_cap(const PreparedMesh &prepared,
-                                      const std::vector<double> &positive_weights,
-                                      int puncture_face);
+                                      const std::vector<double> &positive_weights, int pole_face);
 
 } // namespace meromorph

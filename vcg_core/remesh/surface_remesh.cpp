@@ -7,6 +7,7 @@
 #include <vcg/complex/algorithms/update/topology.h>
 
 #include "common/errors.h"
+#include "common/job_threads.h"
 #include "mesh/unit_scale.h"
 #include "remesh/flat_torus_lift.h"
 #include "remesh/geodesic_sphere.h"
@@ -330,6 +331,7 @@ void remesh_through_sphere(const Mesh &given, const Parameterization &map,
     throw ArgumentError("the vertex target is " + std::to_string(options.vertices) +
                         "; give 12 to " + std::to_string(max_remesh_vertices));
   if (map.sphere.empty() || given.vert.empty()) throw ArgumentError("remesh: the mesh is empty");
+  const JobThreads threads; // the team for this job's loops: common/job_threads.h
   // Computed at unit scale (unit_scale.h), so that a surface in nanometres or light years gives
   // the same remesh; its positions are put back at the input's scale at the end.
   const UnitScale scale = unit_scale_of(given);

@@ -1,0 +1,25 @@
+#include "cli/process_settings.h"
+
+#include <cstdlib> // defines __GLIBC__ where glibc is the C library
+
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
+// OpenBLAS's own call, where OpenBLAS is linked (statically into the command-line tool, or
+// loaded for CHOLMOD as the system's BLAS); null with another BLAS.
+extern "C" void openblas_set_num_threads(int threads) __attribute__((weak));
+
+namespace meromorph::cli {
+
+void tune_command_line_process() {
+#if defined(__GLIBC__)
+  mallopt(M_MMAP_THRESHOLD, 1 << 30); // arrays below 1 GiB come from the heap
+  mallopt(M_ARENA_MAX, 1);            // one heap for every thread
+  mallopt(M_TRIM_THRESHOLD, -1);      // the heap's free top is never handed back
+  mallopt(M_TOP_PAD, 256 << 20);      // and grows 256 MiB at a time
+#endif
+  if (openblas_set_num_threads) openblas_set_num_threads(1);
+}
+
+} // namespace meromorph::cli
