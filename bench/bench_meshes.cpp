@@ -33,6 +33,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <csignal>
@@ -54,6 +55,9 @@
 #include "shapes/generated_surfaces.h"
 
 using namespace meromorph;
+
+// OpenBLAS's own call, where it is the BLAS (null otherwise).
+extern "C" void openblas_set_num_threads(int threads) __attribute__((weak));
 
 namespace {
 
@@ -125,6 +129,8 @@ struct Source {
 };
 
 Figures floor_job(const std::string &path, int genus) {
+  // OpenBLAS as any program has it: a thread per CPU.
+  if (openblas_set_num_threads) openblas_set_num_threads(int(std::thread::hardware_concurrency()));
   Figures out;
   Mesh mesh;
   out["read"] = milliseconds([&] { read_mesh(path, mesh); });
@@ -154,6 +160,7 @@ Figures param_job(const std::string &path) {
   const auto start = std::chrono::steady_clock::now();
   Mesh mesh;
   out["read"] = milliseconds([&] { read_mesh(path, mesh); });
+  cli::tune_blas_for_job(mesh.VN()); // as the CLI does once it has read the mesh
   // The longest time without a progress report (from the start, between reports, to the end):
   // what a MeshLab or Blender user waits without the bar moving or a chance to cancel.
   auto last_report = std::chrono::steady_clock::now();
@@ -375,78 +382,8 @@ int threads_table(const std::string &shared, int repeats) {
   return 0;
 }
 
-} // namespace
-
-int main(int argc, char **argv) {
-  if (argc < 2 || (std::string(argv[1]) == "--mesh" && argc < 3)) {
-    std::fprintf(stderr,
-                 "usage: bench_meshes SHARED_MESHES_DIR [SIZES LARGEST_VERTICES [REPEATS]]\n"
-                 "       bench_meshes --mesh MESH_FILE [REPEATS]\n"
-                 "       bench_meshes --large [REPEATS]\n"
-                 "       bench_meshes --threads SHARED_MESHES_DIR [REPEATS]\n");
-    return 2;
-  }
-  // As the CLI does (the jobs run as `param` runs them).
-  cli::tune_command_line_process();
-  if (std::string(argv[1]) == "--mesh")
-    return mesh_file_row(argv[2], argc > 3 ? std::max(1, std::atoi(argv[3])) : 3,
-                         std::filesystem::path(argv[2]).filename().string());
-  if (std::string(argv[1]) == "--threads")
-    return threads_table(argc > 2 ? argv[2] : "../shared/meshes",
-                         argc > 3 ? std::max(1, std::atoi(argv[3])) : 3);
-  if (std::string(argv[1]) == "--large")
-    return large_row((std::filesystem::temp_directory_path() /
-                      ("meromorph-bench-large-" + std::to_string(getpid()) + ".ply"))
-                         .string(),
-                     argc > 2 ? std::max(1, std::atoi(argv[2])) : 1);
-  const std::string shared = argv[1];
-  const int sizes = argc > 2 ? std::max(1, std::atoi(argv[2])) : 3;
-  const double largest = argc > 3 ? std::atof(argv[3]) : 1e6;
-  const int repeats = argc > 4 ? std::max(1, std::atoi(argv[4])) : 3;
-  const std::vector<Source> sources = {
-      {"maxplanck", 0, [&](Mesh &m) { read_mesh(shared + "/maxplanck.nf25k.off", m); }},
-      {"kitten", 1, [&](Mesh &m) { read_mesh(shared + "/kitten.nv40k.off", m); }},
-      {"eight", 2, [&](Mesh &m) { read_mesh(shared + "/eight.off", m); }},
-      {"genus 5 (generated)", 5, [](Mesh &m) { make_genus_surface(m, 5, 24); }},
-      {"genus 10 (generated)", 10, [](Mesh &m) { make_genus_surface(m, 10, 24); }},
-  };
-  const std::string path = (std::filesystem::temp_directory_path() /
-                            ("meromorph-bench-" + std::to_string(getpid()) + ".ply"))
-                               .string();
-
-  print_header();
-  std::map<int, std::vector<Figures>> by_genus;
-  for (const Source &source : sources) {
-    Mesh base;
-    source.make(base);
-    const double base_vertices = base.VN();
-    for (int steps : steps_for(base_vertices, sizes, largest)) {
-      const Figures made = in_child([&]() -> Figures {
-        Mesh mesh;
-        source.make(mesh);
-        subdivide_flat(mesh, steps);
-        write_mesh(mesh, path);
-        return {{"vertices", double(mesh.VN())}};
-      });
-      if (made.empty()) {
-        std::printf("| %s x%d | could not be made |\n", source.name.c_str(), 1 << (2 * steps));
-        continue;
-      }
-      Figures floor, param;
-      best_of(path, source.genus, repeats, floor, param);
-      const std::string name = source.name + " x" + std::to_string(1 << (2 * steps));
-      if (floor.empty() || param.empty()) {
-        std::printf("| %s | %.0f | failed |\n", name.c_str(), made.at("vertices"));
-        continue;
-      }
-      print_row(name, source.genus, floor, param);
-      param["floor"] = floor.at("floor");
-      param["floor_factorization"] = floor.at("factorization");
-      by_genus[source.genus].push_back(param);
-    }
-  }
-  std::filesystem::remove(path);
-
+// The scaling exponents per genus and stage, over the sizes of the main table.
+void print_exponents(const std::map<int, std::vector<Figures>> &by_genus) {
   std::printf("\nScaling exponent (time ~ vertices^p, fitted over the sizes):\n\n| genus |");
   for (const std::string &stage : stages)
     std::printf(" %s |", stage.c_str());
@@ -480,5 +417,81 @@ int main(int argc, char **argv) {
     std::printf(" %.2f | %.2f | %.2f |\n", exponent("total"), exponent("floor"),
                 exponent("floor_factorization"));
   }
+}
+
+// The main table: five meshes at `sizes` sizes up to `largest` vertices, then the exponents.
+int main_table(const std::string &shared, int sizes, double largest, int repeats) {
+  const std::vector<Source> sources = {
+      {"maxplanck", 0, [&](Mesh &m) { read_mesh(shared + "/maxplanck.nf25k.off", m); }},
+      {"kitten", 1, [&](Mesh &m) { read_mesh(shared + "/kitten.nv40k.off", m); }},
+      {"eight", 2, [&](Mesh &m) { read_mesh(shared + "/eight.off", m); }},
+      {"genus 5 (generated)", 5, [](Mesh &m) { make_genus_surface(m, 5, 24); }},
+      {"genus 10 (generated)", 10, [](Mesh &m) { make_genus_surface(m, 10, 24); }},
+  };
+  const std::string path = (std::filesystem::temp_directory_path() /
+                            ("meromorph-bench-" + std::to_string(getpid()) + ".ply"))
+                               .string();
+  print_header();
+  std::map<int, std::vector<Figures>> by_genus;
+  for (const Source &source : sources) {
+    Mesh base;
+    source.make(base);
+    for (int steps : steps_for(base.VN(), sizes, largest)) {
+      const std::string name = source.name + " x" + std::to_string(1 << (2 * steps));
+      const Figures made = in_child([&]() -> Figures {
+        Mesh mesh;
+        source.make(mesh);
+        subdivide_flat(mesh, steps);
+        write_mesh(mesh, path);
+        return {{"vertices", double(mesh.VN())}};
+      });
+      if (made.empty()) {
+        std::printf("| %s | could not be made |\n", name.c_str());
+        continue;
+      }
+      Figures floor, param;
+      best_of(path, source.genus, repeats, floor, param);
+      if (floor.empty() || param.empty()) {
+        std::printf("| %s | %.0f | failed |\n", name.c_str(), made.at("vertices"));
+        continue;
+      }
+      print_row(name, source.genus, floor, param);
+      param["floor"] = floor.at("floor");
+      param["floor_factorization"] = floor.at("factorization");
+      by_genus[source.genus].push_back(param);
+    }
+  }
+  std::filesystem::remove(path);
+  print_exponents(by_genus);
   return 0;
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+  if (argc < 2 || (std::string(argv[1]) == "--mesh" && argc < 3)) {
+    std::fprintf(stderr,
+                 "usage: bench_meshes SHARED_MESHES_DIR [SIZES LARGEST_VERTICES [REPEATS]]\n"
+                 "       bench_meshes --mesh MESH_FILE [REPEATS]\n"
+                 "       bench_meshes --large [REPEATS]\n"
+                 "       bench_meshes --threads SHARED_MESHES_DIR [REPEATS]\n");
+    return 2;
+  }
+  // As the CLI does for large jobs (the jobs run as `param` runs them).
+  cli::run_with_huge_pages(argc, argv, true);
+  cli::tune_command_line_process();
+  if (std::string(argv[1]) == "--mesh")
+    return mesh_file_row(argv[2], argc > 3 ? std::max(1, std::atoi(argv[3])) : 3,
+                         std::filesystem::path(argv[2]).filename().string());
+  if (std::string(argv[1]) == "--threads")
+    return threads_table(argc > 2 ? argv[2] : "../shared/meshes",
+                         argc > 3 ? std::max(1, std::atoi(argv[3])) : 3);
+  if (std::string(argv[1]) == "--large")
+    return large_row((std::filesystem::temp_directory_path() /
+                      ("meromorph-bench-large-" + std::to_string(getpid()) + ".ply"))
+                         .string(),
+                     argc > 2 ? std::max(1, std::atoi(argv[2])) : 1);
+  return main_table(argv[1], argc > 2 ? std::max(1, std::atoi(argv[2])) : 3,
+                    argc > 3 ? std::atof(argv[3]) : 1e6,
+                    argc > 4 ? std::max(1, std::atoi(argv[4])) : 3);
 }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/process_settings.h"
 #include "common/errors.h"
 #include "common/parallel_for.h"
 #include "io/mesh_reader.h"
@@ -28,6 +29,7 @@ inline JobInput read_job_input(const std::string &path, bool repair, Mesh &mesh)
   // (reading is serial: the other core's thread is started meanwhile, common/parallel_for.h)
   while_threads_start([&] { input.source = read_mesh(path, mesh); });
   if (repair) input.repairs = repair_mesh(mesh);
+  tune_blas_for_job(long(mesh.vert.size())); // cli/process_settings.h
   input.read_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return input;

@@ -12,7 +12,8 @@
 int main(int argc, char **argv) {
   using namespace meromorph;
   using cli::ExitCode;
-  cli::tune_command_line_process(); // cli/process_settings.h: this process is ours
+  cli::run_with_huge_pages(argc, argv); // cli/process_settings.h: this process is ours
+  cli::tune_command_line_process();
   CLI::App app{
       "meromorph: conformal maps of closed surfaces of any genus onto the sphere.\n"
       "Exit codes: 0 done, 1 internal failure (a bug: please report it with the input), 2 bad "

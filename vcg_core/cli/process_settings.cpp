@@ -1,6 +1,13 @@
 #include "cli/process_settings.h"
 
+#include "common/job_threads.h"
+
 #include <cstdlib> // defines __GLIBC__ where glibc is the C library
+#include <cstring>
+#include <string>
+
+#include <sys/stat.h>
+#include <unistd.h>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -12,6 +19,24 @@ extern "C" void openblas_set_num_threads(int threads) __attribute__((weak));
 
 namespace meromorph::cli {
 
+void run_with_huge_pages(int argc, char **argv, bool always) {
+  constexpr const char *setting = "glibc.malloc.hugetlb";
+  const char *given = std::getenv("GLIBC_TUNABLES");
+  if (given && std::strstr(given, setting)) return; // the user's, or ours already
+  bool large = always;
+  for (int i = 1; i < argc && !large; ++i) {
+    struct stat file;
+    large = ::stat(argv[i], &file) == 0 && S_ISREG(file.st_mode) && file.st_size > (1 << 20);
+  }
+  if (!large) return;
+  const std::string tunables =
+      (given && *given ? std::string(given) + ":" : std::string()) + setting + "=1";
+  if (::setenv("GLIBC_TUNABLES", tunables.c_str(), 1) != 0) return;
+  ::execv("/proc/self/exe", argv); // returns only where it fails: then run as we are
+  ::unsetenv("GLIBC_TUNABLES");
+  if (given) ::setenv("GLIBC_TUNABLES", given, 1);
+}
+
 void tune_command_line_process() {
 #if defined(__GLIBC__)
   mallopt(M_MMAP_THRESHOLD, 1 << 30); // arrays below 1 GiB come from the heap
@@ -19,7 +44,12 @@ void tune_command_line_process() {
   mallopt(M_TRIM_THRESHOLD, -1);      // the heap's free top is never handed back
   mallopt(M_TOP_PAD, 256 << 20);      // and grows 256 MiB at a time
 #endif
-  if (openblas_set_num_threads) openblas_set_num_threads(1);
+  tune_blas_for_job(0);
+}
+
+void tune_blas_for_job(long vertices) {
+  if (openblas_set_num_threads)
+    openblas_set_num_threads(vertices >= parallel_blas_vertices ? free_cpus() : 1);
 }
 
 } // namespace meromorph::cli

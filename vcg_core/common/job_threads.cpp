@@ -78,10 +78,14 @@ int job_team_size() {
   return team > 0 ? team : openmp_limit();
 }
 
+int free_cpus() {
+  return team_size_for(usable_cpus(), openmp_limit(), system_runnable(), own_runnable());
+}
+
 JobThreads::JobThreads() {
   if (team > 0) return;
   outermost_ = true;
-  team = team_size_for(usable_cpus(), openmp_limit(), system_runnable(), own_runnable());
+  team = free_cpus();
 }
 
 JobThreads::~JobThreads() {

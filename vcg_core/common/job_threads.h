@@ -24,6 +24,10 @@ int team_size_for(int cpus, int openmp_limit, int runnable, int own_runnable);
 // The team size for loops started on this thread.
 int job_team_size();
 
+// The CPUs free for a job started now: team_size_for over this machine as it is (the rule
+// JobThreads applies).
+int free_cpus();
+
 class JobThreads {
 public:
   JobThreads();

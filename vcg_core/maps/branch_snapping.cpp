@@ -388,53 +388,29 @@ struct SpotRepair {
   std::vector<int> read;
 };
 
-SpotRepair repair_spot(const PreparedMesh &prepared,
-                       const std::vector<const Eigen::VectorXcd *> &coordinate_forms,
-                       std::vector<Eigen::Vector3d> &sphere, const std::vector<int> &vertices) {
-  constexpr int fit_rings = 2;       // around the spot, where the model is fitted
-  constexpr int max_shift_rings = 5; // around the chosen vertex, where the map is changed
-  const FaceIncidence &in = prepared.incidence;
-  SpotRepair out;
-  Spot spot{prepared.mesh,
-            in,
-            sphere,
-            vertices,
-            ring_distances(in, vertices, fit_rings + max_shift_rings + 1),
-            {},
-            {},
-            {0, 0, 0, 0.0},
-            {},
-            {},
-            nullptr,
-            {}};
-  // The faces a change can reach: those at the vertices it can move (a candidate is within
-  // fit_rings of the spot, and moves vertices up to max_shift_rings - 1 rings from itself; the
-  // star and its re-embedding stay within 3). Faces beyond add the same to every score.
-  std::vector<int> &faces = spot.region_faces;
-  for (const auto &[v, ring] : spot.region)
+constexpr int fit_rings = 2;       // around the spot, where the model is fitted
+constexpr int max_shift_rings = 5; // around the chosen vertex, where the map is changed
+
+// The faces a change can reach: those at the vertices it can move (a candidate is within
+// fit_rings of the spot, and moves vertices up to max_shift_rings - 1 rings from itself; the
+// star and its re-embedding stay within 3). Faces beyond add the same to every score.
+std::vector<int> faces_a_change_reaches(const FaceIncidence &in, const RingDistances &region) {
+  std::vector<int> faces;
+  for (const auto &[v, ring] : region)
     if (ring <= fit_rings + max_shift_rings - 1)
       faces.insert(faces.end(), in.faces_of_vertex[size_t(v)].begin(),
                    in.faces_of_vertex[size_t(v)].end());
   std::sort(faces.begin(), faces.end());
   faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
-  const LocalNumbers<ScoredFaces> face_numbers(faces, in.corners.size());
-  spot.face_number = &face_numbers;
-  spot.changed.assign(faces.size(), 0);
-  spot.measure_as_found();
-  // Everything below reads values at the corners of these faces only (and the fit's vertices
-  // and the re-embedding's rings, which are among them).
-  for (int f : spot.region_faces)
-    out.read.insert(out.read.end(), in.corners[size_t(f)].begin(), in.corners[size_t(f)].end());
+  return faces;
+}
 
-  const int critical_points = critical_points_in(spot);
-  if (critical_points <= 0) {
-    out.moves = smooth_stray_values(spot);
-    return out;
-  }
-  // The coordinate: the integral of the form that is larger near the spot (far from its zeros).
-  const Eigen::VectorXcd *form = coordinate_forms.front();
+// The coordinate's form: the one that is larger near the spot (far from its zeros).
+const Eigen::VectorXcd *coordinate_form(const PreparedMesh &prepared, const Spot &spot,
+                                        const std::vector<const Eigen::VectorXcd *> &forms) {
+  const Eigen::VectorXcd *form = forms.front();
   double largest = -1;
-  for (const Eigen::VectorXcd *candidate : coordinate_forms) {
+  for (const Eigen::VectorXcd *candidate : forms) {
     double size = 0;
     for (const auto &[v, ring] : spot.region)
       if (ring <= fit_rings)
@@ -445,22 +421,20 @@ SpotRepair repair_spot(const PreparedMesh &prepared,
       form = candidate;
     }
   }
-  StackPool pool; // (the coordinate's nodes: common/stack_pool.h)
-  const Coordinates z = integrated_coordinate(prepared.edges, prepared.edges_at_vertex, *form,
-                                              vertices.front(), spot.region, &pool);
-  CriticalModel model;
-  if (!fit_critical_model(spot, z, critical_points, fit_rings, model)) return out;
+  return form;
+}
 
-  // Candidates: the 6 vertices nearest p, then, if none of them winds twice without folding a
-  // face (a corner of 90 degrees or more at a branch vertex turns its face over), the next 6,
-  // each with the shift fading over 1 to max_shift_rings rings; the fold-free one that distorts
-  // angles least wins (farther candidates distort more, so they come second).
+// Candidates: the 6 vertices nearest each critical point p, then, if none of them winds twice
+// without folding a face (a corner of 90 degrees or more at a branch vertex turns its face over),
+// the next 6, each with the shift fading over 1 to max_shift_rings rings; the fold-free one that
+// distorts angles least wins (farther candidates distort more, so they come second).
+Moves best_branch_vertex(Spot &spot, const CriticalModel &model, const Coordinates &z) {
   BestChange best{spot.score(-1), {}};
   std::map<int, RingDistances> rings_of_candidate; // each candidate's, to the widest shift
   auto rings_around = [&](int v) -> const RingDistances & {
     auto at = rings_of_candidate.find(v);
     if (at == rings_of_candidate.end())
-      at = rings_of_candidate.emplace(v, ring_distances(in, {v}, max_shift_rings - 1)).first;
+      at = rings_of_candidate.emplace(v, ring_distances(spot.in, {v}, max_shift_rings - 1)).first;
     return at->second;
   };
   for (const Complex p : model.critical_points) {
@@ -476,7 +450,49 @@ SpotRepair repair_spot(const PreparedMesh &prepared,
                             rings_around(by_distance[i].second), shift_rings, best);
     }
   }
-  out.moves = std::move(best.moves);
+  return std::move(best.moves);
+}
+
+SpotRepair repair_spot(const PreparedMesh &prepared,
+                       const std::vector<const Eigen::VectorXcd *> &coordinate_forms,
+                       std::vector<Eigen::Vector3d> &sphere, const std::vector<int> &vertices) {
+  const FaceIncidence &in = prepared.incidence;
+  SpotRepair out;
+  Spot spot{prepared.mesh,
+            in,
+            sphere,
+            vertices,
+            ring_distances(in, vertices, fit_rings + max_shift_rings + 1),
+            {},
+            {},
+            {0, 0, 0, 0.0},
+            {},
+            {},
+            nullptr,
+            {}};
+  spot.region_faces = faces_a_change_reaches(in, spot.region);
+  const LocalNumbers<ScoredFaces> face_numbers(spot.region_faces, in.corners.size());
+  spot.face_number = &face_numbers;
+  spot.changed.assign(spot.region_faces.size(), 0);
+  spot.measure_as_found();
+  // Everything below reads values at the corners of these faces only (and the fit's vertices
+  // and the re-embedding's rings, which are among them).
+  for (int f : spot.region_faces)
+    out.read.insert(out.read.end(), in.corners[size_t(f)].begin(), in.corners[size_t(f)].end());
+
+  const int critical_points = critical_points_in(spot);
+  if (critical_points <= 0) {
+    out.moves = smooth_stray_values(spot);
+    return out;
+  }
+  // The coordinate: the integral of the form that is larger near the spot.
+  StackPool pool; // (the coordinate's nodes: common/stack_pool.h)
+  const Coordinates z = integrated_coordinate(prepared.edges, prepared.edges_at_vertex,
+                                              *coordinate_form(prepared, spot, coordinate_forms),
+                                              vertices.front(), spot.region, &pool);
+  CriticalModel model;
+  if (!fit_critical_model(spot, z, critical_points, fit_rings, model)) return out;
+  out.moves = best_branch_vertex(spot, model, z);
   return out;
 }
 

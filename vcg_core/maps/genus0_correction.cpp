@@ -119,12 +119,119 @@ std::vector<int> folded_plane_faces(const FaceIncidence &in,
   });
 }
 
+namespace {
+
+// The median per-face Beltrami ratio nu of the pinned map, over the faces away from the pole
+// (z = A f + B conj(f): a global shear); none where it cannot be measured or is not small.
+std::optional<Complex> median_shear(const PreparedMesh &prepared, int pole_face,
+                                    const std::vector<PlaneValue> &pinned_map) {
+  const FaceIncidence &in = prepared.incidence;
+  const size_t n = pinned_map.size();
+  std::vector<char> outer(n, 1);
+  for (int v : nearest_to(pinned_map, Complex(0, 0), n - size_t(double(n) * outer_share)))
+    outer[size_t(v)] = 0;
+  std::vector<Complex> face_nu(in.corners.size(), Complex(NAN, NAN));
+  parallel_for(in.corners.size(), [&](size_t f) {
+    if (int(f) == pole_face) return;
+    for (int k = 0; k < 3; ++k)
+      if (outer[size_t(in.corners[f][k])]) return;
+    face_nu[f] = face_shear(prepared, int(f), pinned_map);
+  });
+  std::vector<double> nu_real, nu_imag;
+  for (const Complex &nu : face_nu)
+    if (std::isfinite(nu.real()) && std::isfinite(nu.imag())) {
+      nu_real.push_back(nu.real());
+      nu_imag.push_back(nu.imag());
+    }
+  if (nu_real.empty()) return {};
+  const Complex nu(median(nu_real), median(nu_imag));
+  if (!(std::abs(nu) < 0.5)) return {}; // not a small shear: not this model's case
+  return nu;
+}
+
+// The south-pole step's chart zeta = 1 / (z - z_s): the cap around z_s pinned at its values there.
+struct SouthPoleChart {
+  Complex south;
+  std::vector<int> pinned;
+  std::vector<char> is_pinned;
+  Eigen::VectorXcd fixed;
+
+  SouthPoleChart(const std::vector<PlaneValue> &values, std::vector<int> cap)
+      : south(median_value(values)), pinned(std::move(cap)), is_pinned(values.size(), 0),
+        fixed(Eigen::VectorXcd::Zero(long(values.size()))) {
+    for (int v : pinned) {
+      is_pinned[size_t(v)] = 1;
+      const Complex d = values[size_t(v)].w - south;
+      fixed[v] = std::abs(d) > 0 ? 1.0 / d : Complex(0, 0);
+    }
+  }
+  // The free vertices' values taken back from the chart; the pinned ones' kept.
+  std::vector<PlaneValue> mapped_back(const std::vector<PlaneValue> &values,
+                                      const Eigen::VectorXcd &zeta) const {
+    std::vector<PlaneValue> candidate = values;
+    for (size_t v = 0; v < values.size(); ++v) {
+      if (is_pinned[v]) continue;
+      if (zeta[long(v)] == Complex(0, 0)) // (as std::abs == 0, without hypot)
+        candidate[v] = {Complex(0, 0), true};
+      else
+        candidate[v] = {south + 1.0 / zeta[long(v)], false};
+    }
+    return candidate;
+  }
+};
+
+// The south-pole step with the pinned-pole map's factor, whose weights are the map's before any
+// were raised: the region around the raised ones (as the map itself was, genus0_best_map.cpp)
+// and around faces the result folds solved again with the map's weights, those near the folds
+// raised too. `folded_count`: the result's folded faces where known.
+std::vector<PlaneValue>
+south_pole_step_by_cap_last(const PreparedMesh &prepared, const std::vector<double> &weights,
+                            const CapLastFactor &cap_last, const SouthPoleChart &chart,
+                            const std::vector<PlaneValue> &values, size_t folded_before,
+                            std::optional<size_t> &folded_count) {
+  const MeshEdges &edges = prepared.edges;
+  const size_t n = values.size();
+  const LeadingBlockSolve solve(*cap_last.solver, *cap_last.laplacian, int(cap_last.cap.size()),
+                                cap_last.corners);
+  const Eigen::VectorXcd zeta =
+      harmonic_extension_by([&](const Eigen::MatrixXd &b) { return solve.solve_columns(b); },
+                            *cap_last.laplacian, edges, cap_last.weights, chart.fixed, 1);
+  std::vector<PlaneValue> candidate = chart.mapped_back(values, zeta);
+  std::vector<char> region(n, 0), raise;
+  for (int e = 0; e < edges.edge_count(); ++e)
+    if (weights[size_t(e)] != cap_last.weights[size_t(e)])
+      for (int v : edges.vertices[size_t(e)])
+        region[size_t(v)] = 1;
+  grow_by_rings(prepared, region, local_rings);
+  const std::vector<int> folded = folded_plane_faces(prepared.incidence, candidate);
+  folded_count = folded.size();
+  if (folded.size() > folded_before) {
+    std::vector<char> around_folds;
+    region_around_folds(prepared, folded, raise, around_folds);
+    for (size_t v = 0; v < n; ++v)
+      region[v] |= around_folds[v];
+  }
+  std::vector<char> free(n, 0);
+  for (size_t v = 0; v < n; ++v)
+    free[v] = region[v] && !chart.is_pinned[v];
+  if (std::find(free.begin(), free.end(), 1) != free.end()) {
+    int raised = 0;
+    const std::vector<double> region_weights =
+        raise.empty() ? weights : positive_weights(weights, raise, raised);
+    candidate = chart.mapped_back(
+        values, harmonic_extension_in_region(prepared, region_weights, free, zeta));
+    folded_count.reset();
+  }
+  return candidate;
+}
+
+} // namespace
+
 Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
                                     const std::vector<double> &weights, SolverKind solver,
                                     int pole_face, const std::vector<PlaneValue> &pinned_map,
                                     const std::vector<int> &elimination_order,
                                     const CapLastFactor &cap_last) {
-  const MeshEdges &edges = prepared.edges;
   const FaceIncidence &in = prepared.incidence;
   Genus0Correction out;
   out.values = pinned_map;
@@ -142,96 +249,32 @@ Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
   };
 
   // 1. The shear.
-  std::vector<char> outer(n, 1);
-  for (int v : nearest_to(pinned_map, Complex(0, 0), n - size_t(double(n) * outer_share)))
-    outer[size_t(v)] = 0;
-  std::vector<Complex> face_nu(in.corners.size(), Complex(NAN, NAN));
-  parallel_for(in.corners.size(), [&](size_t f) {
-    if (int(f) == pole_face) return;
-    for (int k = 0; k < 3; ++k)
-      if (outer[size_t(in.corners[f][k])]) return;
-    face_nu[f] = face_shear(prepared, int(f), pinned_map);
-  });
-  std::vector<double> nu_real, nu_imag;
-  for (const Complex &nu : face_nu)
-    if (std::isfinite(nu.real()) && std::isfinite(nu.imag())) {
-      nu_real.push_back(nu.real());
-      nu_imag.push_back(nu.imag());
-    }
-  if (nu_real.empty()) return out;
-  const Complex nu(median(nu_real), median(nu_imag));
-  if (!(std::abs(nu) < 0.5)) return out; // not a small shear: not this model's case
+  const std::optional<Complex> nu = median_shear(prepared, pole_face, pinned_map);
+  if (!nu) return out;
   std::vector<PlaneValue> unsheared = pinned_map;
   for (PlaneValue &value : unsheared)
-    value.w -= nu * std::conj(value.w);
+    value.w -= *nu * std::conj(value.w);
   if (!accept(unsheared)) return out;
-  out.shear = nu;
+  out.shear = *nu;
 
   // 2. The south-pole step, in the chart zeta = 1 / (z - z_s).
-  const Complex south = median_value(out.values);
-  std::vector<int> pinned = south_cap(out.values);
-  const bool by_cap_last = cap_last.solver && overlap(cap_last.cap, pinned, n) >= least_cap_overlap;
-  if (by_cap_last) pinned = cap_last.cap;
-  std::vector<char> is_pinned(n, 0);
-  Eigen::VectorXcd fixed = Eigen::VectorXcd::Zero(long(n));
-  for (int v : pinned) {
-    is_pinned[size_t(v)] = 1;
-    const Complex d = out.values[size_t(v)].w - south;
-    fixed[v] = std::abs(d) > 0 ? 1.0 / d : Complex(0, 0);
-  }
-  auto mapped_back = [&](const Eigen::VectorXcd &zeta) {
-    std::vector<PlaneValue> candidate = out.values;
-    for (size_t v = 0; v < n; ++v) {
-      if (is_pinned[v]) continue;
-      if (zeta[long(v)] == Complex(0, 0)) // (as std::abs == 0, without hypot)
-        candidate[v] = {Complex(0, 0), true};
-      else
-        candidate[v] = {south + 1.0 / zeta[long(v)], false};
-    }
-    return candidate;
-  };
+  std::vector<int> cap = south_cap(out.values);
+  const bool by_cap_last = cap_last.solver && overlap(cap_last.cap, cap, n) >= least_cap_overlap;
+  const SouthPoleChart chart(out.values, by_cap_last ? cap_last.cap : std::move(cap));
   auto by_new_factorization = [&] {
-    return mapped_back(harmonic_extension(cotan_laplacian(int(n), edges, weights), edges, weights,
-                                          solver, pinned, fixed, 1, elimination_order));
+    const MeshEdges &edges = prepared.edges;
+    return chart.mapped_back(out.values, harmonic_extension(cotan_laplacian(int(n), edges, weights),
+                                                            edges, weights, solver, chart.pinned,
+                                                            chart.fixed, 1, elimination_order));
   };
   if (!by_cap_last) {
     accept(by_new_factorization());
     return out;
   }
-  // With the pinned-pole map's factor, whose weights are the map's before any were raised: the
-  // region around the raised ones (as the map itself was, genus0_best_map.cpp) and around faces
-  // the result folds solved again with the map's weights, those near the folds raised too; a new
-  // factorization where that still folds.
-  const LeadingBlockSolve solve(*cap_last.solver, *cap_last.laplacian, int(cap_last.cap.size()),
-                                cap_last.corners);
-  const Eigen::VectorXcd zeta =
-      harmonic_extension_by([&](const Eigen::MatrixXd &b) { return solve.solve_columns(b); },
-                            *cap_last.laplacian, edges, cap_last.weights, fixed, 1);
-  std::vector<PlaneValue> candidate = mapped_back(zeta);
-  std::vector<char> region(n, 0), raise;
-  for (int e = 0; e < edges.edge_count(); ++e)
-    if (weights[size_t(e)] != cap_last.weights[size_t(e)])
-      for (int v : edges.vertices[size_t(e)])
-        region[size_t(v)] = 1;
-  grow_by_rings(prepared, region, local_rings);
-  const std::vector<int> folded = folded_plane_faces(in, candidate);
-  std::optional<size_t> folded_count = folded.size();
-  if (folded.size() > folded_before) {
-    std::vector<char> around_folds;
-    region_around_folds(prepared, folded, raise, around_folds);
-    for (size_t v = 0; v < n; ++v)
-      region[v] |= around_folds[v];
-  }
-  std::vector<char> free(n, 0);
-  for (size_t v = 0; v < n; ++v)
-    free[v] = region[v] && !is_pinned[v];
-  if (std::find(free.begin(), free.end(), 1) != free.end()) {
-    int raised = 0;
-    const std::vector<double> region_weights =
-        raise.empty() ? weights : positive_weights(weights, raise, raised);
-    candidate = mapped_back(harmonic_extension_in_region(prepared, region_weights, free, zeta));
-    folded_count.reset();
-  }
+  // A new factorization where the step with the cap-last factor still folds.
+  std::optional<size_t> folded_count;
+  const std::vector<PlaneValue> candidate = south_pole_step_by_cap_last(
+      prepared, weights, cap_last, chart, out.values, folded_before, folded_count);
   if (!accept(candidate, folded_count)) accept(by_new_factorization());
   return out;
 }

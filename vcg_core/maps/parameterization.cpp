@@ -63,6 +63,76 @@ void describe_written_map(const std::vector<Point3> &input_positions, const Mesh
   clock.done("texture_and_quality");
 }
 
+// Genus 0: the harmonic map with a pole, on the sphere.
+WrittenSphere written_genus0_map(const PreparedMesh &prepared, const ParameterizeOptions &options,
+                                 Parameterization &out, const Progress &progress,
+                                 StageClock &clock) {
+  const Genus0Result map = best_genus0_map(prepared, options.solver, options.pole_face);
+  out.pole_face = map.pole_face;
+  out.raised_weights = map.raised_weights;
+  out.method = "genus 0: harmonic map with a simple pole (strictly positive weights), inverse "
+               "stereographic projection";
+  clock.done("meromorphic");
+  WrittenSphere written;
+  finish_on_sphere(prepared, options.mobius, nullptr, out.euler, map.values, nullptr,
+                   map.centred ? &*map.centred : nullptr, written, progress, clock);
+  return written;
+}
+
+// Genus 1: P of the flat coordinate, its double pole on the chosen or the best origin.
+WrittenSphere written_genus1(const PreparedMesh &prepared, const HolomorphicForms &forms,
+                             const ParameterizeOptions &options, Parameterization &out,
+                             const Progress &progress, StageClock &clock) {
+  out.modulus = forms.modulus;
+  out.riemann_matrix = forms.riemann_matrix;
+  const std::vector<int> origins =
+      options.origin_vertex >= 0
+          ? std::vector<int>{options.origin_vertex}
+          : genus1_origin_candidates(prepared, forms.normalized[0],
+                                     WeierstrassP(Complex(1, 0), forms.riemann_matrix(0, 0)));
+  out.method = "genus 1: Weierstrass P-function of the flat coordinate";
+  out.flat_periods = WeierstrassP(Complex(1, 0), forms.riemann_matrix(0, 0)).periods();
+  clock.done("meromorphic");
+  return written_genus1_map(prepared, forms, origins, options.mobius, progress, clock);
+}
+
+// Genus g >= 2: the ratio of the best pair of forms, on the sphere.
+WrittenSphere written_form_ratio(const PreparedMesh &prepared, const HolomorphicForms &forms,
+                                 const ParameterizeOptions &options, Parameterization &out,
+                                 const Progress &progress, StageClock &clock) {
+  out.riemann_matrix = forms.riemann_matrix;
+  out.form_pair = options.form_pair;
+  PairSearch search =
+      search_form_pairs(prepared, forms, options.form_pair, options.mobius, progress);
+  out.form_coefficients = search.coefficients;
+  out.pair_attempts = search.attempts;
+  out.method = "genus " + std::to_string(out.genus) +
+               ": ratio (omega1 + omega2) / (omega1 - omega2), omega1 = sum a_k psi_k, "
+               "omega2 = sum b_k psi_k of the normalized holomorphic 1-forms psi_k (a_k, b_k: "
+               "form_coefficients)";
+  clock.done("meromorphic");
+  WrittenSphere written;
+  written.mobius = search.centring;
+  written.mobius_applied = options.mobius;
+  written.snapped_branch_points = search.snapped_branch_points;
+  written.untangled_vertices = search.untangled_vertices;
+  finish_on_sphere(prepared, options.mobius, nullptr, out.euler, std::move(search.values),
+                   &search.branching, nullptr, written, progress, clock);
+  return written;
+}
+
+// After centring, the Moebius transformation that spreads the map most evenly in area.
+void correct_the_area(const Mesh &mesh, Parameterization &out, Branching &branching,
+                      StageClock &clock) {
+  out.area_correction = correct_area(mesh, out.sphere, branching.degree);
+  if (out.area_correction.applied) {
+    out.mobius.transformation =
+        translation_matrix(out.area_correction.translation).after(out.mobius.transformation);
+    branching = analyse_branching(mesh, out.sphere, out.euler);
+  }
+  clock.done("area_correction");
+}
+
 } // namespace
 
 Parameterization parameterize(Mesh &mesh, const ParameterizeOptions &options,
@@ -95,58 +165,13 @@ Parameterization parameterize(Mesh &mesh, const ParameterizeOptions &options,
   out.non_holomorphicity_mean = forms.non_holomorphicity_mean;
 
   progress.report(0.6, "meromorphic function");
-  WrittenSphere written;
-  if (out.genus == 0) {
-    const Genus0Result map = best_genus0_map(prepared, options.solver, options.pole_face);
-    out.pole_face = map.pole_face;
-    out.raised_weights = map.raised_weights;
-    out.method = "genus 0: harmonic map with a simple pole (strictly positive weights), inverse "
-                 "stereographic projection";
-    clock.done("meromorphic");
-    finish_on_sphere(prepared, options.mobius, nullptr, out.euler, map.values, nullptr,
-                     map.centred ? &*map.centred : nullptr, written, progress, clock);
-  } else if (out.genus == 1) {
-    out.modulus = forms.modulus;
-    out.riemann_matrix = forms.riemann_matrix;
-    const std::vector<int> origins =
-        options.origin_vertex >= 0
-            ? std::vector<int>{options.origin_vertex}
-            : genus1_origin_candidates(prepared, forms.normalized[0],
-                                       WeierstrassP(Complex(1, 0), forms.riemann_matrix(0, 0)));
-    out.method = "genus 1: Weierstrass P-function of the flat coordinate";
-    out.flat_periods = WeierstrassP(Complex(1, 0), forms.riemann_matrix(0, 0)).periods();
-    clock.done("meromorphic");
-    written = written_genus1_map(prepared, forms, origins, options.mobius, progress, clock);
-  } else {
-    out.riemann_matrix = forms.riemann_matrix;
-    out.form_pair = options.form_pair;
-    PairSearch search =
-        search_form_pairs(prepared, forms, options.form_pair, options.mobius, progress);
-    out.form_coefficients = search.coefficients;
-    out.pair_attempts = search.attempts;
-    out.method = "genus " + std::to_string(out.genus) +
-                 ": ratio (omega1 + omega2) / (omega1 - omega2), omega1 = sum a_k psi_k, "
-                 "omega2 = sum b_k psi_k of the normalized holomorphic 1-forms psi_k (a_k, b_k: "
-                 "form_coefficients)";
-    clock.done("meromorphic");
-    written.mobius = search.centring;
-    written.mobius_applied = options.mobius;
-    written.snapped_branch_points = search.snapped_branch_points;
-    written.untangled_vertices = search.untangled_vertices;
-    finish_on_sphere(prepared, options.mobius, nullptr, out.euler, std::move(search.values),
-                     &search.branching, nullptr, written, progress, clock);
-  }
+  WrittenSphere written =
+      out.genus == 0   ? written_genus0_map(prepared, options, out, progress, clock)
+      : out.genus == 1 ? written_genus1(prepared, forms, options, out, progress, clock)
+                       : written_form_ratio(prepared, forms, options, out, progress, clock);
   Branching branching;
   adopt(std::move(written), out, branching);
-  if (options.area_correct) {
-    out.area_correction = correct_area(mesh, out.sphere, branching.degree);
-    if (out.area_correction.applied) {
-      out.mobius.transformation =
-          translation_matrix(out.area_correction.translation).after(out.mobius.transformation);
-      branching = analyse_branching(mesh, out.sphere, out.euler);
-    }
-    clock.done("area_correction");
-  }
+  if (options.area_correct) correct_the_area(mesh, out, branching, clock);
   describe_written_map(unit.originals(), mesh, prepared.edges, options, branching, out, progress,
                        clock);
   progress.report(1.0, "done");

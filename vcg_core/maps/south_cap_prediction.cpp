@@ -102,21 +102,21 @@ WeightedGraph coarsened(const WeightedGraph &graph, const std::vector<int> &of, 
   return out;
 }
 
-} // namespace
-
-std::vector<char> predicted_south_cap(const PreparedMesh &prepared,
-                                      const std::vector<double> &positive_weights, int pole_face) {
+// The mesh's graph coarsened into aggregates until at most coarse_nodes are left; `node_of` says
+// each vertex's node.
+WeightedGraph coarse_graph(const PreparedMesh &prepared, const std::vector<double> &weights,
+                           std::vector<int> &node_of) {
   const Mesh &mesh = prepared.mesh;
   const int n = int(mesh.vert.size());
   WeightedGraph graph;
   graph.nodes = n;
   graph.edges = prepared.edges.vertices;
-  graph.weights = positive_weights;
+  graph.weights = weights;
   graph.position_sums.resize(size_t(n));
   graph.vertex_counts.assign(size_t(n), 1);
   for (int v = 0; v < n; ++v)
     graph.position_sums[size_t(v)] = mesh.vert[size_t(v)].cP().ToEigenVector<Eigen::Vector3d>();
-  std::vector<int> node_of(static_cast<size_t>(n));
+  node_of.resize(size_t(n));
   for (int v = 0; v < n; ++v)
     node_of[size_t(v)] = v;
   while (graph.nodes > coarse_nodes) {
@@ -127,23 +127,27 @@ std::vector<char> predicted_south_cap(const PreparedMesh &prepared,
     for (int &node : node_of)
       node = of[size_t(node)];
   }
-  // Not coarsened: predicting would cost the factorization it saves.
-  if (graph.nodes == n) return {};
+  return graph;
+}
 
-  // The pole: the nodes holding the puncture face's corners left out, their neighbours pinned.
-  std::vector<char> pinned_flag(size_t(graph.nodes), 0);
-  const std::array<int, 3> &corners = prepared.incidence.corners[size_t(pole_face)];
+// The pole on the coarse graph: 2 for the nodes holding the pole face's corners (left out), 1 for
+// their neighbours (pinned), 0 elsewhere.
+std::vector<char> pole_flags(const WeightedGraph &graph, const std::vector<int> &node_of,
+                             const std::array<int, 3> &corners) {
+  std::vector<char> flag(size_t(graph.nodes), 0);
   for (int c : corners)
-    pinned_flag[size_t(node_of[size_t(c)])] = 2;
+    flag[size_t(node_of[size_t(c)])] = 2;
   for (const std::array<int, 2> &edge : graph.edges)
     for (int k = 0; k < 2; ++k)
-      if (pinned_flag[size_t(edge[size_t(k)])] == 2 && !pinned_flag[size_t(edge[size_t(1 - k)])])
-        pinned_flag[size_t(edge[size_t(1 - k)])] = 1;
-  std::vector<int> pinned;
-  for (int node = 0; node < graph.nodes; ++node)
-    if (pinned_flag[size_t(node)]) pinned.push_back(node);
-  if (graph.nodes - int(pinned.size()) < least_free_nodes) return {};
+      if (flag[size_t(edge[size_t(k)])] == 2 && !flag[size_t(edge[size_t(1 - k)])])
+        flag[size_t(edge[size_t(1 - k)])] = 1;
+  return flag;
+}
 
+// The pinned nodes' values: 1 / w of their mean position w in the pole face's plane, about its
+// centroid.
+Eigen::MatrixXd pinned_values(const Mesh &mesh, const WeightedGraph &graph,
+                              const std::vector<char> &flag, const std::array<int, 3> &corners) {
   const Eigen::Vector3d p0 = mesh.vert[size_t(corners[0])].cP().ToEigenVector<Eigen::Vector3d>();
   const Eigen::Vector3d p1 = mesh.vert[size_t(corners[1])].cP().ToEigenVector<Eigen::Vector3d>();
   const Eigen::Vector3d p2 = mesh.vert[size_t(corners[2])].cP().ToEigenVector<Eigen::Vector3d>();
@@ -151,8 +155,8 @@ std::vector<char> predicted_south_cap(const PreparedMesh &prepared,
   const Eigen::Vector3d e1 = (p1 - p0).normalized();
   const Eigen::Vector3d e2 = (p1 - p0).cross(p2 - p0).cross(p1 - p0).normalized();
   Eigen::MatrixXd given = Eigen::MatrixXd::Zero(graph.nodes, 2);
-  for (int node : pinned) {
-    if (pinned_flag[size_t(node)] != 1) continue;
+  for (int node = 0; node < graph.nodes; ++node) {
+    if (flag[size_t(node)] != 1) continue;
     const Eigen::Vector3d d =
         graph.position_sums[size_t(node)] / graph.vertex_counts[size_t(node)] - centroid;
     const Complex w(d.dot(e1), d.dot(e2));
@@ -160,7 +164,10 @@ std::vector<char> predicted_south_cap(const PreparedMesh &prepared,
     given(node, 0) = z.real();
     given(node, 1) = z.imag();
   }
+  return given;
+}
 
+Eigen::SparseMatrix<double> graph_laplacian(const WeightedGraph &graph) {
   std::vector<Eigen::Triplet<double>> entries;
   entries.reserve(4 * graph.edges.size() + size_t(graph.nodes));
   for (size_t e = 0; e < graph.edges.size(); ++e) {
@@ -173,10 +180,33 @@ std::vector<char> predicted_south_cap(const PreparedMesh &prepared,
   }
   Eigen::SparseMatrix<double> laplacian(graph.nodes, graph.nodes);
   laplacian.setFromTriplets(entries.begin(), entries.end());
+  return laplacian;
+}
+
+} // namespace
+
+std::vector<char> predicted_south_cap(const PreparedMesh &prepared,
+                                      const std::vector<double> &positive_weights, int pole_face) {
+  const Mesh &mesh = prepared.mesh;
+  const int n = int(mesh.vert.size());
+  std::vector<int> node_of;
+  const WeightedGraph graph = coarse_graph(prepared, positive_weights, node_of);
+  // Not coarsened: predicting would cost the factorization it saves.
+  if (graph.nodes == n) return {};
+
+  // The pole: the nodes holding the pole face's corners left out, their neighbours pinned.
+  const std::array<int, 3> &corners = prepared.incidence.corners[size_t(pole_face)];
+  const std::vector<char> pinned_flag = pole_flags(graph, node_of, corners);
+  std::vector<int> pinned;
+  for (int node = 0; node < graph.nodes; ++node)
+    if (pinned_flag[size_t(node)]) pinned.push_back(node);
+  if (graph.nodes - int(pinned.size()) < least_free_nodes) return {};
+
+  const Eigen::MatrixXd given = pinned_values(mesh, graph, pinned_flag, corners);
+  const Eigen::SparseMatrix<double> laplacian = graph_laplacian(graph);
   const Eigen::MatrixXd coarse = factor_laplacian(laplacian, SolverKind::cholmod, pinned)
                                      ->solve_columns(-(laplacian * given)) +
                                  given;
-
   std::vector<PlaneValue> values(static_cast<size_t>(n));
   for (int v = 0; v < n; ++v) {
     const int node = node_of[size_t(v)];

@@ -136,6 +136,8 @@ void check_coordinates(const Mesh &mesh, Validation &out) {
   out.findings.push_back(finding);
 }
 
+void check_doubled_faces(const Mesh &mesh, Validation &out);
+
 void check_faces(const Mesh &mesh, Validation &out, bool doubled_faces_possible) {
   Finding repeated(FindingKind::repeated_vertex_in_face, true);
   Finding flat(FindingKind::zero_area_faces);
@@ -192,8 +194,11 @@ void check_faces(const Mesh &mesh, Validation &out, bool doubled_faces_possible)
     out.findings.push_back(flat);
   }
 
-  if (!doubled_faces_possible) return;
-  // Two faces on the same three vertices: a doubled face, or a flat pillow of two triangles.
+  if (doubled_faces_possible) check_doubled_faces(mesh, out);
+}
+
+// Two faces on the same three vertices: a doubled face, or a flat pillow of two triangles.
+void check_doubled_faces(const Mesh &mesh, Validation &out) {
   std::vector<std::pair<std::array<int, 3>, int>> sorted_corners;
   for (size_t f = 0; f < mesh.face.size(); ++f) {
     if (repeats_a_vertex(mesh.face[f])) continue;

@@ -53,18 +53,13 @@ struct Located {
   double score = -1e300; // the smallest barycentric coordinate: the deeper inside, the better
 };
 
-} // namespace
-
-LiftedSphere lift_flat_torus(const MappedSurface &surface, const std::vector<Complex> &flat,
-                             const std::array<Complex, 2> &periods,
-                             const std::vector<int> &face_layer,
-                             const std::vector<int> &local_degree, long long samples) {
-  const Complex w1 = periods[0];
-  const FlatGrid grid(periods[1] / w1, samples);
-  std::vector<Located> located(size_t(grid.n) * size_t(grid.m));
-
-  // Every face's flat triangle, unwrapped from its first corner, holds the grid points inside it.
-  std::vector<int> face_at_vertex(surface.positions.size(), -1);
+// Every face's flat triangle, unwrapped from its first corner, holds the grid points inside it
+// (`located`: per grid point, the face that holds it deepest); `face_at_vertex` gets a face of
+// each vertex.
+void locate_grid_points(const MappedSurface &surface, const std::vector<Complex> &flat, Complex w1,
+                        const FlatGrid &grid, std::vector<Located> &located,
+                        std::vector<int> &face_at_vertex) {
+  face_at_vertex.assign(surface.positions.size(), -1);
   for (size_t f = 0; f < surface.faces.size(); ++f) {
     const auto &corners = surface.faces[f];
     std::array<Eigen::Vector2d, 3> at;
@@ -91,8 +86,14 @@ LiftedSphere lift_flat_torus(const MappedSurface &surface, const std::vector<Com
         slot.score = score;
       }
   }
+}
 
-  // Each branch vertex takes the grid point nearest it.
+// Each branch vertex takes the grid point nearest it; returns the grid points' local degrees.
+std::vector<int> branch_vertices_on_grid(const MappedSurface &surface,
+                                         const std::vector<Complex> &flat, Complex w1,
+                                         const FlatGrid &grid, const std::vector<int> &local_degree,
+                                         const std::vector<int> &face_at_vertex,
+                                         std::vector<Located> &located) {
   std::vector<int> grid_degree(located.size(), 0);
   for (size_t v = 0; v < local_degree.size(); ++v) {
     if (local_degree[v] < 2 || face_at_vertex[v] < 0) continue;
@@ -107,25 +108,11 @@ LiftedSphere lift_flat_torus(const MappedSurface &surface, const std::vector<Com
     located[size_t(g)].score = 1;
     grid_degree[size_t(g)] = local_degree[v];
   }
+  return grid_degree;
+}
 
-  LiftedSphere out;
-  std::vector<int> vertex_of(located.size(), -1);
-  for (size_t g = 0; g < located.size(); ++g) {
-    const SurfacePoint &point = located[g].point;
-    if (point.face < 0) continue;
-    vertex_of[g] = int(out.positions.size());
-    const auto &corners = surface.faces[point.face];
-    Eigen::Vector3d value = Eigen::Vector3d::Zero();
-    for (int k = 0; k < 3; ++k)
-      value += point.weights[k] * surface.image[corners[k]];
-    out.positions.push_back(position_of(surface, point));
-    out.sphere.push_back(value.normalized());
-    out.layer.push_back(face_layer.empty() ? 0 : face_layer[point.face]);
-    out.local_degree.push_back(grid_degree[g]);
-    out.on_boundary.push_back(0);
-    out.surface_point.push_back(point);
-  }
-  // Each grid cell in two triangles across its shorter diagonal.
+// Each grid cell in two triangles across its shorter diagonal.
+void grid_faces(const FlatGrid &grid, const std::vector<int> &vertex_of, LiftedSphere &out) {
   const bool diagonal_a_to_c = std::abs(grid.c - grid.a) <= std::abs(grid.c + grid.a);
   for (int j = 0; j < grid.m; ++j)
     for (int i = 0; i < grid.n; ++i) {
@@ -144,6 +131,39 @@ LiftedSphere lift_flat_torus(const MappedSurface &surface, const std::vector<Com
         out.faces.push_back({vertex_of[face[0]], vertex_of[face[1]], vertex_of[face[2]]});
       }
     }
+}
+
+} // namespace
+
+LiftedSphere lift_flat_torus(const MappedSurface &surface, const std::vector<Complex> &flat,
+                             const std::array<Complex, 2> &periods,
+                             const std::vector<int> &face_layer,
+                             const std::vector<int> &local_degree, long long samples) {
+  const Complex w1 = periods[0];
+  const FlatGrid grid(periods[1] / w1, samples);
+  std::vector<Located> located(size_t(grid.n) * size_t(grid.m));
+  std::vector<int> face_at_vertex;
+  locate_grid_points(surface, flat, w1, grid, located, face_at_vertex);
+  const std::vector<int> grid_degree =
+      branch_vertices_on_grid(surface, flat, w1, grid, local_degree, face_at_vertex, located);
+  LiftedSphere out;
+  std::vector<int> vertex_of(located.size(), -1);
+  for (size_t g = 0; g < located.size(); ++g) {
+    const SurfacePoint &point = located[g].point;
+    if (point.face < 0) continue;
+    vertex_of[g] = int(out.positions.size());
+    const auto &corners = surface.faces[point.face];
+    Eigen::Vector3d value = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k)
+      value += point.weights[k] * surface.image[corners[k]];
+    out.positions.push_back(position_of(surface, point));
+    out.sphere.push_back(value.normalized());
+    out.layer.push_back(face_layer.empty() ? 0 : face_layer[point.face]);
+    out.local_degree.push_back(grid_degree[g]);
+    out.on_boundary.push_back(0);
+    out.surface_point.push_back(point);
+  }
+  grid_faces(grid, vertex_of, out);
   out.folded_lifts = count_folded_lifts(surface, out);
   return out;
 }

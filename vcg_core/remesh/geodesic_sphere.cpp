@@ -89,6 +89,104 @@ bool holds(const GeodesicSphere &sphere, const std::array<int, 3> &face, const E
   return sphere.vertices[face[0]].dot(p) > 0;
 }
 
+using SphereSide = std::pair<int, int>;
+
+SphereSide sphere_side(int a, int b) {
+  return std::make_pair(std::min(a, b), std::max(a, b));
+}
+
+double longest_side(const GeodesicSphere &sphere, const std::array<int, 3> &face) {
+  double longest = 0;
+  for (int k = 0; k < 3; ++k)
+    longest =
+        std::max(longest, (sphere.vertices[face[k]] - sphere.vertices[face[(k + 1) % 3]]).norm());
+  return longest;
+}
+
+// The points to refine around, each with the side length to refine down to: the branch values
+// closer to another than an edge of the sphere and than 0.05 (a third of their separation), and
+// the points of `refine_at` (an eighth of the longest side).
+std::vector<std::pair<Eigen::Vector3d, double>>
+points_to_refine_around(const GeodesicSphere &sphere, const std::vector<Eigen::Vector3d> &values,
+                        const std::vector<Eigen::Vector3d> &refine_at) {
+  double edge = 0;
+  for (const auto &face : sphere.faces)
+    edge = std::max(edge, (sphere.vertices[face[0]] - sphere.vertices[face[1]]).norm());
+  std::vector<std::pair<Eigen::Vector3d, double>> close;
+  for (size_t a = 0; a < values.size(); ++a) {
+    double separation = 1e300;
+    for (size_t b = 0; b < values.size(); ++b)
+      if (b != a) separation = std::min(separation, (values[a] - values[b]).norm());
+    if (separation < std::min(edge, 0.05))
+      close.push_back({values[a], std::max(separation / 3, 1e-9)});
+  }
+  for (const Eigen::Vector3d &point : refine_at)
+    close.push_back({point.normalized(), edge / 8});
+  return close;
+}
+
+// The sides to split: those of the faces marked, and, closing the marking, those of every face
+// with two or three sides split (which is split in four too). Each side's midpoint is -1.
+std::map<SphereSide, int> sides_to_split(const GeodesicSphere &sphere, std::vector<char> &split) {
+  std::map<SphereSide, int> middle_of;
+  for (size_t f = 0; f < sphere.faces.size(); ++f)
+    if (split[f])
+      for (int k = 0; k < 3; ++k)
+        middle_of.emplace(sphere_side(sphere.faces[f][k], sphere.faces[f][(k + 1) % 3]), -1);
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (size_t f = 0; f < sphere.faces.size(); ++f) {
+      const auto &face = sphere.faces[f];
+      if (split[f]) continue;
+      int sides = 0;
+      for (int k = 0; k < 3; ++k)
+        sides += middle_of.count(sphere_side(face[k], face[(k + 1) % 3]));
+      if (sides < 2) continue;
+      split[f] = grew = true;
+      for (int k = 0; k < 3; ++k)
+        middle_of.emplace(sphere_side(face[k], face[(k + 1) % 3]), -1);
+    }
+  }
+  return middle_of;
+}
+
+// The sides split at their midpoints (pushed onto the sphere): a face with three split is split
+// 1-to-4, one with one is halved across it; `touched` marks the new vertices and the corners of
+// the faces that changed.
+void split_sides(GeodesicSphere &sphere, std::map<SphereSide, int> &middle_of,
+                 std::vector<char> &touched) {
+  for (auto &[ends, middle] : middle_of) {
+    middle = int(sphere.vertices.size());
+    sphere.vertices.push_back(
+        (sphere.vertices[ends.first] + sphere.vertices[ends.second]).normalized());
+    touched.push_back(1);
+  }
+  const size_t count = sphere.faces.size();
+  for (size_t f = 0; f < count; ++f) {
+    const std::array<int, 3> face = sphere.faces[f];
+    std::array<int, 3> m{};
+    int sides = 0, which = 0;
+    for (int k = 0; k < 3; ++k) {
+      const auto found = middle_of.find(sphere_side(face[k], face[(k + 1) % 3]));
+      m[k] = found == middle_of.end() ? -1 : found->second;
+      if (m[k] >= 0) ++sides, which = k;
+    }
+    if (sides == 3) {
+      sphere.faces[f] = {face[0], m[0], m[2]};
+      sphere.faces.push_back({m[0], face[1], m[1]});
+      sphere.faces.push_back({m[2], m[1], face[2]});
+      sphere.faces.push_back({m[0], m[1], m[2]});
+    } else if (sides == 1) { // halved across the split side
+      const int a = face[which], b = face[(which + 1) % 3], c = face[(which + 2) % 3];
+      sphere.faces[f] = {a, m[which], c};
+      sphere.faces.push_back({m[which], b, c});
+    }
+    if (sides > 0)
+      for (int corner : face)
+        touched[size_t(corner)] = 1;
+  }
+}
+
 // Sphere faces refined around branch values that lie close to another one (closer than an edge
 // of the sphere and than 0.05): each round, a face whose centre lies within 0.6 of its longest side
 // from such a value (the faces at the value) is split 1-to-4 (the midpoints pushed onto the
@@ -102,27 +200,8 @@ std::vector<char> refine_around_close_values(GeodesicSphere &sphere,
                                              const std::vector<Eigen::Vector3d> &values,
                                              const std::vector<Eigen::Vector3d> &refine_at) {
   std::vector<char> touched(sphere.vertices.size(), 0);
-  double edge = 0;
-  for (const auto &face : sphere.faces)
-    edge = std::max(edge, (sphere.vertices[face[0]] - sphere.vertices[face[1]]).norm());
-  std::vector<std::pair<Eigen::Vector3d, double>> close; // value, a third of its separation
-  for (size_t a = 0; a < values.size(); ++a) {
-    double separation = 1e300;
-    for (size_t b = 0; b < values.size(); ++b)
-      if (b != a) separation = std::min(separation, (values[a] - values[b]).norm());
-    if (separation < std::min(edge, 0.05))
-      close.push_back({values[a], std::max(separation / 3, 1e-9)});
-  }
-  for (const Eigen::Vector3d &point : refine_at)
-    close.push_back({point.normalized(), edge / 8});
+  const auto close = points_to_refine_around(sphere, values, refine_at);
   if (close.empty()) return touched;
-  auto longest_side = [&](const std::array<int, 3> &face) {
-    double longest = 0;
-    for (int k = 0; k < 3; ++k)
-      longest =
-          std::max(longest, (sphere.vertices[face[k]] - sphere.vertices[face[(k + 1) % 3]]).norm());
-    return longest;
-  };
   for (int round = 0; round < 40; ++round) {
     std::vector<char> split(sphere.faces.size(), 0);
     bool any = false;
@@ -130,62 +209,13 @@ std::vector<char> refine_around_close_values(GeodesicSphere &sphere,
       const auto &face = sphere.faces[f];
       const Eigen::Vector3d middle =
           (sphere.vertices[face[0]] + sphere.vertices[face[1]] + sphere.vertices[face[2]]) / 3;
-      const double longest = longest_side(face);
+      const double longest = longest_side(sphere, face);
       for (const auto &[value, third] : close)
         if (longest > third && (middle - value).norm() < 0.6 * longest) split[f] = any = true;
     }
     if (!any) break;
-    // Closure: a face with two or three sides split is split in four too.
-    std::map<std::pair<int, int>, int> middle_of;
-    auto side = [](int a, int b) { return std::make_pair(std::min(a, b), std::max(a, b)); };
-    for (size_t f = 0; f < sphere.faces.size(); ++f)
-      if (split[f])
-        for (int k = 0; k < 3; ++k)
-          middle_of.emplace(side(sphere.faces[f][k], sphere.faces[f][(k + 1) % 3]), -1);
-    for (bool grew = true; grew;) {
-      grew = false;
-      for (size_t f = 0; f < sphere.faces.size(); ++f) {
-        const auto &face = sphere.faces[f];
-        if (split[f]) continue;
-        int sides = 0;
-        for (int k = 0; k < 3; ++k)
-          sides += middle_of.count(side(face[k], face[(k + 1) % 3]));
-        if (sides < 2) continue;
-        split[f] = grew = true;
-        for (int k = 0; k < 3; ++k)
-          middle_of.emplace(side(face[k], face[(k + 1) % 3]), -1);
-      }
-    }
-    for (auto &[ends, middle] : middle_of) {
-      middle = int(sphere.vertices.size());
-      sphere.vertices.push_back(
-          (sphere.vertices[ends.first] + sphere.vertices[ends.second]).normalized());
-      touched.push_back(1);
-    }
-    const size_t count = sphere.faces.size();
-    for (size_t f = 0; f < count; ++f) {
-      const std::array<int, 3> face = sphere.faces[f];
-      std::array<int, 3> m{};
-      int sides = 0, which = 0;
-      for (int k = 0; k < 3; ++k) {
-        const auto found = middle_of.find(side(face[k], face[(k + 1) % 3]));
-        m[k] = found == middle_of.end() ? -1 : found->second;
-        if (m[k] >= 0) ++sides, which = k;
-      }
-      if (sides == 3) {
-        sphere.faces[f] = {face[0], m[0], m[2]};
-        sphere.faces.push_back({m[0], face[1], m[1]});
-        sphere.faces.push_back({m[2], m[1], face[2]});
-        sphere.faces.push_back({m[0], m[1], m[2]});
-      } else if (sides == 1) { // halved across the split side
-        const int a = face[which], b = face[(which + 1) % 3], c = face[(which + 2) % 3];
-        sphere.faces[f] = {a, m[which], c};
-        sphere.faces.push_back({m[which], b, c});
-      }
-      if (sides > 0)
-        for (int corner : face)
-          touched[size_t(corner)] = 1;
-    }
+    std::map<SphereSide, int> middle_of = sides_to_split(sphere, split);
+    split_sides(sphere, middle_of, touched);
   }
   return touched;
 }

@@ -320,103 +320,52 @@ int drop_folded_boundary_faces(const MappedSurface &surface, LiftedSphere &lifte
   return dropped;
 }
 
-LiftedSphere lift_sphere(const MappedSurface &surface, const std::vector<int> &face_layer,
-                         const std::vector<int> &local_degree, int degree,
-                         const GeodesicSphere &sphere, const Progress &progress) {
-  EdgeLifting lifting(surface, sphere, degree);
-  lifting.run(progress.range(0.0, 0.9));
+namespace {
 
-  LiftedSphere out;
-  std::vector<int> first(sphere.vertices.size() + 1, 0);
-  for (size_t q = 0; q < sphere.vertices.size(); ++q) {
-    first[q + 1] = first[q] + int(lifting.lifts(int(q)).size());
-    for (const Lift &lift : lifting.lifts(int(q))) {
-      out.positions.push_back(lift.position);
-      out.sphere.push_back(sphere.vertices[q]);
-      out.layer.push_back(face_layer.empty() ? 0 : face_layer[lift.point.face]);
-      out.local_degree.push_back(local_degree_at(surface, lift.point, local_degree));
-      out.surface_point.push_back(lift.point);
-      out.on_boundary.push_back(0);
+// The lifted sphere made from the lifts of the sphere's vertices and edges: its vertices (every
+// lift of every sphere vertex, then the stops where lifts leave the surface, as they are used)
+// and the copies of each sphere face.
+class LiftedFaces {
+public:
+  LiftedFaces(const MappedSurface &surface, const std::vector<int> &face_layer,
+              const std::vector<int> &local_degree, int degree, const GeodesicSphere &sphere,
+              const EdgeLifting &lifting, LiftedSphere &out)
+      : surface_(surface), face_layer_(face_layer), degree_(degree), sphere_(sphere),
+        lifting_(lifting), out_(out) {
+    first_.assign(sphere.vertices.size() + 1, 0);
+    for (size_t q = 0; q < sphere.vertices.size(); ++q) {
+      first_[q + 1] = first_[q] + int(lifting.lifts(int(q)).size());
+      for (const Lift &lift : lifting.lifts(int(q)))
+        add_vertex(lift.position, sphere.vertices[q], lift.point,
+                   local_degree_at(surface, lift.point, local_degree), 0);
     }
+    // A stop very near the lift its edge starts from would make a sliver: the nearest such stop
+    // of each lift is that lift itself (the boundary passes a few hundredths of a side from it;
+    // faces made degenerate go).
+    stop_vertex_.assign(lifting.stops().size(), -1);
+    std::vector<int> nearest_stop(out.positions.size(), -1);
+    for (size_t s = 0; s < lifting.stops().size(); ++s) {
+      const Stop &stop = lifting.stops()[s];
+      int &nearest = nearest_stop[size_t(first_[stop.from] + stop.from_lift)];
+      if (stop.t < 0.15 && (nearest < 0 || stop.t < lifting.stops()[size_t(nearest)].t))
+        nearest = int(s);
+    }
+    for (size_t v = 0; v < nearest_stop.size(); ++v)
+      if (nearest_stop[v] >= 0) stop_vertex_[size_t(nearest_stop[v])] = int(v);
   }
-  progress.report(0.9, "joining the lifted faces");
-  // A stop very near the lift its edge starts from would make a sliver: the nearest such stop of
-  // each lift is that lift itself (the boundary passes a few hundredths of a side from it; faces
-  // made degenerate go).
-  std::vector<int> stop_vertex(lifting.stops().size(), -1);
-  std::vector<int> nearest_stop(out.positions.size(), -1);
-  for (size_t s = 0; s < lifting.stops().size(); ++s) {
-    const Stop &stop = lifting.stops()[s];
-    int &nearest = nearest_stop[size_t(first[stop.from] + stop.from_lift)];
-    if (stop.t < 0.15 && (nearest < 0 || stop.t < lifting.stops()[size_t(nearest)].t))
-      nearest = int(s);
-  }
-  for (size_t v = 0; v < nearest_stop.size(); ++v)
-    if (nearest_stop[v] >= 0) stop_vertex[size_t(nearest_stop[v])] = int(v);
-  auto stop_at = [&](int stop) { // the lifted vertex of a boundary stop, added when first used
-    if (stop_vertex[size_t(stop)] < 0) {
-      const Stop &where = lifting.stops()[size_t(stop)];
-      stop_vertex[size_t(stop)] = int(out.positions.size());
-      out.positions.push_back(where.lift.position);
-      out.sphere.push_back(where.value);
-      out.layer.push_back(face_layer.empty() ? 0 : face_layer[where.lift.point.face]);
-      out.local_degree.push_back(0);
-      out.surface_point.push_back(where.lift.point);
-      out.on_boundary.push_back(1);
-    }
-    return stop_vertex[size_t(stop)];
-  };
-  auto add_cut_face = [&](const std::array<int, 3> &corners) { // a stop merged into a corner
-    if (corners[0] != corners[1] && corners[1] != corners[2] && corners[2] != corners[0])
-      out.faces.push_back(corners);
-  };
-  // One copy of a face: from lift i of corner x0 (no branch value) along its sides to x1 and x2
-  // (counter-clockwise); which lifts of x1 and x2 it reached go into `reached_lifts` (-1: none).
-  auto lift_copy = [&](int x0, int x1, int x2, int i, std::array<int, 2> &reached_lifts) {
-    const int j = lifting.reached(x0, x1, i), k = lifting.reached(x0, x2, i);
-    reached_lifts = {j, k};
-    const int l0 = first[x0] + i;
-    if (j >= 0 && k >= 0) {
-      if (sphere.branch_value[x1] < 0 && lifting.reached(x1, x2, j) != k) {
-        ++out.unclosed_faces;
-        out.unclosed_at.push_back(
-            (sphere.vertices[x0] + sphere.vertices[x1] + sphere.vertices[x2]).normalized());
-        return true;
-      }
-      out.faces.push_back({l0, first[x1] + j, first[x2] + k});
-      return true;
-    }
-    // The lift runs off a hole: the face is cut where its sides' lifts leave the surface.
-    const int s01 = j < 0 ? lifting.stop(x0, x1, i) : -1,
-              s02 = k < 0 ? lifting.stop(x0, x2, i) : -1;
-    if ((j < 0 && s01 < 0) || (k < 0 && s02 < 0)) return false;
-    if (j < 0 && k < 0) {
-      add_cut_face({l0, stop_at(s01), stop_at(s02)});
-    } else if (j >= 0) { // x1 lifted, x2 not: cut along x1 -> x2 too
-      const int s12 = sphere.branch_value[x1] < 0 ? lifting.stop(x1, x2, j) : -1;
-      if (s12 < 0) return false;
-      add_cut_face({l0, first[x1] + j, stop_at(s12)});
-      add_cut_face({l0, stop_at(s12), stop_at(s02)});
-    } else { // x2 lifted, x1 not: cut along x2 -> x1 too
-      const int s21 = sphere.branch_value[x2] < 0 ? lifting.stop(x2, x1, k) : -1;
-      if (s21 < 0) return false;
-      add_cut_face({l0, stop_at(s01), stop_at(s21)});
-      add_cut_face({l0, stop_at(s21), first[x2] + k});
-    }
-    return true;
-  };
-  for (const auto &face : sphere.faces) {
-    // Each corner that carries no branch value starts the copies its lifts are in and no earlier
-    // corner's lift reached (a corner in a hole's gap in one sheet has fewer lifts).
+
+  // Each corner that carries no branch value starts the copies its lifts are in and no earlier
+  // corner's lift reached (a corner in a hole's gap in one sheet has fewer lifts).
+  void lift_face(const std::array<int, 3> &face) {
     std::array<std::vector<char>, 3> covered;
     for (int m = 0; m < 3; ++m)
-      covered[size_t(m)].assign(lifting.lifts(face[size_t(m)]).size(), 0);
+      covered[size_t(m)].assign(lifting_.lifts(face[size_t(m)]).size(), 0);
     int copies = 0;
     for (int m = 0; m < 3; ++m) {
       const int x0 = face[size_t(m)], x1 = face[size_t((m + 1) % 3)],
                 x2 = face[size_t((m + 2) % 3)];
-      if (sphere.branch_value[x0] >= 0) continue;
-      const int lifts = std::min<int>(int(lifting.lifts(x0).size()), degree);
+      if (sphere_.branch_value[x0] >= 0) continue;
+      const int lifts = std::min<int>(int(lifting_.lifts(x0).size()), degree_);
       for (int i = 0; i < lifts; ++i) {
         if (covered[size_t(m)][size_t(i)]) continue;
         std::array<int, 2> reached_lifts{};
@@ -430,8 +379,90 @@ LiftedSphere lift_sphere(const MappedSurface &surface, const std::vector<int> &f
         }
       }
     }
-    out.unlifted_faces += std::max(0, degree - copies);
+    out_.unlifted_faces += std::max(0, degree_ - copies);
   }
+
+private:
+  void add_vertex(const Eigen::Vector3d &position, const Eigen::Vector3d &value,
+                  const SurfacePoint &point, int local_degree, char on_boundary) {
+    out_.positions.push_back(position);
+    out_.sphere.push_back(value);
+    out_.layer.push_back(face_layer_.empty() ? 0 : face_layer_[point.face]);
+    out_.local_degree.push_back(local_degree);
+    out_.surface_point.push_back(point);
+    out_.on_boundary.push_back(on_boundary);
+  }
+  // The lifted vertex of a boundary stop, added when first used.
+  int stop_at(int stop) {
+    if (stop_vertex_[size_t(stop)] < 0) {
+      const Stop &where = lifting_.stops()[size_t(stop)];
+      stop_vertex_[size_t(stop)] = int(out_.positions.size());
+      add_vertex(where.lift.position, where.value, where.lift.point, 0, 1);
+    }
+    return stop_vertex_[size_t(stop)];
+  }
+  void add_cut_face(const std::array<int, 3> &corners) { // a stop merged into a corner
+    if (corners[0] != corners[1] && corners[1] != corners[2] && corners[2] != corners[0])
+      out_.faces.push_back(corners);
+  }
+  // One copy of a face: from lift i of corner x0 (no branch value) along its sides to x1 and x2
+  // (counter-clockwise); which lifts of x1 and x2 it reached go into `reached_lifts` (-1: none).
+  bool lift_copy(int x0, int x1, int x2, int i, std::array<int, 2> &reached_lifts) {
+    const int j = lifting_.reached(x0, x1, i), k = lifting_.reached(x0, x2, i);
+    reached_lifts = {j, k};
+    const int l0 = first_[x0] + i;
+    if (j >= 0 && k >= 0) {
+      if (sphere_.branch_value[x1] < 0 && lifting_.reached(x1, x2, j) != k) {
+        ++out_.unclosed_faces;
+        out_.unclosed_at.push_back(
+            (sphere_.vertices[x0] + sphere_.vertices[x1] + sphere_.vertices[x2]).normalized());
+        return true;
+      }
+      out_.faces.push_back({l0, first_[x1] + j, first_[x2] + k});
+      return true;
+    }
+    // The lift runs off a hole: the face is cut where its sides' lifts leave the surface.
+    const int s01 = j < 0 ? lifting_.stop(x0, x1, i) : -1,
+              s02 = k < 0 ? lifting_.stop(x0, x2, i) : -1;
+    if ((j < 0 && s01 < 0) || (k < 0 && s02 < 0)) return false;
+    if (j < 0 && k < 0) {
+      add_cut_face({l0, stop_at(s01), stop_at(s02)});
+    } else if (j >= 0) { // x1 lifted, x2 not: cut along x1 -> x2 too
+      const int s12 = sphere_.branch_value[x1] < 0 ? lifting_.stop(x1, x2, j) : -1;
+      if (s12 < 0) return false;
+      add_cut_face({l0, first_[x1] + j, stop_at(s12)});
+      add_cut_face({l0, stop_at(s12), stop_at(s02)});
+    } else { // x2 lifted, x1 not: cut along x2 -> x1 too
+      const int s21 = sphere_.branch_value[x2] < 0 ? lifting_.stop(x2, x1, k) : -1;
+      if (s21 < 0) return false;
+      add_cut_face({l0, stop_at(s01), stop_at(s21)});
+      add_cut_face({l0, stop_at(s21), first_[x2] + k});
+    }
+    return true;
+  }
+
+  const MappedSurface &surface_;
+  const std::vector<int> &face_layer_;
+  const int degree_;
+  const GeodesicSphere &sphere_;
+  const EdgeLifting &lifting_;
+  LiftedSphere &out_;
+  std::vector<int> first_;       // per sphere vertex, its first lift's lifted vertex
+  std::vector<int> stop_vertex_; // per stop, its lifted vertex (-1: not yet made)
+};
+
+} // namespace
+
+LiftedSphere lift_sphere(const MappedSurface &surface, const std::vector<int> &face_layer,
+                         const std::vector<int> &local_degree, int degree,
+                         const GeodesicSphere &sphere, const Progress &progress) {
+  EdgeLifting lifting(surface, sphere, degree);
+  lifting.run(progress.range(0.0, 0.9));
+  LiftedSphere out;
+  LiftedFaces faces(surface, face_layer, local_degree, degree, sphere, lifting, out);
+  progress.report(0.9, "joining the lifted faces");
+  for (const auto &face : sphere.faces)
+    faces.lift_face(face);
   out.folded_lifts = count_folded_lifts(surface, out);
   join_near_boundary_vertices(surface, out);
   progress.report(1.0, "lifted");

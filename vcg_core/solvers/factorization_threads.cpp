@@ -8,17 +8,14 @@ namespace meromorph {
 
 FactorizationThreads::FactorizationThreads() {
 #if defined(_OPENMP)
-  dynamic_before_ = omp_get_dynamic();
-  threads_before_ = omp_get_max_threads();
-  omp_set_dynamic(1);
-  omp_set_num_threads(1);
+  levels_before_ = omp_get_max_active_levels();
+  omp_set_max_active_levels(0);
 #endif
 }
 
 FactorizationThreads::~FactorizationThreads() {
 #if defined(_OPENMP)
-  omp_set_num_threads(threads_before_);
-  omp_set_dynamic(dynamic_before_);
+  omp_set_max_active_levels(levels_before_);
 #endif
 }
 

@@ -112,52 +112,51 @@ struct CutEdges {
   std::vector<char> cut;      // those, and the edges of the faces set apart
 };
 
-CutEdges cut_edges(const Mesh &mesh, const MeshEdges &edges, const std::vector<Vector> &sphere,
-                   const std::vector<int> &branch_vertices, const CutTree &tree) {
-  const int face_count = int(mesh.face.size());
-  auto corner = [&](int f, int k) -> const Vector & {
-    return sphere[index_of(mesh, mesh.face[f].cV(k))];
-  };
-  const std::vector<Vector> &nodes = tree.nodes;
-  const std::vector<std::array<int, 2>> &arcs = tree.arcs;
-  // Two faces lie on the same sheet where the image of their shared edge crosses no cut. Faces at
-  // a branch vertex are set apart (cuts start at their corner, and a branch point doubles their
-  // angles there: the image of the opposite side can span half a turn, too much for a minor arc),
-  // faces whose image holds a node of the tree (a branch value: where flat faces next to a branch
-  // vertex leave a gap, a cut starts inside another face; or a star's centre), and folded faces
-  // (they have no side). Faces whose image meets a cut are counted (`cut_faces`).
-  std::vector<char> at_branch_vertex(mesh.vert.size(), 0);
-  for (int v : branch_vertices)
-    at_branch_vertex[v] = 1;
-  // A vertex whose image lies on a cut (symmetric meshes map whole rows of vertices onto the arcs
-  // between branch values) leaves it to rounding which side its edges are on: those are cut.
-  std::vector<Vector> arc_normal;
-  std::vector<double> arc_length;
-  for (const auto &arc : arcs) {
-    arc_normal.push_back(nodes[size_t(arc[0])].cross(nodes[size_t(arc[1])]));
-    arc_length.push_back(arc_normal.back().norm());
+// The tree's arcs as the normals of their great circles and their lengths (the normals' norms).
+struct ArcPlanes {
+  std::vector<Vector> normal;
+  std::vector<double> length;
+};
+
+ArcPlanes arc_planes(const CutTree &tree) {
+  ArcPlanes planes;
+  for (const auto &arc : tree.arcs) {
+    planes.normal.push_back(tree.nodes[size_t(arc[0])].cross(tree.nodes[size_t(arc[1])]));
+    planes.length.push_back(planes.normal.back().norm());
   }
-  // Each vertex and each short edge is tested against the arcs near it only (arc_grid.h), a
-  // longer edge against every arc.
-  const ArcGrid near_arcs(nodes, arcs, short_edge_image);
-  std::vector<int> every_arc(arcs.size());
-  std::iota(every_arc.begin(), every_arc.end(), 0);
-  std::vector<char> on_cut(mesh.vert.size(), 0);
-  parallel_for(mesh.vert.size(), [&](size_t v) {
+  return planes;
+}
+
+// A vertex whose image lies on a cut (symmetric meshes map whole rows of vertices onto the arcs
+// between branch values) leaves it to rounding which side its edges are on: those are cut.
+std::vector<char> vertices_on_cuts(const std::vector<Vector> &sphere, const CutTree &tree,
+                                   const ArcPlanes &planes, const ArcGrid &near_arcs) {
+  std::vector<char> on_cut(sphere.size(), 0);
+  parallel_for(sphere.size(), [&](size_t v) {
     for (const int arc : near_arcs.near(sphere[v])) {
       const size_t a = size_t(arc);
-      const Vector &p = nodes[size_t(arcs[a][0])], &q = nodes[size_t(arcs[a][1])];
-      const double length = arc_length[a];
-      if (length > 0 && std::abs(sphere[v].dot(arc_normal[a])) < 1e-12 * length &&
+      const Vector &p = tree.nodes[size_t(tree.arcs[a][0])],
+                   &q = tree.nodes[size_t(tree.arcs[a][1])];
+      const double length = planes.length[a];
+      if (length > 0 && std::abs(sphere[v].dot(planes.normal[a])) < 1e-12 * length &&
           on_arc(sphere[v], p, q))
         on_cut[v] = 1;
     }
   });
-  // `crossing`: the edge's image crosses a cut, or may (it starts on one); `edge_cut` adds the
-  // edges of the faces set apart.
-  CutEdges out;
-  std::vector<char> &crossing = out.crossing;
-  crossing.assign(edges.vertices.size(), 0);
+  return on_cut;
+}
+
+// Per edge: its image crosses a cut, or may (it starts on one, or at a branch vertex). Each
+// short edge is tested against the arcs near it only (arc_grid.h), a longer edge against every
+// arc.
+std::vector<char> edges_crossing_cuts(const MeshEdges &edges, const std::vector<Vector> &sphere,
+                                      const CutTree &tree, const ArcPlanes &planes,
+                                      const ArcGrid &near_arcs,
+                                      const std::vector<char> &at_branch_vertex,
+                                      const std::vector<char> &on_cut) {
+  std::vector<int> every_arc(tree.arcs.size());
+  std::iota(every_arc.begin(), every_arc.end(), 0);
+  std::vector<char> crossing(edges.vertices.size(), 0);
   parallel_for(edges.vertices.size(), [&](size_t e) {
     const int i = edges.vertices[e][0], j = edges.vertices[e][1];
     crossing[e] = at_branch_vertex[i] || at_branch_vertex[j] || on_cut[i] || on_cut[j];
@@ -166,24 +165,26 @@ CutEdges cut_edges(const Mesh &mesh, const MeshEdges &edges, const std::vector<V
     for (size_t k = 0; k < candidates.size() && !crossing[e]; ++k) {
       const size_t a = size_t(candidates[k]);
       // Both ends clearly on one side of the arc's great circle: no crossing (far above rounding).
-      const double side_i = sphere[i].dot(arc_normal[a]), side_j = sphere[j].dot(arc_normal[a]);
-      const double margin = 1e-9 * arc_length[a];
+      const double side_i = sphere[i].dot(planes.normal[a]),
+                   side_j = sphere[j].dot(planes.normal[a]);
+      const double margin = 1e-9 * planes.length[a];
       if ((side_i > margin && side_j > margin) || (side_i < -margin && side_j < -margin)) continue;
-      crossing[e] =
-          arcs_cross(sphere[i], sphere[j], nodes[size_t(arcs[a][0])], nodes[size_t(arcs[a][1])]);
+      crossing[e] = arcs_cross(sphere[i], sphere[j], tree.nodes[size_t(tree.arcs[a][0])],
+                               tree.nodes[size_t(tree.arcs[a][1])]);
     }
   });
-  // Edges whose image is too short for the crossing test to be sure of its side (where long thin
-  // parts crowd, cross products of such nearby points are mostly rounding) are cut too, so that a
-  // sheet cannot leak into another through them.
-  out.cut = crossing;
-  std::vector<char> &edge_cut = out.cut;
-  parallel_for(edges.vertices.size(), [&](size_t e) {
-    if ((sphere[size_t(edges.vertices[e][0])] - sphere[size_t(edges.vertices[e][1])]).norm() <
-        unsure_edge_length)
-      edge_cut[e] = 1;
-  });
-  const std::vector<int> set_apart = parallel_select(size_t(face_count), [&](size_t f) {
+  return crossing;
+}
+
+// Faces set apart: those at a branch vertex, those whose image holds a node of the tree, and
+// folded ones (see cut_edges).
+std::vector<int> faces_set_apart(const Mesh &mesh, const std::vector<Vector> &sphere,
+                                 const std::vector<Vector> &nodes,
+                                 const std::vector<char> &at_branch_vertex) {
+  auto corner = [&](int f, int k) -> const Vector & {
+    return sphere[index_of(mesh, mesh.face[f].cV(k))];
+  };
+  return parallel_select(mesh.face.size(), [&](size_t f) {
     for (int k = 0; k < 3; ++k)
       if (at_branch_vertex[index_of(mesh, mesh.face[f].cV(k))]) return true;
     const Vector &a = corner(int(f), 0), &b = corner(int(f), 1), &c = corner(int(f), 2);
@@ -195,7 +196,36 @@ CutEdges cut_edges(const Mesh &mesh, const MeshEdges &edges, const std::vector<V
       if ((node - a).squaredNorm() <= reach && inside(node, a, b, c)) return true;
     return folded_image(a, b, c);
   });
-  for (int f : set_apart)
+}
+
+// Two faces lie on the same sheet where the image of their shared edge crosses no cut. Faces at
+// a branch vertex are set apart (cuts start at their corner, and a branch point doubles their
+// angles there: the image of the opposite side can span half a turn, too much for a minor arc),
+// faces whose image holds a node of the tree (a branch value: where flat faces next to a branch
+// vertex leave a gap, a cut starts inside another face; or a star's centre), and folded faces
+// (they have no side). Faces whose image meets a cut are counted (`cut_faces`).
+CutEdges cut_edges(const Mesh &mesh, const MeshEdges &edges, const std::vector<Vector> &sphere,
+                   const std::vector<int> &branch_vertices, const CutTree &tree) {
+  std::vector<char> at_branch_vertex(mesh.vert.size(), 0);
+  for (int v : branch_vertices)
+    at_branch_vertex[v] = 1;
+  const ArcPlanes planes = arc_planes(tree);
+  const ArcGrid near_arcs(tree.nodes, tree.arcs, short_edge_image);
+  const std::vector<char> on_cut = vertices_on_cuts(sphere, tree, planes, near_arcs);
+  CutEdges out;
+  out.crossing =
+      edges_crossing_cuts(edges, sphere, tree, planes, near_arcs, at_branch_vertex, on_cut);
+  // Edges whose image is too short for the crossing test to be sure of its side (where long thin
+  // parts crowd, cross products of such nearby points are mostly rounding) are cut too, so that a
+  // sheet cannot leak into another through them; and the edges of the faces set apart.
+  out.cut = out.crossing;
+  std::vector<char> &edge_cut = out.cut;
+  parallel_for(edges.vertices.size(), [&](size_t e) {
+    if ((sphere[size_t(edges.vertices[e][0])] - sphere[size_t(edges.vertices[e][1])]).norm() <
+        unsure_edge_length)
+      edge_cut[e] = 1;
+  });
+  for (int f : faces_set_apart(mesh, sphere, tree.nodes, at_branch_vertex))
     for (int e : edges.face_edges[size_t(f)])
       edge_cut[size_t(e)] = 1;
   return out;
