@@ -32,14 +32,13 @@ QString FilterMeromorphPlugin::filterInfo(FilterIDType filter) const {
            "The result goes into a new layer, about the given number of vertices, with the same "
            "genus; each vertex's layer of the map is its quality and the branch vertices are "
            "selected. The log gives the Hausdorff distance to the input and the angles.";
-  return "Maps a closed surface of any genus conformally onto the sphere (meromorph: Zeng, Li, "
-         "Yau, "
-         "Gu 2007). Genus 0 gives a one-to-one map; a torus is wrapped twice over the sphere by "
-         "the "
+  return "Maps a surface of any genus conformally onto the sphere (meromorph: Zeng, Li, Yau, Gu "
+         "2007). Genus 0 gives a one-to-one map; a torus is wrapped twice over the sphere by the "
          "Weierstrass P-function, with 4 branch points; a surface of genus g by a ratio of two "
          "holomorphic 1-forms, in 2g - 2 layers. Writes per-vertex texture coordinates, the layer "
-         "of each vertex as its quality, and selects the branch vertices. The mesh must be closed, "
-         "connected, oriented and manifold (see Filters > Cleaning and Repairing).";
+         "of each vertex as its quality, and selects the branch vertices. A mesh in several parts "
+         "has each part mapped on its own; holes are closed and non-manifold spots taken apart "
+         "for the computation only (the parameters below), so the mesh keeps its faces.";
 }
 
 MeshFilterInterface::FilterClass FilterMeromorphPlugin::getClass(QAction *action) {
