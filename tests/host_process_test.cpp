@@ -90,8 +90,15 @@ TEST(HostProcess, AMapLeavesTheHostsSettingsAndThreadsAsTheyWere) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
     threads_after = threads_in_process();
   }
-  // (The calling thread's own OpenMP team, made by the job without a callback, is the host's.)
-  EXPECT_LE(threads_after, threads_before + omp_get_max_threads() - 1);
+  // (The calling thread's own OpenMP team, made by the job without a callback, is the host's;
+  // LLVM's OpenMP runtime, in the sanitizer build, also keeps a pool of workers for any thread's
+  // next team.)
+#if defined(__clang__)
+  const int runtime_pool = 1;
+#else
+  const int runtime_pool = 0;
+#endif
+  EXPECT_LE(threads_after, threads_before + omp_get_max_threads() - 1 + runtime_pool);
 }
 
 } // namespace

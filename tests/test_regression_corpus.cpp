@@ -42,6 +42,7 @@ const std::map<std::string, int> expected_exit_code = {
     {"plus_minus_number.ply", 3},
     {"quad_index_out_of_range.ply", 3},
     {"torus_1e160.off", 0},
+    {"torus_1e160_remeshed_to_a_speck.off", 0},
     {"torus_8_rings_with_a_needle.off", 0},
     {"truncated_data.ply", 3},
     {"two_corner_face.ply", 3},
@@ -70,6 +71,20 @@ const std::map<std::pair<std::string, std::string>, int> job_exit_code = {
     {{"eight_1e-50.off", "remesh"}, 0},
     {{"eight_1e-50.off", "forms"}, 0},
 };
+
+// Remeshed to 12 vertices (the fuzz target's target) it crowds into a spot: refused, where vcglib's
+// Hausdorff grid over the speck counted cells past an int and looped.
+TEST(RegressionCorpus, ARemeshCrowdedIntoASpotIsRefusedNotLooped) {
+  const std::filesystem::path file = std::filesystem::path(MEROMORPH_TEST_DATA).parent_path() /
+                                     "fuzz_corpus" / "regressions" /
+                                     "torus_1e160_remeshed_to_a_speck.off";
+  test::TempDir dir;
+  const test::RunResult r = test::run_cli(
+      {"remesh", file.string(), "-o", dir.path("out.ply"), "--vertices", "12", "--quiet"});
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("Euler characteristic"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path("out.ply")));
+}
 
 // The jobs besides `info` and `param`, as the words after the subcommand's input.
 const std::vector<std::pair<std::string, std::vector<std::string>>> other_jobs = {

@@ -18,7 +18,20 @@ struct OneWay {
 };
 
 // Distances from the samples of `from` (every vertex, two random points per face) to `to`.
+// Where `to` is a speck beside `from` (a remesh collapsed to a spot: under 1e-6 of the other's
+// size), vcglib's grid over `to` would count its cells past what an int holds: the distances are
+// then those of `from`'s vertices to the speck's centre.
 OneWay distances(Mesh &from, Mesh &to, double diagonal) {
+  if (!(to.bbox.Diag() >= 1e-6 * std::max(from.bbox.Diag(), diagonal))) {
+    OneWay speck;
+    const Point3 centre = to.bbox.Center();
+    for (const MeshVertex &vertex : from.vert) {
+      const double distance = (vertex.cP() - centre).Norm();
+      speck.max = std::max(speck.max, distance);
+      speck.mean += distance / double(from.vert.size());
+    }
+    return speck;
+  }
   vcg::tri::HausdorffSampler<Mesh> sampler(&to);
   sampler.dist_upper_bound = diagonal;
   vcg::tri::SurfaceSampling<Mesh, vcg::tri::HausdorffSampler<Mesh>>::AllVertex(from, sampler);

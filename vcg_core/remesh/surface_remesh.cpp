@@ -394,6 +394,15 @@ void remesh_through_sphere(const Mesh &given, const Parameterization &map,
   }
   progress.report(0.8, "remesh quality");
   out.quality = measure_remesh(input, out.mesh, out.local_degree);
+  // A closed surface remeshes to a closed surface of its genus, or not at all.
+  if (map.holes_closed.empty() && map.sphere_faces.empty() &&
+      (out.quality.euler != map.euler || out.quality.boundary_edges > 0))
+    throw InputError("the remesh came out with Euler characteristic " +
+                         std::to_string(out.quality.euler) + " and " +
+                         std::to_string(out.quality.boundary_edges) +
+                         " boundary edges, not the surface's " + std::to_string(map.euler) +
+                         " and none (the map crowds too much of the surface into a spot)",
+                     {Remedy::remesh});
   for (MeshVertex &vertex : out.mesh.vert)
     vertex.P() = scale.undo(vertex.cP());
   // Evening out fills the regions the sphere samples sparsely; without it they are reported.
