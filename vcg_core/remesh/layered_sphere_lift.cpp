@@ -151,6 +151,7 @@ private:
   }
 
   int slot_value(const std::vector<int> &values, int q, int r, int i) const {
+    if (i < 0 || i >= degree_) return -1; // a lift beyond the degree (a vertex over more points)
     const auto &around = sphere_.neighbours[q];
     for (size_t n = 0; n < around.size(); ++n)
       if (around[n] == r) return values[(size_t(first_edge_[q]) + n) * degree_ + i];
