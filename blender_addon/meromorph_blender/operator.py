@@ -46,6 +46,21 @@ def add_branch_group(obj, vertices):
     return group
 
 
+def add_mesh_object(context, beside, name, positions, polygons, point_attributes, branch):
+    """A new object named `name` beside `beside` (same placement), from flat positions and
+    polygons, with integer per-vertex attributes and the branch vertices as a vertex group."""
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata(positions.reshape(-1, 3).tolist(), [], polygons)
+    for attribute_name, values in point_attributes.items():
+        mesh.attributes.new(attribute_name, "INT", "POINT").data.foreach_set("value", values)
+    mesh.update()
+    obj = bpy.data.objects.new(name, mesh)
+    context.collection.objects.link(obj)
+    obj.matrix_world = beside.matrix_world.copy()
+    add_branch_group(obj, branch)
+    return obj
+
+
 class ActiveMeshOperator:
     """What both operators share: they need an active mesh object (in Object Mode while they
     run) and report progress to the window manager."""
@@ -171,7 +186,6 @@ class MESH_OT_conformal_sphere_map(ActiveMeshOperator, bpy.types.Operator):
     def make_sphere_object(self, context, obj, result):
         mesh = obj.data
         name = obj.name + " Layered Sphere"
-        sphere_mesh = bpy.data.meshes.new(name)
         # Each polygon on the sphere's vertices: a loop's sphere vertex is its triangle corner's
         # (the input's vertex, or its copy where a non-manifold spot was split).
         mesh.calc_loop_triangles()
@@ -180,18 +194,10 @@ class MESH_OT_conformal_sphere_map(ActiveMeshOperator, bpy.types.Operator):
         loop_vertex = np.empty(len(mesh.loops), dtype=np.int64)
         mesh.loops.foreach_get("vertex_index", loop_vertex)
         loop_vertex[loops] = result["sphere_triangles"]
-        sphere_mesh.from_pydata(
-            result["sphere_layered"].reshape(-1, 3).tolist(), [],
-            [loop_vertex[p.loop_start:p.loop_start + p.loop_total].tolist() for p in mesh.polygons])
-        attribute = sphere_mesh.attributes.new("layer", "INT", "POINT")
-        attribute.data.foreach_set("value", result["sphere_layer"])
-        component = sphere_mesh.attributes.new("component", "INT", "POINT")
-        component.data.foreach_set("value", result["sphere_component"])
-        source = sphere_mesh.attributes.new("source_vertex", "INT", "POINT")
-        source.data.foreach_set("value", result["sphere_source"])
-        sphere_mesh.update()
-        sphere = bpy.data.objects.new(name, sphere_mesh)
-        context.collection.objects.link(sphere)
-        sphere.matrix_world = obj.matrix_world.copy()
-        add_branch_group(sphere, np.flatnonzero(result["sphere_branch"]))
-        return sphere
+        polygons = [loop_vertex[p.loop_start:p.loop_start + p.loop_total].tolist()
+                    for p in mesh.polygons]
+        return add_mesh_object(context, obj, name, result["sphere_layered"], polygons,
+                               {"layer": result["sphere_layer"],
+                                "component": result["sphere_component"],
+                                "source_vertex": result["sphere_source"]},
+                               np.flatnonzero(result["sphere_branch"]))

@@ -6,7 +6,7 @@ import numpy as np
 from bpy.props import BoolProperty, IntProperty
 
 from . import library, remedies
-from .operator import ActiveMeshOperator, add_branch_group, mesh_arrays
+from .operator import ActiveMeshOperator, add_mesh_object, mesh_arrays
 
 
 class OBJECT_OT_conformal_sphere_remesh(ActiveMeshOperator, bpy.types.Operator):
@@ -36,16 +36,9 @@ class OBJECT_OT_conformal_sphere_remesh(ActiveMeshOperator, bpy.types.Operator):
             return {"CANCELLED"}
 
         name = obj.name + " Remeshed"
-        remeshed_mesh = bpy.data.meshes.new(name)
-        remeshed_mesh.from_pydata(result["positions"].reshape(-1, 3).tolist(), [],
-                                  result["triangles"].reshape(-1, 3).tolist())
-        layer = remeshed_mesh.attributes.new("layer", "INT", "POINT")
-        layer.data.foreach_set("value", result["layer"])
-        remeshed_mesh.update()
-        remeshed = bpy.data.objects.new(name, remeshed_mesh)
-        context.collection.objects.link(remeshed)
-        remeshed.matrix_world = obj.matrix_world.copy()
-        add_branch_group(remeshed, np.flatnonzero(result["branch"] >= 2))
+        remeshed = add_mesh_object(context, obj, name, result["positions"],
+                                   result["triangles"].reshape(-1, 3).tolist(),
+                                   {"layer": result["layer"]}, np.flatnonzero(result["branch"] >= 2))
         bpy.ops.object.select_all(action="DESELECT")
         remeshed.select_set(True)
         context.view_layer.objects.active = remeshed

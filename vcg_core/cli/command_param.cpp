@@ -18,6 +18,7 @@
 #include "job/surface_map.h"
 #include "job_input.h"
 #include "maps/parameterization.h"
+#include "mesh/mesh_from_arrays.h"
 #include "mesh/repair.h"
 #include "report/report_json.h"
 #include "terminal_progress.h"
@@ -111,6 +112,21 @@ std::string summary_line(const std::string &input, const Parameterization &map, 
   return line.str();
 }
 
+// The map through the C++ entry on plain arrays (job/surface_map.h), as the C ABI calls it.
+Parameterization map_of(const Mesh &mesh, const ParameterizeOptions &settings,
+                        const Progress &progress) {
+  const MeshArrays arrays = arrays_from_mesh(mesh);
+  Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> V(arrays.positions.size(), 3);
+  for (size_t v = 0; v < arrays.positions.size(); ++v)
+    for (int k = 0; k < 3; ++k)
+      V(Eigen::Index(v), k) = arrays.positions[v][k];
+  Eigen::Matrix<int32_t, Eigen::Dynamic, 3, Eigen::RowMajor> F(arrays.triangles.size(), 3);
+  for (size_t f = 0; f < arrays.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k)
+      F(Eigen::Index(f), k) = arrays.triangles[f][k];
+  return parameterize_arrays(V, F, settings, progress);
+}
+
 int run_param(const ParamOptions &options) {
   // Every output is checked before any work and written only when the whole job succeeded.
   StagedOutputs outputs({options.input});
@@ -129,7 +145,7 @@ int run_param(const ParamOptions &options) {
 
   TerminalProgress bar(options.quiet);
   const Parameterization map = naming_the_input(
-      options.input, [&] { return parameterize_surface(mesh, settings, bar.progress()); });
+      options.input, [&] { return map_of(mesh, settings, bar.progress()); });
   bar.finish();
   if (!map.valid) {
     std::cerr << "meromorph: error: " << options.input
