@@ -144,8 +144,8 @@ int run_param(const ParamOptions &options) {
   const JobInput input = read_job_input(options.input, options.repair, mesh);
 
   TerminalProgress bar(options.quiet);
-  const Parameterization map = naming_the_input(
-      options.input, [&] { return map_of(mesh, settings, bar.progress()); });
+  const Parameterization map =
+      naming_the_input(options.input, [&] { return map_of(mesh, settings, bar.progress()); });
   bar.finish();
   if (!map.valid) {
     std::cerr << "meromorph: error: " << options.input
