@@ -41,6 +41,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
       settings.area_correct = true;
       settings.close_holes = options & 1;
       settings.split_nonmanifold = options & 2;
+      settings.set_aside_defects = false; // as the remesh commands
       const Parameterization map = parameterize_surface(mesh, settings, {});
       if (!map.valid) return 0;
       RemeshOptions remesh_options;

@@ -121,6 +121,12 @@ void FilterMeromorphPlugin::initParameterSet(QAction *action, MeshModel &model,
       "Take non-manifold vertices and edges apart for the computation: the mesh keeps its "
       "vertices (texture coordinates per wedge are exact), the layered sphere gets the split "
       "vertices. Off: such a mesh is refused."));
+  parameters.addParam(RichBool(
+      "strict", false, "Strict",
+      "Refuse the mesh, naming the problem, instead of dealing with it for the computation: "
+      "holes and non-manifold spots (whatever the two options above say), duplicate vertices "
+      "along seams (welded), duplicate faces, faces that use a vertex twice and unreferenced "
+      "vertices (left out; the mesh keeps them all)."));
   parameters.addParam(RichBool("packUv", false, "Pack the parts' texture coordinates",
                                "Several parts, spherical coordinates: each part's texture in its "
                                "own cell of the unit square instead of each filling it."));
@@ -187,6 +193,7 @@ meromorph_options filter_options(const RichParameterList &parameters, ProgressBr
   options.close_holes = parameters.getBool("closeHoles") ? 1 : 0;
   options.split_nonmanifold = parameters.getBool("splitNonManifold") ? 1 : 0;
   options.pack_uv = parameters.getBool("packUv") && options.uv_kind == 0 ? 1 : 0;
+  options.strict = parameters.getBool("strict") ? 1 : 0;
   options.progress = report_progress;
   options.progress_user = &bridge;
   return options;

@@ -187,6 +187,9 @@ int main(void) {
   CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
         MEROMORPH_ERROR_INPUT);
   make_torus();
+  /* By default holes are closed and non-manifold spots taken apart; strict refuses them. */
+  CHECK(options.close_holes == 1 && options.split_nonmanifold == 1 && options.strict == 0);
+  options.strict = 1;
   CHECK(meromorph_parameterize_d(positions, V, triangles, F - 1, &options, &result) ==
         MEROMORPH_ERROR_INPUT);
   CHECK(strstr(meromorph_last_error(), "boundary loop") != NULL);
@@ -200,7 +203,7 @@ int main(void) {
     CHECK(strstr(meromorph_last_error(), "MeshLab") == NULL);
   }
   /* The same torus with one face missing: its hole closed for the computation only. */
-  options.close_holes = 1;
+  options.strict = 0;
   CHECK(meromorph_parameterize_d(positions, V, triangles, F - 1, &options, &result) ==
         MEROMORPH_OK);
   CHECK(meromorph_vertex_count(result) == V && meromorph_triangle_count(result) == F - 1);
@@ -219,8 +222,30 @@ int main(void) {
   CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) ==
         MEROMORPH_ERROR_ARGUMENT);
   CHECK(strstr(meromorph_last_error(), "close_holes") != NULL);
-  /* Two tori touching at one vertex (a non-manifold vertex): refused by default, naming the
-     option; with split_nonmanifold each is mapped on its own and the layered sphere gets a copy
+  /* The torus with a doubled face and a vertex on no face: both left out of the computation by
+     default, the result still has every input vertex and triangle; strict refuses. */
+  {
+    static double p[3 * (V + 1)];
+    static int32_t t[3 * (F + 1)];
+    memcpy(p, positions, sizeof positions);
+    p[3 * V] = p[3 * V + 1] = p[3 * V + 2] = 10.0;
+    memcpy(t, triangles, sizeof triangles);
+    memcpy(t + 3 * F, triangles + 3 * 5, 3 * sizeof(int32_t));
+    meromorph_default_options(&options);
+    CHECK(meromorph_parameterize_d(p, V + 1, t, F + 1, &options, &result) == MEROMORPH_OK);
+    CHECK(meromorph_vertex_count(result) == V + 1 && meromorph_triangle_count(result) == F + 1);
+    CHECK(meromorph_genus(result) == 1 && meromorph_degree(result) == 2);
+    CHECK(meromorph_map_valid(result) == 1);
+    CHECK(strstr(meromorph_report_json(result), "doubled face") != NULL);
+    CHECK(strstr(meromorph_report_json(result), "on no face") != NULL);
+    meromorph_result_free(result);
+    result = NULL;
+    options.strict = 1;
+    CHECK(meromorph_parameterize_d(p, V + 1, t, F + 1, &options, &result) == MEROMORPH_ERROR_INPUT);
+    CHECK(result == NULL);
+  }
+  /* Two tori touching at one vertex (a non-manifold vertex): refused when strict, naming the
+     option; by default each is mapped on its own and the layered sphere gets a copy
      of the shared vertex. */
   {
     const size_t n = 2 * V - 1;
@@ -237,6 +262,7 @@ int main(void) {
     for (k = 3 * F; k < 6 * (size_t)F; ++k) /* its vertex k is the array's V - 1 + k; 0: shared */
       t[k] = t[k] == 0 ? shared : t[k] + V - 1;
     meromorph_default_options(&options);
+    options.strict = 1;
     CHECK(meromorph_parameterize_d(p, n, t, 2 * F, &options, &result) == MEROMORPH_ERROR_INPUT);
     CHECK(strstr(meromorph_last_error(), "non-manifold") != NULL);
     {
@@ -244,7 +270,7 @@ int main(void) {
       CHECK(meromorph_last_error_remedies(&remedy, 1) >= 1);
       CHECK(remedy == MEROMORPH_REMEDY_SPLIT_NONMANIFOLD);
     }
-    options.split_nonmanifold = 1;
+    options.strict = 0;
     CHECK(meromorph_parameterize_d(p, n, t, 2 * F, &options, &result) == MEROMORPH_OK);
     CHECK(meromorph_vertex_count(result) == n && meromorph_sphere_vertex_count(result) == n + 1);
     CHECK(meromorph_genus(result) == 2 && meromorph_degree(result) == 4);

@@ -55,17 +55,25 @@ TEST(Cli, InfoReportsGenusAsTextAndJson) {
 }
 
 TEST(Cli, JsonFindingsOfAnOpenMesh) {
-  const test::RunResult r = run_cli({"info", "--json", test::data_path("eight.open.off")});
-  EXPECT_EQ(r.exit_code, 3);
-  const nlohmann::json report = nlohmann::json::parse(r.out);
-  EXPECT_FALSE(report["ok"].get<bool>());
-  bool found_loops = false;
-  for (const auto &finding : report["findings"])
-    if (finding["code"] == "boundary_loops") {
-      found_loops = true;
-      EXPECT_EQ(finding["sizes"], nlohmann::json::array({24, 24, 24, 24}));
-    }
-  EXPECT_TRUE(found_loops) << r.out;
+  // By default param closes the holes (and welds the seam's duplicate vertices) for the
+  // computation; with --strict it refuses them.
+  for (const bool strict : {false, true}) {
+    std::vector<std::string> arguments = {"info", "--json", test::data_path("eight.open.off")};
+    if (strict) arguments.push_back("--strict");
+    const test::RunResult r = run_cli(arguments);
+    EXPECT_EQ(r.exit_code, strict ? 3 : 0) << r.err;
+    const nlohmann::json report = nlohmann::json::parse(r.out);
+    EXPECT_FALSE(report["ok"].get<bool>());
+    EXPECT_EQ(report["param_maps_it_as_it_is"].get<bool>(), !strict);
+    bool found_loops = false;
+    for (const auto &finding : report["findings"])
+      if (finding["code"] == "boundary_loops") {
+        found_loops = true;
+        EXPECT_EQ(finding["sizes"], nlohmann::json::array({24, 24, 24, 24}));
+        EXPECT_EQ(finding["param"], strict ? "refused" : "closes the holes");
+      }
+    EXPECT_TRUE(found_loops) << r.out;
+  }
 }
 
 TEST(Cli, MakeWritesSurfacesThatInfoAccepts) {

@@ -400,10 +400,10 @@ TEST(ParamCommand, WritesSurfaceSphereAndReport) {
       test::run_cli({"param", dir.path("raw3.ply"), "-o", dir.path("raw3.uv.ply"), "--quiet"});
   EXPECT_EQ(raw_mapped.exit_code, 0) << raw_mapped.err;
 
-  // Never over the input; open surfaces refused with exit code 3.
+  // Never over the input; open surfaces refused with exit code 3 under --strict.
   EXPECT_EQ(test::run_cli({"param", input, "-o", input}).exit_code, 2);
-  const test::RunResult open =
-      test::run_cli({"param", test::data_path("eight.open.off"), "-o", dir.path("x.ply")});
+  const test::RunResult open = test::run_cli(
+      {"param", test::data_path("eight.open.off"), "-o", dir.path("x.ply"), "--strict"});
   EXPECT_EQ(open.exit_code, 3);
   EXPECT_NE(open.err.find("boundary loop"), std::string::npos) << open.err;
 }

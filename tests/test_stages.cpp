@@ -215,8 +215,13 @@ TEST(FindingHandling, WhatParamDoesWithEachFinding) {
   EXPECT_EQ(finding_handling(flat), FindingHandling::as_it_is);
   EXPECT_EQ(finding_handling(holes), FindingHandling::close_holes);
   EXPECT_EQ(finding_handling(pinch), FindingHandling::split_nonmanifold);
-  EXPECT_EQ(finding_handling(seam), FindingHandling::repair);
+  EXPECT_EQ(finding_handling(seam), FindingHandling::set_aside);
   EXPECT_EQ(finding_handling(mobius), FindingHandling::refused);
+  // --strict: what is otherwise dealt with is refused (or left to the safe repairs).
+  EXPECT_EQ(finding_handling(parts, true), FindingHandling::as_it_is);
+  EXPECT_EQ(finding_handling(holes, true), FindingHandling::refused);
+  EXPECT_EQ(finding_handling(pinch, true), FindingHandling::refused);
+  EXPECT_EQ(finding_handling(seam, true), FindingHandling::repair);
 }
 
 } // namespace

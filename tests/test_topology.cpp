@@ -47,9 +47,15 @@ TEST(Topology, OpenSharedMeshesAreRefusedNamingTheirBoundaryLoops) {
     ASSERT_NE(open, nullptr) << name;
     EXPECT_EQ(std::accumulate(open->sizes.begin(), open->sizes.end(), 0), boundary_edges) << name;
 
-    const test::RunResult cli = test::run_cli({"info", test::data_path(name)});
+    // Refused with --strict, naming the loops; by default they are closed for the computation.
+    const test::RunResult cli = test::run_cli({"info", test::data_path(name), "--strict"});
     EXPECT_EQ(cli.exit_code, 3) << name;
     EXPECT_NE(cli.err.find("boundary loop"), std::string::npos) << name << ": " << cli.err;
+    const test::RunResult by_default = test::run_cli({"info", test::data_path(name)});
+    EXPECT_EQ(by_default.exit_code, 0) << name << ": " << by_default.err;
+    EXPECT_NE(by_default.out.find("meromorph param closes these for the computation"),
+              std::string::npos)
+        << name << ": " << by_default.out;
   }
 }
 

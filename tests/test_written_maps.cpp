@@ -407,9 +407,9 @@ TEST(WrittenMaps, HolesClosedAndSeveralParts) {
   EXPECT_EQ(run_cli({"param", parts, "-o", dir.path("p.ply"), "--pack-uv", "--uv", "stereographic"})
                 .exit_code,
             2);
-  // Without --close-holes a mesh with holes is refused, naming the option.
-  const test::RunResult refused =
-      run_cli({"param", test::data_path("bunny.off"), "-o", dir.path("b.ply"), "--quiet"});
+  // With --strict a mesh with holes is refused, naming the option that closes them.
+  const test::RunResult refused = run_cli(
+      {"param", test::data_path("bunny.off"), "-o", dir.path("b.ply"), "--strict", "--quiet"});
   EXPECT_EQ(refused.exit_code, 3);
   EXPECT_NE(refused.err.find("--close-holes"), std::string::npos) << refused.err;
 }
@@ -558,17 +558,18 @@ TEST(WrittenMaps, NonManifoldSpotsTakenApart) {
   const nlohmann::json report = nlohmann::json::parse(report_stream);
   EXPECT_EQ(report["nonmanifold_split"]["edges"].size(), 1u);
   EXPECT_EQ(report["nonmanifold_split"]["vertices"].size(), 2u);
-  // The fin taken off without --close-holes: refused, naming the option, and the hole's vertex,
-  // a copy the split made, is said to be one.
-  const test::RunResult open_fin = run_cli({"param", torus_with_a_fin(dir), "-o",
-                                            dir.path("fin.ply"), "--split-nonmanifold", "--quiet"});
+  // The fin taken off with --strict (holes not closed): refused, naming the option, and the
+  // hole's vertex, a copy the split made, is said to be one.
+  const test::RunResult open_fin =
+      run_cli({"param", torus_with_a_fin(dir), "-o", dir.path("fin.ply"), "--split-nonmanifold",
+               "--strict", "--quiet"});
   EXPECT_EQ(open_fin.exit_code, 3);
   EXPECT_NE(open_fin.err.find("--close-holes"), std::string::npos) << open_fin.err;
   EXPECT_NE(open_fin.err.find("is a copy of"), std::string::npos) << open_fin.err;
-  // Without the option each is refused, naming the spot and the option; the files stay unwritten.
+  // With --strict each is refused, naming the spot and the option; the files stay unwritten.
   for (const std::string &input : {cubes_sharing_an_edge(dir), spheres_touching_at_a_vertex(dir)}) {
     const test::RunResult refused =
-        run_cli({"param", input, "-o", dir.path("refused.ply"), "--quiet"});
+        run_cli({"param", input, "-o", dir.path("refused.ply"), "--strict", "--quiet"});
     EXPECT_EQ(refused.exit_code, 3);
     EXPECT_NE(refused.err.find("--split-nonmanifold"), std::string::npos) << refused.err;
     EXPECT_NE(refused.err.find("non-manifold"), std::string::npos) << refused.err;

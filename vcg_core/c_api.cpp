@@ -65,6 +65,8 @@ std::string check_options(const meromorph_options &options, size_t vertex_count,
            "; use 0 or 1";
   if (options.pack_uv != 0 && options.pack_uv != 1)
     return "options.pack_uv is " + std::to_string(options.pack_uv) + "; use 0 or 1";
+  if (options.strict != 0 && options.strict != 1)
+    return "options.strict is " + std::to_string(options.strict) + "; use 0 or 1";
   if (options.area_correct != 0 && options.area_correct != 1)
     return "options.area_correct is " + std::to_string(options.area_correct) + "; use 0 or 1";
   if (options.origin_vertex < -1 || (long long)options.origin_vertex >= (long long)vertex_count)
@@ -104,10 +106,11 @@ std::string read_options(const meromorph_options *options, meromorph_options &se
   meromorph_default_options(&settings);
   if (!options) return "";
   // Version 1 ended before close_holes, version 2 before split_nonmanifold, version 5 (up to
-  // meromorph 0.1) before area_correct.
-  const size_t known_sizes[] = {
-      offsetof(meromorph_options, close_holes), offsetof(meromorph_options, split_nonmanifold),
-      offsetof(meromorph_options, area_correct), sizeof(meromorph_options)};
+  // meromorph 0.1) before area_correct, and 0.2 as first built, before strict.
+  const size_t known_sizes[] = {offsetof(meromorph_options, close_holes),
+                                offsetof(meromorph_options, split_nonmanifold),
+                                offsetof(meromorph_options, area_correct),
+                                offsetof(meromorph_options, strict), sizeof(meromorph_options)};
   if (std::find(std::begin(known_sizes), std::end(known_sizes), options->struct_size) ==
       std::end(known_sizes))
     return "options.struct_size is " + std::to_string(options->struct_size) +
@@ -128,8 +131,10 @@ meromorph::ParameterizeOptions core_options(const meromorph_options &settings) {
   parameters.form_pair = {settings.form_pair[0], settings.form_pair[1]};
   parameters.layer_gap = settings.layer_gap;
   parameters.pole_face = settings.pole_face;
-  parameters.close_holes = settings.close_holes != 0;
-  parameters.split_nonmanifold = settings.split_nonmanifold != 0;
+  const bool strict = settings.strict != 0;
+  parameters.close_holes = settings.close_holes != 0 && !strict;
+  parameters.split_nonmanifold = settings.split_nonmanifold != 0 && !strict;
+  parameters.set_aside_defects = !strict;
   parameters.pack_uv = settings.pack_uv != 0;
   parameters.area_correct = settings.area_correct != 0;
   return parameters;
@@ -262,6 +267,7 @@ std::unique_ptr<meromorph_remesh_result> remesh_result(meromorph::MeshArrays &ar
   mesh_from_arrays(arrays, mesh);
   ParameterizeOptions parameters = core_options(settings);
   parameters.area_correct = area_correct;
+  parameters.set_aside_defects = false; // the remesh samples the input's own faces
   const Progress progress = core_progress(settings);
   const Parameterization map = parameterize_surface(mesh, parameters, progress.range(0.0, 0.6));
   if (!map.valid)
@@ -341,6 +347,8 @@ void meromorph_default_options(meromorph_options *options) {
   options->form_pair[1] = -1;
   options->layer_gap = 0.0;
   options->pole_face = -1;
+  options->close_holes = 1;
+  options->split_nonmanifold = 1;
 }
 
 meromorph_status meromorph_parameterize_d(const double *positions, size_t vertex_count,

@@ -86,19 +86,27 @@ typedef struct meromorph_options {
   int pole_face;                  /* genus 0: the face around the north pole; -1: automatic */
   meromorph_progress_fn progress; /* may be NULL */
   void *progress_user;
-  int close_holes; /* 1: close holes for the computation only (outputs keep the input's faces);
-                      0: refuse a mesh with holes (default). Since ABI version 2; a version-1
-                      struct_size is still accepted, with 0 here. */
+  int close_holes;       /* 1: close holes for the computation only (outputs keep the input's faces;
+                            default); 0: refuse a mesh with holes. Since ABI version 2; a version-1
+                            struct_size is still accepted, with the default here. */
   int split_nonmanifold; /* 1: take non-manifold vertices and edges apart for the computation (the
                             layered sphere then has copies of the split vertices: see
-                            meromorph_sphere_mesh); 0: refuse such a mesh (default). Since ABI
-                            version 3; a version 1 or 2 struct_size is accepted, with 0 here. */
+                            meromorph_sphere_mesh; default); 0: refuse such a mesh. Since ABI
+                            version 3; a version 1 or 2 struct_size is accepted, with the
+                            default here. */
   int pack_uv;           /* several parts, spherical uvs: 1 puts part k's uvs in cell k of a grid
                             over the unit square; 0: each part fills it (default). Since ABI
                             version 3. */
   int area_correct;      /* 1: after centring, the Moebius transformation that spreads the map
                             most evenly in area (angles unchanged); 0: not (default). Since
                             meromorph 0.2; an older struct_size is accepted, with 0 here. */
+  int strict;            /* 1: refuse, naming the problem, what the defaults deal with for the
+                            computation (holes, non-manifold spots, seam duplicates, doubled faces,
+                            faces that use a vertex twice, vertices on no face) whatever
+                            close_holes and split_nonmanifold say; 0: deal with them (default: they
+                            are welded or left out for the computation, and the results still have
+                            every input vertex and triangle). Since meromorph 0.2; an older
+                            struct_size is accepted, with 0 here. */
 } meromorph_options;
 
 /* A map and everything measured on it; opaque. Made by meromorph_parameterize_*, read by the

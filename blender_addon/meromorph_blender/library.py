@@ -33,6 +33,7 @@ class Options(ctypes.Structure):
         ("split_nonmanifold", ctypes.c_int),
         ("pack_uv", ctypes.c_int),
         ("area_correct", ctypes.c_int),
+        ("strict", ctypes.c_int),
     ]
 
 
@@ -166,8 +167,8 @@ def remesh(positions, triangles, target_vertices=0, area_correct=True, close_hol
 
 
 def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1, pole_face=-1,
-                 form_pair=(-1, -1), layer_gap=0.0, close_holes=False, split_nonmanifold=False,
-                 pack_uv=False, progress=None):
+                 form_pair=(-1, -1), layer_gap=0.0, close_holes=True, split_nonmanifold=True,
+                 pack_uv=False, strict=False, progress=None):
     lib = load()
     positions = np.ascontiguousarray(positions, dtype=np.float32).reshape(-1)
     triangles = np.ascontiguousarray(triangles, dtype=np.int32).reshape(-1)
@@ -182,6 +183,7 @@ def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
     options.close_holes = 1 if close_holes else 0
     options.split_nonmanifold = 1 if split_nonmanifold else 0
     options.pack_uv = 1 if pack_uv else 0
+    options.strict = 1 if strict else 0
     callback = PROGRESS(lambda fraction, stage, user: 1 if progress is None else progress(fraction))
     options.progress = callback
     result = ctypes.c_void_p()

@@ -135,6 +135,12 @@ class MESH_OT_conformal_sphere_map(ActiveMeshOperator, bpy.types.Operator):
         description="Take non-manifold vertices and edges apart for the computation: the mesh "
                     "keeps its vertices (UVs per face corner); the layered sphere gets the split "
                     "vertices")
+    strict: BoolProperty(
+        name="Strict", default=False,
+        description="Refuse the mesh, naming the problem, instead of dealing with it for the "
+                    "computation: holes and non-manifold spots (whatever the two options above "
+                    "say), seam duplicates (welded), doubled faces, faces that use a vertex "
+                    "twice and loose vertices (left out; the mesh keeps them all)")
     pack_uv: BoolProperty(name="Pack Parts' UVs", default=False,
                           description="Several parts: each part's UVs in its own cell of the "
                                       "unit square instead of each filling it")
@@ -151,7 +157,8 @@ class MESH_OT_conformal_sphere_map(ActiveMeshOperator, bpy.types.Operator):
                 mobius=self.mobius, origin_vertex=self.origin, pole_face=self.pole_face,
                 form_pair=(self.form_i, self.form_j), layer_gap=self.layer_gap,
                 close_holes=self.close_holes, split_nonmanifold=self.split_nonmanifold,
-                pack_uv=self.pack_uv and self.uv_kind == "SPHERICAL", progress=progress)
+                pack_uv=self.pack_uv and self.uv_kind == "SPHERICAL", strict=self.strict,
+                progress=progress)
         except library.MeromorphError as error:
             self.report({"ERROR"}, "'%s' cannot be mapped: %s (vertex numbers are Blender's)"
                         % (obj.name, remedies.with_remedies(str(error), error.remedies)))

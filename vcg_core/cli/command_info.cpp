@@ -19,19 +19,20 @@ struct InfoOptions {
   std::string input;
   bool json = false;
   bool repair = false;
+  bool strict = false;
 };
 
 // A finding with the remedies the grouping's heading does not already name (what param maps as
 // it is can still be removed; what it refuses has only its remedies).
-std::string finding_words(const Finding &finding) {
-  const FindingHandling handling = finding_handling(finding);
+std::string finding_words(const Finding &finding, bool strict) {
+  const FindingHandling handling = finding_handling(finding, strict);
   if (handling == FindingHandling::as_it_is || handling == FindingHandling::refused)
     return with_remedies(finding.message, finding.remedies);
   return finding.message;
 }
 
 void print_text(const MeshSource &source, const Topology &topology, const Validation &validation,
-                const std::vector<std::string> &repairs) {
+                const std::vector<std::string> &repairs, bool strict) {
   std::cout << source.path << " (" << format_name(source.format) << ")\n";
   for (const std::string &note : source.notes)
     std::cout << "  note: " << note << "\n";
@@ -56,14 +57,20 @@ void print_text(const MeshSource &source, const Topology &topology, const Valida
   // Grouped by what `param` does with them.
   const std::pair<FindingHandling, const char *> groups[] = {
       {FindingHandling::as_it_is, "meromorph param maps it as it is:"},
-      {FindingHandling::close_holes, "meromorph param maps it with --close-holes:"},
-      {FindingHandling::split_nonmanifold, "meromorph param maps it with --split-nonmanifold:"},
+      {FindingHandling::close_holes,
+       "meromorph param closes these for the computation (--strict refuses them):"},
+      {FindingHandling::split_nonmanifold,
+       "meromorph param takes these apart for the computation (--strict refuses them):"},
+      {FindingHandling::set_aside,
+       "meromorph param welds or leaves out these for the computation, the outputs keep them "
+       "(--strict refuses them):"},
       {FindingHandling::repair, "safe repairs fix these: run again with --repair:"},
       {FindingHandling::refused, "cannot be parameterized as it is:"}};
   for (const auto &[handling, heading] : groups) {
     std::string listed;
     for (const Finding &f : validation.findings)
-      if (finding_handling(f) == handling) listed += "  - " + finding_words(f) + "\n";
+      if (finding_handling(f, strict) == handling)
+        listed += "  - " + finding_words(f, strict) + "\n";
     if (!listed.empty()) std::cout << "  " << heading << "\n" << listed;
   }
 }
@@ -73,9 +80,11 @@ const char *handling_name(FindingHandling handling) {
   case FindingHandling::as_it_is:
     return "as it is";
   case FindingHandling::close_holes:
-    return "--close-holes";
+    return "closes the holes";
   case FindingHandling::split_nonmanifold:
-    return "--split-nonmanifold";
+    return "takes them apart";
+  case FindingHandling::set_aside:
+    return "welds or leaves them out";
   case FindingHandling::repair:
     return "--repair";
   default:
@@ -83,10 +92,16 @@ const char *handling_name(FindingHandling handling) {
   }
 }
 
+// Whether `param` with no options refuses the mesh for this finding.
+bool refused_by_default(const Finding &finding, bool strict) {
+  const FindingHandling handling = finding_handling(finding, strict);
+  return handling == FindingHandling::repair || handling == FindingHandling::refused;
+}
+
 // The first finding that `param` with no options refuses, if any.
-const Finding *refused_as_it_is(const Validation &validation) {
+const Finding *refused_as_it_is(const Validation &validation, bool strict) {
   for (const Finding &f : validation.findings)
-    if (finding_handling(f) != FindingHandling::as_it_is) return &f;
+    if (refused_by_default(f, strict)) return &f;
   return nullptr;
 }
 
@@ -126,37 +141,39 @@ int run_info(const InfoOptions &options) {
   if (options.json) {
     nlohmann::json findings = findings_json(validation);
     for (size_t k = 0; k < validation.findings.size(); ++k)
-      findings[k]["param"] = handling_name(finding_handling(validation.findings[k]));
-    nlohmann::json report = {{"input", source_json(source)},
-                             {"topology", topology_json(topology)},
-                             {"findings", findings},
-                             {"param_maps_it_as_it_is", refused_as_it_is(validation) == nullptr},
-                             {"repairs", repairs},
-                             {"notes", validation.notes},
-                             {"ok", validation.ok()},
-                             {"version", MEROMORPH_VERSION}};
+      findings[k]["param"] =
+          handling_name(finding_handling(validation.findings[k], options.strict));
+    nlohmann::json report = {
+        {"input", source_json(source)},
+        {"topology", topology_json(topology)},
+        {"findings", findings},
+        {"param_maps_it_as_it_is", refused_as_it_is(validation, options.strict) == nullptr},
+        {"repairs", repairs},
+        {"notes", validation.notes},
+        {"ok", validation.ok()},
+        {"version", MEROMORPH_VERSION}};
     if (!repairs.empty()) report["findings_before_repair"] = findings_json(before_repair);
     std::cout << json_text(report) << "\n";
   } else {
-    print_text(source, topology, validation, repairs);
+    print_text(source, topology, validation, repairs, options.strict);
   }
-  // What param maps as it is (several parts, zero-area faces) is no reason to fail.
-  if (const Finding *first = refused_as_it_is(validation)) {
+  // What param maps, as it is or dealing with it for the computation, is no reason to fail.
+  if (const Finding *first = refused_as_it_is(validation, options.strict)) {
     // The first that no repair fixes, as validation.h's main finding.
     const Finding *main_finding = first;
     size_t others = 0;
     for (const Finding &f : validation.findings) {
-      if (finding_handling(f) == FindingHandling::as_it_is) continue;
+      if (!refused_by_default(f, options.strict)) continue;
       if (!f.repairable && main_finding->repairable) main_finding = &f;
       ++others;
     }
     --others;
-    std::cerr << "meromorph: " << options.input
-              << " cannot be parameterized as it is: " << finding_words(*main_finding)
-              << (finding_handling(*main_finding) == FindingHandling::refused
+    std::cerr << "meromorph: " << options.input << " cannot be parameterized as it is: "
+              << finding_words(*main_finding, options.strict)
+              << (finding_handling(*main_finding, options.strict) == FindingHandling::refused
                       ? std::string()
                       : std::string(" (meromorph param maps it with ") +
-                            handling_name(finding_handling(*main_finding)) + ")")
+                            handling_name(finding_handling(*main_finding, options.strict)) + ")")
               << (others ? " (and " + std::to_string(others) +
                                (others == 1 ? " more problem" : " more problems") +
                                "; the full list is on standard output)"
@@ -174,11 +191,16 @@ Command add_info_command(CLI::App &app) {
   CLI::App *info = app.add_subcommand(
       "info", "Print vertices, edges, faces, components, boundary loops, genus and every problem "
               "found, grouped by what meromorph param does with it: maps the mesh as it is "
-              "(several parts, zero-area faces), maps it with an option (--close-holes, "
-              "--split-nonmanifold, --repair), or cannot. Exit code 3 unless param maps it as it "
-              "is (JSON: param_maps_it_as_it_is, and per finding `param`).");
+              "(several parts, zero-area faces), deals with it for the computation (closes holes, "
+              "takes non-manifold spots apart, welds seam duplicates, leaves doubled faces and "
+              "vertices on no face out; --strict refuses these), maps it after --repair, or "
+              "cannot. Exit code 3 unless param with its defaults maps it (JSON: "
+              "param_maps_it_as_it_is, and per finding `param`).");
   info->add_option("INPUT", options->input, "mesh file (.ply, .obj, .off, .stl)")->required();
   info->add_flag("--json", options->json, "print a JSON report instead of text");
+  info->add_flag("--strict", options->strict,
+                 "judge the mesh as meromorph param --strict would (refusing what it otherwise "
+                 "deals with for the computation)");
   info->add_flag("--repair", options->repair,
                  "apply the safe repairs (merge duplicate vertices along the edges of holes, drop "
                  "faces that use a vertex twice and unreferenced vertices, orient faces "

@@ -31,7 +31,8 @@ struct ParamOptions {
   std::string uv = "spherical";
   std::string solver = "cholmod";
   bool no_mobius = false, repair = false, keep_invalid = false, close_holes = false,
-       pack_uv = false, split_nonmanifold = false, quiet = false, area_correct = false;
+       pack_uv = false, split_nonmanifold = false, quiet = false, area_correct = false,
+       strict = false, without_uv = false;
   int origin = -1;
   std::vector<int> forms{-1, -1};
   double layer_gap = 0.0;
@@ -48,9 +49,11 @@ ParameterizeOptions settings_from(const ParamOptions &options) {
   settings.layer_gap = options.layer_gap;
   settings.pole_face = options.pole_face;
   settings.solver = solver_from_name(options.solver);
-  settings.close_holes = options.close_holes;
+  // --strict refuses what is otherwise dealt with, except what an option asks for.
+  settings.close_holes = !options.strict || options.close_holes;
   settings.pack_uv = options.pack_uv;
-  settings.split_nonmanifold = options.split_nonmanifold;
+  settings.split_nonmanifold = !options.strict || options.split_nonmanifold;
+  settings.set_aside_defects = !options.strict;
   settings.area_correct = options.area_correct;
 
   return settings;
@@ -97,18 +100,37 @@ void write_layered_sphere(const Mesh &mesh, const Parameterization &map, const s
 }
 
 // The one-line summary.
+// "part 0: genus 0, degree 1; part 1: genus 1, degree 2, 4 branch points" for several parts.
+std::string parts_words(const Parameterization &map) {
+  std::ostringstream words;
+  for (size_t k = 0; k < map.components.size(); ++k) {
+    const Parameterization &part = map.components[k];
+    words << (k ? "; " : "") << "part " << k << ": genus " << part.genus << ", degree "
+          << part.degree;
+    if (!part.branch_points.empty()) words << ", " << part.branch_points.size() << " branch points";
+  }
+  return words.str();
+}
+
+// One line: the topology, the branching, the layers; distortion where the map is conformal
+// (away from branch points, where it cannot be), with the worst faces' figure beside the mean;
+// folded faces; the time.
 std::string summary_line(const std::string &input, const Parameterization &map, double total_ms) {
+  const QualityStatistics &away = map.quality.away_from_branch_points;
   std::ostringstream line;
-  line << std::fixed << std::setprecision(2);
-  line << input << ": genus " << map.genus << ", degree " << map.degree << ", "
-       << map.branch_points.size() << " branch points (ramification " << map.ramification
-       << "), Riemann-Hurwitz " << (map.riemann_hurwitz_ok ? "holds" : "FAILS") << ", "
-       << map.sheets.count << (map.sheets.count == 1 ? " layer" : " layers") << "; angle error "
-       << map.quality.overall.angle_error_mean_degrees << " deg, quasi-conformal mean "
-       << map.quality.overall.quasi_conformal_mean << ", folded faces "
-       << map.quality.away_from_branch_points.folded_faces << " away from branch points ("
-       << map.quality.overall.folded_faces << " in all); " << std::setprecision(0) << total_ms
-       << " ms";
+  line << std::fixed << std::setprecision(2) << input << ": ";
+  if (map.components.size() > 1)
+    line << map.components.size() << " parts, each mapped on its own (" << parts_words(map)
+         << "); in all: ";
+  line << "genus " << map.genus << ", degree " << map.degree << ", " << map.branch_points.size()
+       << " branch points (ramification " << map.ramification << "), Riemann-Hurwitz "
+       << (map.riemann_hurwitz_ok ? "holds" : "FAILS") << ", " << map.sheets.count
+       << (map.sheets.count == 1 ? " layer" : " layers")
+       << "; away from branch points: angle error " << away.angle_error_mean_degrees
+       << " deg, quasi-conformal mean " << away.quasi_conformal_mean << " (95th percentile "
+       << away.quasi_conformal_p95 << "); folded faces " << away.folded_faces
+       << " away from branch points (" << map.quality.overall.folded_faces << " in all); "
+       << std::setprecision(0) << total_ms << " ms";
   return line.str();
 }
 
@@ -130,11 +152,15 @@ Parameterization map_of(const Mesh &mesh, const ParameterizeOptions &settings,
 int run_param(const ParamOptions &options) {
   // Every output is checked before any work and written only when the whole job succeeded.
   StagedOutputs outputs({options.input});
-  const MeshFormat output_format = format_from_extension(options.output);
+  const MeshFormat surface_format = output_format(options.output);
+  if (surface_format == MeshFormat::stl && !options.without_uv)
+    throw ArgumentError(options.output +
+                        ": an STL file cannot hold texture coordinates, which are the map: write "
+                        ".ply (or .obj, .off), or give --without-uv to write the surface anyway");
   const std::string output_file = outputs.add(options.output);
   const std::string sphere_file = options.sphere.empty() ? "" : outputs.add(options.sphere);
   const std::string report_file = options.report.empty() ? "" : outputs.add(options.report);
-  if (!options.sphere.empty() && format_from_extension(options.sphere) != MeshFormat::ply)
+  if (!options.sphere.empty() && output_format(options.sphere) != MeshFormat::ply)
     throw ArgumentError(options.sphere + ": the layered sphere is written as PLY (.ply)");
   if (options.forms.size() != 2) throw ArgumentError("--forms takes two indices, like --forms 0,1");
 
@@ -157,7 +183,7 @@ int run_param(const ParamOptions &options) {
     }
   }
 
-  write_surface(mesh, map, output_format, output_file);
+  write_surface(mesh, map, surface_format, output_file);
   if (!options.sphere.empty()) write_layered_sphere(mesh, map, sphere_file);
 
   nlohmann::json report = parameterization_json(map);
@@ -222,16 +248,28 @@ Command add_param_command(CLI::App &app) {
   param->add_option("--solver", options->solver, "cholmod (default) or ldlt")
       ->check(CLI::IsMember({"cholmod", "ldlt"}));
   param->add_flag("--repair", options->repair, "apply the safe repairs first (see info --help)");
+  param->add_flag(
+      "--strict", options->strict,
+      "refuse, naming the problem, what is otherwise dealt with for the computation: "
+      "holes (closed), non-manifold vertices and edges (taken apart), seam duplicate "
+      "vertices (welded), doubled faces, faces that use a vertex twice and vertices "
+      "on no face (left out); by default the outputs keep them all. With --close-holes or "
+      "--split-nonmanifold, all but that");
   param->add_flag("--close-holes", options->close_holes,
-                  "close every hole for the computation only (the outputs keep the input's faces; "
-                  "the holes show as gaps on the sphere)");
-  param->add_flag("--split-nonmanifold", options->split_nonmanifold,
-                  "take non-manifold vertices and edges apart for the computation (the surface "
-                  "keeps its vertices, with texture coordinates per face corner; the layered "
-                  "sphere gets the split vertices)");
+                  "close every hole for the computation only (the default, and with --strict; the "
+                  "outputs keep the "
+                  "input's faces, the holes show as gaps on the sphere)");
+  param->add_flag(
+      "--split-nonmanifold", options->split_nonmanifold,
+      "take non-manifold vertices and edges apart for the computation (the default, and "
+      "with --strict; "
+      "the surface keeps its vertices, with texture coordinates per face corner; the "
+      "layered sphere gets the split vertices)");
   param->add_flag("--pack-uv", options->pack_uv,
                   "several parts: each part's texture in its own cell of the unit square (a grid, "
                   "row by row from the bottom left) instead of each filling it");
+  param->add_flag("--without-uv", options->without_uv,
+                  "write the surface even in a format that cannot hold texture coordinates (.stl)");
   param->add_flag("--keep-invalid", options->keep_invalid,
                   "write the map even when it is not a valid branched cover (the exit code is "
                   "still 3)");

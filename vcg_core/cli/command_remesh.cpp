@@ -58,7 +58,7 @@ void warn_sparse_regions(const SurfaceRemesh &remesh) {
 
 int run_remesh(const RemeshCommandOptions &options) {
   StagedOutputs outputs({options.input});
-  const MeshFormat output_format = format_from_extension(options.output);
+  const MeshFormat remesh_format = output_format(options.output);
   const std::string output_file = outputs.add(options.output);
   const std::string report_file = options.report.empty() ? "" : outputs.add(options.report);
   if (options.resolution >= 0 && options.vertices > 0)
@@ -68,6 +68,7 @@ int run_remesh(const RemeshCommandOptions &options) {
   settings.area_correct = !options.no_area_correct;
   settings.close_holes = options.close_holes;
   settings.split_nonmanifold = options.split_nonmanifold;
+  settings.set_aside_defects = false; // the remesh samples the input's own faces
   RemeshOptions remesh_options;
   remesh_options.resolution = options.resolution;
   remesh_options.vertices = options.vertices;
@@ -90,7 +91,7 @@ int run_remesh(const RemeshCommandOptions &options) {
   remesh_through_sphere(mesh, map, remesh_options, bar.progress().range(0.6, 1.0), remesh);
   bar.finish();
 
-  write_remesh(remesh, output_format, output_file);
+  write_remesh(remesh, remesh_format, output_file);
   nlohmann::json report = parameterization_json(map);
   report["input"] = source_json(input.source);
   report["repairs"] = input.repairs;

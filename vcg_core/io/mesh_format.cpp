@@ -40,16 +40,40 @@ const char *format_extension(MeshFormat format) {
   return "";
 }
 
-MeshFormat format_from_extension(const std::string &path) {
-  std::string extension = std::filesystem::path(path).extension().string();
+namespace {
+
+std::optional<MeshFormat> format_named(const std::string &path, std::string &extension) {
+  extension = std::filesystem::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char c) { return char(std::tolower(c)); });
   if (extension == ".ply") return MeshFormat::ply;
   if (extension == ".obj") return MeshFormat::obj;
   if (extension == ".off") return MeshFormat::off;
   if (extension == ".stl") return MeshFormat::stl;
+  return std::nullopt;
+}
+
+} // namespace
+
+MeshFormat format_from_extension(const std::string &path) {
+  std::string extension;
+  if (const auto format = format_named(path, extension)) return *format;
   throw ArgumentError(path + ": meromorph reads .ply, .obj, .off and .stl files, not '" +
                       (extension.empty() ? std::string("(no extension)") : extension) + "'");
+}
+
+MeshFormat output_format(const std::string &path) {
+  std::error_code error;
+  if (!path.empty() && (path.back() == '/' || std::filesystem::is_directory(path, error)))
+    throw ArgumentError(path + ": is a folder; give the output a file name in it, like " +
+                        (path.back() == '/' ? path : path + "/") + "out.ply");
+  std::string extension;
+  if (const auto format = format_named(path, extension)) return *format;
+  throw ArgumentError(path +
+                      ": meromorph writes .ply, .obj, .off and .stl files; this output's "
+                      "name ends in '" +
+                      (extension.empty() ? std::string("(no extension)") : extension) +
+                      "': give it one of those");
 }
 
 namespace {

@@ -18,6 +18,10 @@ const char *format_extension(MeshFormat format); // ".ply"
 // The format that the extension of `path` names; throws ArgumentError for any other extension.
 MeshFormat format_from_extension(const std::string &path);
 
+// The format an output path asks for, by its extension; throws ArgumentError for a folder or any
+// other extension, in words about writing.
+MeshFormat output_format(const std::string &path);
+
 // The format of an existing file, by extension, after checking that its content agrees.
 MeshFormat detect_format(const std::string &path);
 

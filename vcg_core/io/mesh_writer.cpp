@@ -110,7 +110,7 @@ void save_mesh(const Mesh &mesh, MeshFormat format, const std::string &file,
 
 void write_mesh(const Mesh &mesh, const std::string &path, const WriteOptions &options,
                 const std::vector<std::string> &protected_inputs) {
-  const MeshFormat format = format_from_extension(path);
+  const MeshFormat format = output_format(path);
   StagedOutputs outputs(protected_inputs);
   save_mesh(mesh, format, outputs.add(path), options);
   outputs.commit();

@@ -13,6 +13,7 @@ MeshArrays read_obj(const std::string &path, const std::string &text,
   // Faces are kept as polygons until every vertex is known (a face may precede later `v` lines
   // only with negative indices, which are relative to the vertices read so far).
   std::vector<int> polygon;
+  PolygonTriangulation triangulation(arrays.positions, arrays.triangles);
   size_t polygons = 0;
   size_t ignored_lines = 0;
   while (lines.next()) {
@@ -43,7 +44,7 @@ MeshArrays read_obj(const std::string &path, const std::string &text,
         polygon.push_back(int(index));
       }
       if (polygon.size() > 3) ++polygons;
-      triangulate_polygon(polygon, arrays.positions, arrays.triangles);
+      triangulation.add(polygon);
     } else if (tokens[0] == "l" || tokens[0] == "p") {
       ++ignored_lines;
     }

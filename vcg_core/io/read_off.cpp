@@ -52,6 +52,7 @@ MeshArrays read_off(const std::string &path, const std::string &text,
   arrays.triangles.reserve(size_t(face_count));
   size_t polygons = 0;
   std::vector<int> polygon;
+  PolygonTriangulation triangulation(arrays.positions, arrays.triangles);
   for (long f = 0; f < face_count; ++f) {
     if (!lines.next())
       lines.fail_at_end("the file ends after " + std::to_string(f) + " of the " +
@@ -75,7 +76,7 @@ MeshArrays read_off(const std::string &path, const std::string &text,
       polygon.push_back(int(index));
     }
     if (corners > 3) ++polygons;
-    triangulate_polygon(polygon, arrays.positions, arrays.triangles);
+    triangulation.add(polygon);
   }
   if (polygons)
     notes.push_back("triangulated " + std::to_string(polygons) + " polygonal faces into " +

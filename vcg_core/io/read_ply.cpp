@@ -386,9 +386,10 @@ const Property *find_property(const Element &element, std::initializer_list<cons
 
 // The elements and properties a mesh is read from.
 struct MeshLayout {
-  const Element *vertices = nullptr, *faces = nullptr;
+  const Element *vertices = nullptr, *faces = nullptr, *strips = nullptr;
   const Property *coordinates[3] = {nullptr, nullptr, nullptr};
   const Property *corner_list = nullptr; // faces only
+  const Property *strip_list = nullptr;  // triangle strips: vertices, -1 between strips
 };
 
 MeshLayout mesh_layout(const std::string &path, const std::string &bytes, const Header &header,
@@ -398,6 +399,7 @@ MeshLayout mesh_layout(const std::string &path, const std::string &bytes, const 
   for (const Element &element : header.elements) {
     if (element.name == "vertex") layout.vertices = &element;
     if (element.name == "face") layout.faces = &element;
+    if (element.name == "tristrips") layout.strips = &element;
     smallest += smallest_size(element, header.encoding) * double(element.count);
   }
   if (smallest > double(bytes.size() - header.data_start))
@@ -417,9 +419,15 @@ MeshLayout mesh_layout(const std::string &path, const std::string &bytes, const 
     if (!layout.corner_list || !layout.corner_list->list || !is_integer(layout.corner_list->type))
       throw InputError(path + ":" + std::to_string(layout.faces->header_line) +
                        ": the face element has no integer list 'vertex_indices'");
-  } else {
-    notes.push_back("the PLY file has no face element (a point cloud?)");
   }
+  if (layout.strips) {
+    layout.strip_list = find_property(*layout.strips, {"vertex_indices", "vertex_index"});
+    if (!layout.strip_list || !layout.strip_list->list || !is_integer(layout.strip_list->type))
+      throw InputError(path + ":" + std::to_string(layout.strips->header_line) +
+                       ": the tristrips element has no integer list 'vertex_indices'");
+  }
+  if (!layout.faces && !layout.strips)
+    notes.push_back("the PLY file has no face element (a point cloud?)");
   return layout;
 }
 
@@ -436,20 +444,43 @@ void read_instance(ValueReader &reader, const MeshLayout &layout, const Element 
       continue;
     }
     // A list can hold no more values than bytes are left in the file.
-    const bool corners = &property == layout.corner_list;
+    const bool strip = &property == layout.strip_list;
+    const bool corners = &property == layout.corner_list || strip;
     const uint64_t length = reader.count(
-        property.count_type, corners ? vertex_count : uint64_t(reader.remaining()), what);
-    if (corners && length < 3)
+        property.count_type,
+        &property == layout.corner_list ? vertex_count : uint64_t(reader.remaining()), what);
+    if (&property == layout.corner_list && length < 3)
       reader.fail(what + " has " + std::to_string(length) + (length == 1 ? " corner" : " corners") +
                   "; a face needs at least 3");
     for (uint64_t k = 0; k < length; ++k) {
       const double number = reader.value(property.type, what);
       if (!corners) continue;
+      if (strip && number == -1) { // the end of a strip
+        polygon.push_back(-1);
+        continue;
+      }
       if (number < 0 || number >= double(vertex_count))
         reader.fail(what + " refers to vertex " + std::to_string(int64_t(number)) +
                     ", but the file has vertices 0.." + std::to_string(vertex_count - 1));
       polygon.push_back(int(number));
     }
+  }
+}
+
+// The triangles of triangle strips (vertices, -1 between strips): the k-th triangle of a strip
+// is (v[k], v[k+1], v[k+2]), its first two corners swapped when k is odd so that all face the
+// same way; triangles that use a vertex twice (the stitches between strips) are left out.
+void strips_to_triangles(const std::vector<int> &strips, std::vector<std::array<int, 3>> &out) {
+  size_t start = 0;
+  for (size_t i = 0; i <= strips.size(); ++i) {
+    if (i < strips.size() && strips[i] >= 0) continue;
+    for (size_t k = start; k + 2 < i; ++k) {
+      std::array<int, 3> triangle{strips[k], strips[k + 1], strips[k + 2]};
+      if ((k - start) % 2 == 1) std::swap(triangle[0], triangle[1]);
+      if (triangle[0] != triangle[1] && triangle[1] != triangle[2] && triangle[0] != triangle[2])
+        out.push_back(triangle);
+    }
+    start = i + 1;
   }
 }
 
@@ -472,6 +503,7 @@ MeshArrays read_ply(const std::string &path, const std::string &bytes,
     polygon_list.reserve(size_t(layout.faces->count));
   }
   std::vector<int> polygon;
+  std::vector<std::array<int, 3>> strip_triangles;
   for (const Element &element : header.elements) {
     if (element.properties.empty()) continue; // its instances take no bytes: nothing to read
     for (uint64_t i = 0; i < element.count; ++i) {
@@ -481,16 +513,23 @@ MeshArrays read_ply(const std::string &path, const std::string &bytes,
                     polygon);
       if (&element == layout.vertices) arrays.positions.push_back(position);
       if (&element == layout.faces) polygon_list.push_back(polygon);
+      if (&element == layout.strips) strips_to_triangles(polygon, strip_triangles);
     }
   }
   size_t polygons = 0;
+  PolygonTriangulation triangulation(arrays.positions, arrays.triangles);
   for (const std::vector<int> &corners : polygon_list) {
     polygons += corners.size() > 3;
-    triangulate_polygon(corners, arrays.positions, arrays.triangles);
+    triangulation.add(corners);
   }
   if (polygons)
     notes.push_back("triangulated " + std::to_string(polygons) + " polygonal faces into " +
                     std::to_string(arrays.triangles.size()) + " triangles in all");
+  if (layout.strips) {
+    notes.push_back("read " + std::to_string(strip_triangles.size()) +
+                    " triangles from triangle strips (numbered after the faces)");
+    arrays.triangles.insert(arrays.triangles.end(), strip_triangles.begin(), strip_triangles.end());
+  }
   return arrays;
 }
 

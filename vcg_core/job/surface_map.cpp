@@ -8,7 +8,9 @@
 #include "common/errors.h"
 #include "common/job_threads.h"
 #include "common/wording.h"
+#include "job/carry_back.h"
 #include "job/parts_map.h"
+#include "job/set_aside.h"
 #include "job/zero_area_put_back.h"
 #include "mesh/mesh_from_arrays.h"
 #include "mesh/nonmanifold_split.h"
@@ -88,7 +90,13 @@ void report_split(const Mesh &whole, const NonmanifoldSplit &split_spots, Parame
 
 } // namespace
 
-FindingHandling finding_handling(const Finding &finding) {
+FindingHandling finding_handling(const Finding &finding, bool strict) {
+  if (strict) {
+    const FindingHandling handling = finding_handling(finding);
+    if (handling == FindingHandling::as_it_is || handling == FindingHandling::repair)
+      return handling;
+    return finding.repairable ? FindingHandling::repair : FindingHandling::refused;
+  }
   switch (finding.kind) {
   case FindingKind::several_components:
   case FindingKind::zero_area_faces:
@@ -98,12 +106,50 @@ FindingHandling finding_handling(const Finding &finding) {
   case FindingKind::non_manifold_edges:
   case FindingKind::non_manifold_vertices:
     return FindingHandling::split_nonmanifold;
+  case FindingKind::duplicate_vertices:
+  case FindingKind::repeated_vertex_in_face:
+  case FindingKind::duplicate_faces:
+  case FindingKind::unreferenced_vertices:
+    return FindingHandling::set_aside;
   default:
     return finding.repairable ? FindingHandling::repair : FindingHandling::refused;
   }
 }
 
 namespace {
+
+Parameterization parameterize_surface_here(Mesh &input, const ParameterizeOptions &options,
+                                           const Progress &progress);
+
+// The map computed with seam duplicates welded, and doubled faces, faces that use a vertex twice
+// and vertices on no face left out (set_aside.h), carried back to every input vertex and face.
+Parameterization parameterize_without_defects(const Mesh &input, const Validation &validation,
+                                              const ParameterizeOptions &options,
+                                              const Progress &progress) {
+  SetAside aside;
+  set_aside_defects(input, validation, aside);
+  ParameterizeOptions work_options = options; // the chosen vertex and face in the work's numbers
+  work_options.set_aside_defects = false;
+  if (options.origin_vertex >= 0 && size_t(options.origin_vertex) < aside.vertex_in_work.size())
+    work_options.origin_vertex = aside.vertex_in_work[size_t(options.origin_vertex)];
+  if (options.pole_face >= 0 && size_t(options.pole_face) < aside.face_in_work.size())
+    work_options.pole_face = aside.face_in_work[size_t(options.pole_face)];
+  if ((options.origin_vertex >= 0 && work_options.origin_vertex < 0) ||
+      (options.pole_face >= 0 && work_options.pole_face < 0))
+    throw ArgumentError("the chosen origin vertex or pole face is left out of the computation (" +
+                        join_phrases(aside.notes) + ")");
+  Parameterization out;
+  try {
+    out = parameterize_surface_here(aside.work, work_options, progress);
+  } catch (const InputError &error) {
+    throw InputError(std::string(error.what()) + " (vertex and face numbers after " +
+                         join_phrases(aside.notes) + ")",
+                     error.remedies());
+  }
+  carry_back(input, aside.work.vert.size(), aside.vertex_in_work, aside.face_in_work, options, out);
+  out.notes.insert(out.notes.begin(), aside.notes.begin(), aside.notes.end());
+  return out;
+}
 
 Parameterization parameterize_surface_here(Mesh &input, const ParameterizeOptions &options,
                                            const Progress &progress) {
@@ -113,6 +159,8 @@ Parameterization parameterize_surface_here(Mesh &input, const ParameterizeOption
                         "the unit square) needs spherical ones; stereographic ones are unbounded",
                         {Remedy::choose_uv_kind});
   Validation validation = validate_mesh(input);
+  if (options.set_aside_defects && has_defects_to_set_aside(validation))
+    return parameterize_without_defects(input, validation, options, progress);
   const std::vector<std::string> input_notes = validation.notes;
   // Non-manifold spots taken apart first: what is left is judged on the split mesh.
   const bool nonmanifold = validation.find(FindingKind::non_manifold_edges) ||

@@ -52,10 +52,12 @@ Parameterization parameterize_arrays(const VertexPositions &V, const TriangleCor
                                      const Progress &progress = {});
 
 // What parameterize_surface does with a finding of validation.h: maps the mesh as it is (several
-// parts, zero-area faces), does so when an option asks (close_holes, split_nonmanifold, or the
-// safe repairs of repair.h applied first), or refuses it.
-enum class FindingHandling { as_it_is, close_holes, split_nonmanifold, repair, refused };
-FindingHandling finding_handling(const Finding &finding);
+// parts, zero-area faces), deals with it for the computation unless the options say not to
+// (close_holes, split_nonmanifold, set_aside_defects: all on by default), maps it once the safe
+// repairs of repair.h are applied first, or refuses it.
+// `strict`: with none of those options (the first three handlings do not occur).
+enum class FindingHandling { as_it_is, close_holes, split_nonmanifold, set_aside, repair, refused };
+FindingHandling finding_handling(const Finding &finding, bool strict = false);
 
 // The layered sphere as a mesh: `map.layered` positions on the input's faces (on the split
 // mesh's vertices and faces when non-manifold spots were taken apart).

@@ -42,14 +42,18 @@ struct ParameterizeOptions {
   double layer_gap = 0.0;               // layer k on the sphere of radius 1 + gap * k
   int pole_face = -1;                   // genus 0: the face at the pole (-1: automatic)
   SolverKind solver = SolverKind::cholmod;
-  bool close_holes = false; // parameterize_surface: close holes for the computation only
+  bool close_holes = true; // parameterize_surface: close holes for the computation only
   // parameterize_surface, several parts, spherical texture coordinates: part k's texture in cell k
   // of a grid of n x n cells over the unit square (n = ceil(sqrt(parts)), row by row from the
   // bottom left) instead of each filling the unit square.
   bool pack_uv = false;
   // parameterize_surface: take non-manifold vertices and edges apart for the computation
   // (nonmanifold_split.h) instead of refusing the mesh.
-  bool split_nonmanifold = false;
+  bool split_nonmanifold = true;
+  // parameterize_surface: weld seam duplicates and leave doubled faces, faces that use a vertex
+  // twice and vertices on no face out of the computation (job/set_aside.h) instead of refusing
+  // the mesh; the outputs keep them all.
+  bool set_aside_defects = true;
   // After centring: the Moebius transformation that makes the map most even in area
   // (area_correction.h); conformality is unchanged, the texture density spreads more evenly.
   bool area_correct = false;

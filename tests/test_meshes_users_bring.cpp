@@ -1,0 +1,202 @@
+// Meshes as users bring them, mapped with the defaults: seam duplicates, doubled faces, vertices
+// on no face, triangle strips, quads that share three vertices. The map is computed on the
+// surface without those defects, so what is written for the input's own vertices must be the
+// map of the clean surface to the bit, and the extra vertices and faces must carry their twins'
+// values; the clean map itself is judged by the suite's own reader (written_map.h).
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "io/mesh_reader.h"
+#include "mesh/mesh_from_arrays.h"
+#include "test_support.h"
+#include "written_map.h"
+
+namespace meromorph {
+namespace {
+
+using Positions = std::vector<std::array<double, 3>>;
+using Triangles = std::vector<std::array<int, 3>>;
+
+// A torus as a grid of `major` x `minor` quads, each split along the same diagonal.
+void grid_torus(int major, int minor, Positions &positions, Triangles &triangles) {
+  for (int i = 0; i < major; ++i)
+    for (int j = 0; j < minor; ++j) {
+      const double u = 2 * M_PI * i / major, v = 2 * M_PI * j / minor;
+      positions.push_back({(1 + 0.4 * std::cos(v)) * std::cos(u),
+                           (1 + 0.4 * std::cos(v)) * std::sin(u), 0.4 * std::sin(v)});
+    }
+  for (int i = 0; i < major; ++i)
+    for (int j = 0; j < minor; ++j) {
+      const int a = i * minor + j, b = ((i + 1) % major) * minor + j;
+      const int c = ((i + 1) % major) * minor + (j + 1) % minor, d = i * minor + (j + 1) % minor;
+      triangles.push_back({a, b, c});
+      triangles.push_back({a, c, d});
+    }
+}
+
+struct Written {
+  test::WrittenMesh surface, sphere;
+};
+
+Written map_with_defaults(const test::TempDir &dir, const std::string &input) {
+  const std::string name = input.substr(input.rfind('/') + 1);
+  const test::RunResult r = test::run_cli({"param", input, "-o", dir.path(name + ".uv.ply"),
+                                           "--sphere", dir.path(name + ".sphere.ply"), "--report",
+                                           dir.path(name + ".json"), "--quiet"});
+  EXPECT_EQ(r.exit_code, 0) << name << ": " << r.err;
+  if (r.exit_code != 0) return {};
+  return {test::read_written_mesh(dir.path(name + ".uv.ply"), false),
+          test::read_written_mesh(dir.path(name + ".sphere.ply"))};
+}
+
+// Per-vertex values of `column` at vertex `v` of both files equal.
+void expect_same_vertex(const Written &a, size_t va, const Written &b, size_t vb,
+                        const std::string &what) {
+  for (const char *column : {"texture_u", "texture_v"})
+    EXPECT_EQ(a.surface.columns.at(column)[va], b.surface.columns.at(column)[vb])
+        << what << ": " << column << " of vertex " << va << " and " << vb;
+  for (const char *column : {"x", "y", "z", "layer", "branch"})
+    EXPECT_EQ(a.sphere.columns.at(column)[va], b.sphere.columns.at(column)[vb])
+        << what << ": sphere " << column << " of vertex " << va << " and " << vb;
+}
+
+std::string report_notes(const test::TempDir &dir, const std::string &name) {
+  std::ifstream report(dir.path(name + ".json"));
+  std::stringstream text;
+  text << report.rdbuf();
+  return text.str();
+}
+
+// The clean torus, and the same with every defect a downloaded mesh has, appended after its own
+// vertices and faces: its written values are the clean torus's to the bit.
+TEST(MeshesUsersBring, DefectsAreLeftOutAndTheOutputsKeepThem) {
+  test::TempDir dir;
+  Positions positions;
+  Triangles triangles;
+  grid_torus(24, 12, positions, triangles);
+  const size_t n = positions.size(), m = triangles.size();
+  const Written clean =
+      map_with_defaults(dir, dir.write("clean.off", test::off_text(positions, triangles)));
+  ASSERT_FALSE(clean.sphere.triangles.empty());
+  const test::WrittenMap clean_map = test::read_written_map(dir.path("clean.off.sphere.ply"), 0);
+  EXPECT_TRUE(clean_map.folded_faces.empty());
+  EXPECT_EQ(clean_map.degree, 2);
+  EXPECT_TRUE(clean_map.riemann_hurwitz);
+
+  // A seam: the faces of the first ring of quads refer to copies of the ring's vertices (as an
+  // exporter splits vertices along a texture seam), which sit at the same positions.
+  Positions seam_positions = positions;
+  Triangles seam_triangles = triangles;
+  std::map<int, int> copy_of;
+  for (int j = 0; j < 12; ++j) {
+    copy_of[j] = int(seam_positions.size());
+    seam_positions.push_back(positions[size_t(j)]);
+  }
+  for (size_t f = 0; f < 2 * 12; ++f) // the quads between ring 0 and ring 1
+    for (int &corner : seam_triangles[f])
+      if (copy_of.count(corner)) corner = copy_of[corner];
+  // A vertex on no face, and two faces written twice (one the other way round).
+  seam_positions.push_back({5, 5, 5});
+  seam_triangles.push_back(triangles[100]);
+  seam_triangles.push_back({triangles[7][0], triangles[7][2], triangles[7][1]});
+  const Written defects = map_with_defaults(
+      dir, dir.write("defects.off", test::off_text(seam_positions, seam_triangles)));
+  ASSERT_EQ(defects.sphere.triangles.size(), m + 2) << "every input face is written";
+  ASSERT_EQ(defects.surface.columns.at("x").size(), n + 13) << "every input vertex is written";
+  for (size_t v = 0; v < n; ++v)
+    expect_same_vertex(defects, v, clean, v, "the torus's own vertex");
+  for (const auto &[original, copy] : copy_of)
+    expect_same_vertex(defects, size_t(copy), clean, size_t(original), "a seam copy");
+  // The faces are the input's, in order, on the input's vertices.
+  for (size_t f = 0; f < m + 2; ++f)
+    EXPECT_EQ(defects.sphere.triangles[f], seam_triangles[f]) << "face " << f;
+  // The vertex on no face: at the north pole of layer 0.
+  EXPECT_EQ(defects.sphere.columns.at("z")[n + 12], 1.0);
+  EXPECT_EQ(defects.sphere.columns.at("layer")[n + 12], 0.0);
+  const std::string notes = report_notes(dir, "defects.off");
+  for (const char *said :
+       {"12 seam duplicate vertices welded", "2 doubled faces", "1 vertex on no face"})
+    EXPECT_NE(notes.find(said), std::string::npos) << said << " in " << notes;
+
+  // --strict refuses it, naming the first problem.
+  const test::RunResult strict = test::run_cli(
+      {"param", dir.path("defects.off"), "-o", dir.path("strict.ply"), "--strict", "--quiet"});
+  EXPECT_EQ(strict.exit_code, 3) << strict.err;
+  EXPECT_FALSE(std::ifstream(dir.path("strict.ply")).good());
+}
+
+// The torus written as a PLY of triangle strips (one per ring of quads, as stripifiers write
+// them): read as the same surface and mapped validly.
+TEST(MeshesUsersBring, TriangleStripsAreRead) {
+  test::TempDir dir;
+  Positions positions;
+  Triangles triangles;
+  const int major = 24, minor = 12;
+  grid_torus(major, minor, positions, triangles);
+  std::vector<int> strips;
+  for (int i = 0; i < major; ++i) {
+    for (int j = 0; j <= minor; ++j) {
+      strips.push_back(i * minor + j % minor);
+      strips.push_back(((i + 1) % major) * minor + j % minor);
+    }
+    strips.push_back(-1);
+  }
+  std::ostringstream ply;
+  ply.precision(17);
+  ply << "ply\nformat ascii 1.0\nelement vertex " << positions.size()
+      << "\nproperty float x\nproperty float y\nproperty float z\n"
+      << "element tristrips 1\nproperty list int int vertex_indices\nend_header\n";
+  for (const auto &p : positions)
+    ply << p[0] << " " << p[1] << " " << p[2] << "\n";
+  ply << strips.size();
+  for (int v : strips)
+    ply << " " << v;
+  ply << "\n";
+  const std::string path = dir.write("strips.ply", ply.str());
+  Mesh mesh;
+  read_mesh(path, mesh);
+  const MeshArrays arrays = arrays_from_mesh(mesh);
+  ASSERT_EQ(arrays.triangles.size(), size_t(2 * major * minor));
+  // Every triangle of the grid, once, turned the same way.
+  std::set<std::array<int, 3>> read;
+  for (auto t : arrays.triangles) {
+    std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end());
+    read.insert(t);
+  }
+  EXPECT_EQ(read.size(), arrays.triangles.size());
+  map_with_defaults(dir, path);
+  const test::WrittenMap map = test::read_written_map(dir.path("strips.ply.sphere.ply"), 0);
+  EXPECT_TRUE(map.folded_faces.empty());
+  EXPECT_EQ(map.degree, 2);
+  EXPECT_TRUE(map.riemann_hurwitz);
+}
+
+// Two quads on three shared vertices (as modelling tools write them around a pole), each split
+// along the shorter diagonal, would make the same triangle twice: the second is split along the
+// other.
+TEST(MeshesUsersBring, QuadsSharingThreeVerticesMakeNoDoubledTriangles) {
+  test::TempDir dir;
+  const std::string path = dir.write("quads.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                                  "v 1.2 1.3 0.5\nf 1 2 3 4\nf 1 2 3 5\n");
+  Mesh mesh;
+  read_mesh(path, mesh);
+  const MeshArrays arrays = arrays_from_mesh(mesh);
+  ASSERT_EQ(arrays.triangles.size(), 4u);
+  std::set<std::array<int, 3>> corners;
+  for (auto t : arrays.triangles) {
+    std::sort(t.begin(), t.end());
+    corners.insert(t);
+  }
+  EXPECT_EQ(corners.size(), 4u);
+}
+
+} // namespace
+} // namespace meromorph
