@@ -130,9 +130,17 @@ TEST(Validation, FaceWithRepeatedVertex) {
 TEST(Validation, ZeroAreaFace) {
   Crafted mesh = tetra();
   mesh.positions[3] = {0.5, 0, 0}; // on the edge 0-1: face (0, 1, 3) is flat
-  const Finding f = expect_finding(check(mesh, "flat"), FindingKind::zero_area_faces);
-  EXPECT_EQ(f.faces, (std::vector<int>{1}));
-  EXPECT_NE(f.message.find("zero area"), std::string::npos);
+  const Checked checked = check(mesh, "flat");
+  const Finding *f = checked.validation.find(FindingKind::zero_area_faces);
+  ASSERT_NE(f, nullptr);
+  EXPECT_EQ(f->faces, (std::vector<int>{1}));
+  EXPECT_NE(f->message.find("zero area"), std::string::npos);
+  EXPECT_NE(checked.cli.out.find("meromorph param maps it as it is:"), std::string::npos);
+  // Taking the flat face out (its longest edge flipped) leaves two faces on the same three
+  // vertices: param refuses that, and info, which runs param's preparation, says so.
+  EXPECT_EQ(checked.cli.exit_code, 3);
+  EXPECT_NE(checked.cli.err.find("after zero-area faces were taken out"), std::string::npos)
+      << checked.cli.err;
 }
 
 TEST(Validation, DuplicateVertices) {

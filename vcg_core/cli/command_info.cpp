@@ -107,6 +107,19 @@ const Finding *refused_as_it_is(const Validation &validation, bool strict) {
 
 int run_info(const InfoOptions &options);
 
+// Why param (with --strict or not) refuses the mesh before computing anything; "" when it does not.
+std::string what_preparation_refuses(Mesh &mesh, bool strict) {
+  ParameterizeOptions settings;
+  settings.close_holes = settings.split_nonmanifold = settings.set_aside_defects = !strict;
+  settings.prepare_only = true;
+  try {
+    parameterize_surface(mesh, settings);
+  } catch (const InputError &error) {
+    return with_remedies(error.what(), error.remedies());
+  }
+  return "";
+}
+
 // `info --json` always prints JSON: a file that cannot be read gives the error in it.
 int run_info_catching(const InfoOptions &options) {
   if (!options.json) return run_info(options);
@@ -137,6 +150,11 @@ int run_info(const InfoOptions &options) {
     validation = validate_mesh(mesh);
   }
   const Topology topology = compute_topology(mesh);
+  // What no finding tells: param's own preparation (the parts, the holes closed, the zero-area
+  // faces taken out), run up to the map, refuses what param would.
+  std::string preparation_refuses;
+  if (!validation.ok() && !refused_as_it_is(validation, options.strict))
+    preparation_refuses = what_preparation_refuses(mesh, options.strict);
 
   if (options.json) {
     nlohmann::json findings = findings_json(validation);
@@ -147,15 +165,24 @@ int run_info(const InfoOptions &options) {
         {"input", source_json(source)},
         {"topology", topology_json(topology)},
         {"findings", findings},
-        {"param_maps_it_as_it_is", refused_as_it_is(validation, options.strict) == nullptr},
+        {"param_maps_it_as_it_is",
+         !refused_as_it_is(validation, options.strict) && preparation_refuses.empty()},
         {"repairs", repairs},
         {"notes", validation.notes},
         {"ok", validation.ok()},
         {"version", MEROMORPH_VERSION}};
     if (!repairs.empty()) report["findings_before_repair"] = findings_json(before_repair);
+    if (!preparation_refuses.empty()) report["param_refuses"] = preparation_refuses;
     std::cout << json_text(report) << "\n";
   } else {
     print_text(source, topology, validation, repairs, options.strict);
+    if (!preparation_refuses.empty())
+      std::cout << "  cannot be parameterized as it is:\n  - " << preparation_refuses << "\n";
+  }
+  if (!preparation_refuses.empty()) {
+    std::cerr << "meromorph: " << options.input
+              << " cannot be parameterized as it is: " << preparation_refuses << "\n";
+    return int(ExitCode::cannot_parameterize);
   }
   // What param maps, as it is or dealing with it for the computation, is no reason to fail.
   if (const Finding *first = refused_as_it_is(validation, options.strict)) {

@@ -146,6 +146,7 @@ Parameterization parameterize_without_defects(const Mesh &input, const Validatio
                          join_phrases(aside.notes) + ")",
                      error.remedies());
   }
+  if (options.prepare_only) return out;
   carry_back(input, aside.work.vert.size(), aside.vertex_in_work, aside.face_in_work, options, out);
   out.notes.insert(out.notes.begin(), aside.notes.begin(), aside.notes.end());
   return out;
@@ -208,6 +209,10 @@ Parameterization parameterize_surface_here(Mesh &input, const ParameterizeOption
                                                               input_notes.end(), note) == 0;
                                           }),
                            validation.notes.end());
+  if (options.prepare_only) { // every refusal about the mesh's structure made, nothing computed
+    if (!validation.ok()) split_into_closed_parts(mesh, options.close_holes);
+    return {};
+  }
   Parameterization out = validation.ok() ? parameterize(mesh, options, progress, &validation)
                                          : parameterize_parts(mesh, validation, options, progress);
   if (flat) {

@@ -54,6 +54,9 @@ struct ParameterizeOptions {
   // twice and vertices on no face out of the computation (job/set_aside.h) instead of refusing
   // the mesh; the outputs keep them all.
   bool set_aside_defects = true;
+  // parameterize_surface: stop before the map is computed, once every refusal about the mesh's
+  // structure is made (what `meromorph info` asks); the result is then empty.
+  bool prepare_only = false;
   // After centring: the Moebius transformation that makes the map most even in area
   // (area_correction.h); conformality is unchanged, the texture density spreads more evenly.
   bool area_correct = false;
