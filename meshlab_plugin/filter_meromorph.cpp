@@ -229,7 +229,7 @@ FetchedMap fetch_map(const meromorph_result *result, size_t vertex_count, size_t
   map.branch_degrees.resize(map.branch_vertices.size());
   if (!map.branch_vertices.empty())
     meromorph_branch_points(result, map.branch_vertices.data(), map.branch_degrees.data());
-  meromorph_map_distortion(result, &map.distortion);
+  meromorph_map_distortion_away_from_branch_points(result, &map.distortion);
   map.genus = meromorph_genus(result);
   map.degree = meromorph_degree(result);
   map.riemann_hurwitz = meromorph_riemann_hurwitz_ok(result) != 0;
@@ -341,13 +341,13 @@ bool FilterMeromorphPlugin::applyFilter(QAction *action, MeshDocument &document,
   if (parameters.getBool("layeredSphere")) add_sphere_layer(document, model->label(), map);
 
   Log("Conformal spherical parameterization: genus %d, degree %d, %d branch points%s%s; "
-      "Riemann-Hurwitz %s; angle error %.2f deg, quasi-conformal mean %.3f, folded faces %d away "
-      "from branch points; %lld ms",
+      "Riemann-Hurwitz %s; away from branch points: angle error %.2f deg, quasi-conformal mean "
+      "%.3f (95th percentile %.3f), folded faces %d; %lld ms",
       map.genus, map.degree, int(map.branch_vertices.size()),
       map.branch_vertices.empty() ? "" : ": ", branch_list(map).toStdString().c_str(),
       map.riemann_hurwitz ? "holds" : "FAILS", map.distortion.angle_error_mean_degrees,
-      map.distortion.quasi_conformal_mean, int(map.distortion.folded_faces_away_from_branch_points),
-      (long long)timer.elapsed());
+      map.distortion.quasi_conformal_mean, map.distortion.quasi_conformal_p95,
+      int(map.distortion.folded_faces_away_from_branch_points), (long long)timer.elapsed());
   for (const QJsonValue &note : map.notes)
     Log("Conformal spherical parameterization: %s", note.toString().toStdString().c_str());
   if (!map.valid)

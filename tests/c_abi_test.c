@@ -154,6 +154,18 @@ int main(void) {
     CHECK(old_name.angle_error_mean_degrees == distortion.angle_error_mean_degrees);
   }
   CHECK(distortion.quasi_conformal_mean >= 1.0);
+  {
+    /* Away from the four branch points (where the map cannot be conformal): less distortion,
+       the worst faces left out. */
+    meromorph_distortion away;
+    CHECK(meromorph_map_distortion_away_from_branch_points(result, &away) == MEROMORPH_OK);
+    CHECK(away.folded_faces == 0 && away.folded_faces_away_from_branch_points == 0);
+    CHECK(away.quasi_conformal_mean >= 1.0 &&
+          away.quasi_conformal_mean < distortion.quasi_conformal_mean);
+    CHECK(away.quasi_conformal_max < distortion.quasi_conformal_max);
+    CHECK(meromorph_map_distortion_away_from_branch_points(NULL, &away) ==
+          MEROMORPH_ERROR_ARGUMENT);
+  }
   CHECK(strstr(meromorph_report_json(result), "\"degree\": 2") != NULL);
   meromorph_result_free(result);
   result = NULL;

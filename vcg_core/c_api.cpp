@@ -520,6 +520,18 @@ meromorph_status meromorph_map_distortion(const meromorph_result *r, meromorph_d
   return MEROMORPH_OK;
 }
 
+meromorph_status meromorph_map_distortion_away_from_branch_points(const meromorph_result *r,
+                                                                  meromorph_distortion *d) {
+  MEROMORPH_CHECK(r, d);
+  const auto &away = r->map.quality.away_from_branch_points;
+  d->angle_error_mean_degrees = away.angle_error_mean_degrees;
+  d->quasi_conformal_mean = away.quasi_conformal_mean;
+  d->quasi_conformal_p95 = away.quasi_conformal_p95;
+  d->quasi_conformal_max = away.quasi_conformal_max;
+  d->folded_faces_away_from_branch_points = d->folded_faces = away.folded_faces;
+  return MEROMORPH_OK;
+}
+
 const char *meromorph_report_json(const meromorph_result *r) {
   return r ? r->report.c_str() : "";
 }

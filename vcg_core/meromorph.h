@@ -247,6 +247,11 @@ typedef struct meromorph_distortion {
    Returns: MEROMORPH_OK, or MEROMORPH_ERROR_ARGUMENT if a pointer is NULL. */
 MEROMORPH_API meromorph_status meromorph_map_distortion(const meromorph_result *result,
                                                         meromorph_distortion *distortion);
+/* The same over the faces that touch no branch point (where the map is conformal; at a branch
+   point it cannot be): the figures to show first. folded_faces is then the same as
+   folded_faces_away_from_branch_points. Since meromorph 0.2. */
+MEROMORPH_API meromorph_status meromorph_map_distortion_away_from_branch_points(
+    const meromorph_result *result, meromorph_distortion *distortion);
 /* The same under its old name (kept for one release). */
 MEROMORPH_API meromorph_status meromorph_get_distortion(const meromorph_result *result,
                                                         meromorph_distortion *distortion);

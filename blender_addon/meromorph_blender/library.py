@@ -91,7 +91,8 @@ def load():
             getattr(lib, "meromorph_" + name).argtypes = [ctypes.c_void_p]
         for name in ("sphere_positions", "layered_positions", "vertex_uvs", "corner_uvs", "layers",
                      "vertex_components",
-                     "report_json", "result_free", "map_distortion"):
+                     "report_json", "result_free", "map_distortion",
+                     "map_distortion_away_from_branch_points"):
             getattr(lib, "meromorph_" + name).argtypes = [ctypes.c_void_p] + (
                 [] if name in ("report_json", "result_free") else [ctypes.c_void_p])
         lib.meromorph_branch_points.argtypes = [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
@@ -226,11 +227,14 @@ def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
             statuses.append(lib.meromorph_branch_points(
                 result, out["branch_vertices"].ctypes.data, out["branch_degrees"].ctypes.data))
         distortion = Distortion()
-        statuses.append(lib.meromorph_map_distortion(result, ctypes.byref(distortion)))
+        statuses.append(lib.meromorph_map_distortion_away_from_branch_points(
+            result, ctypes.byref(distortion)))
         if any(statuses):
             raise MeromorphError(1, "reading the result failed: %s"
                                  % lib.meromorph_last_error().decode("utf-8", "replace"))
-        out["angle_error"] = distortion.angle_error_mean_degrees
+        out["angle_error"] = distortion.angle_error_mean_degrees  # away from branch points
+        out["quasi_conformal_mean"] = distortion.quasi_conformal_mean
+        out["quasi_conformal_p95"] = distortion.quasi_conformal_p95
         out["folded_away"] = distortion.folded_faces_away_from_branch_points
         out["genus"] = lib.meromorph_genus(result)
         out["degree"] = lib.meromorph_degree(result)

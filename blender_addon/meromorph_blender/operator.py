@@ -181,13 +181,15 @@ class MESH_OT_conformal_sphere_map(ActiveMeshOperator, bpy.types.Operator):
             self.make_sphere_object(context, obj, result)
 
         elapsed = time.time() - started
-        self.report({"INFO"}, "%s: genus %d, degree %d, %d branch points, angle error %.2f deg, "
-                    "%.2f s%s" % (obj.name, result["genus"], result["degree"], len(branch),
-                                  result["angle_error"], elapsed,
-                                  "" if result["valid"]
-                                  else "; WARNING: not a valid map on this triangulation: "
-                                  + result["invalid_reasons"] + ". What to do: "
-                                  + remedies.advice_words(result["advice"])))
+        self.report({"INFO"}, "%s: genus %d, degree %d, %d branch points; away from them: angle "
+                    "error %.2f deg, quasi-conformal mean %.2f (95th percentile %.2f); %.2f s%s"
+                    % (obj.name, result["genus"], result["degree"], len(branch),
+                       result["angle_error"], result["quasi_conformal_mean"],
+                       result["quasi_conformal_p95"], elapsed,
+                       "" if result["valid"]
+                       else "; WARNING: not a valid map on this triangulation: "
+                       + result["invalid_reasons"] + ". What to do: "
+                       + remedies.advice_words(result["advice"])))
         return {"FINISHED"}
 
     def make_sphere_object(self, context, obj, result):
