@@ -508,15 +508,23 @@ meromorph_status meromorph_get_distortion(const meromorph_result *r, meromorph_d
   return meromorph_map_distortion(r, d);
 }
 
+namespace {
+
+void copy_distortion(const meromorph::QualityStatistics &figures, int folded_away,
+                     meromorph_distortion *d) {
+  d->angle_error_mean_degrees = figures.angle_error_mean_degrees;
+  d->quasi_conformal_mean = figures.quasi_conformal_mean;
+  d->quasi_conformal_p95 = figures.quasi_conformal_p95;
+  d->quasi_conformal_max = figures.quasi_conformal_max;
+  d->folded_faces_away_from_branch_points = folded_away;
+  d->folded_faces = figures.folded_faces;
+}
+
+} // namespace
+
 meromorph_status meromorph_map_distortion(const meromorph_result *r, meromorph_distortion *d) {
   MEROMORPH_CHECK(r, d);
-  const auto &all = r->map.quality.overall;
-  d->angle_error_mean_degrees = all.angle_error_mean_degrees;
-  d->quasi_conformal_mean = all.quasi_conformal_mean;
-  d->quasi_conformal_p95 = all.quasi_conformal_p95;
-  d->quasi_conformal_max = all.quasi_conformal_max;
-  d->folded_faces_away_from_branch_points = r->map.quality.away_from_branch_points.folded_faces;
-  d->folded_faces = all.folded_faces;
+  copy_distortion(r->map.quality.overall, r->map.quality.away_from_branch_points.folded_faces, d);
   return MEROMORPH_OK;
 }
 
@@ -524,11 +532,7 @@ meromorph_status meromorph_map_distortion_away_from_branch_points(const meromorp
                                                                   meromorph_distortion *d) {
   MEROMORPH_CHECK(r, d);
   const auto &away = r->map.quality.away_from_branch_points;
-  d->angle_error_mean_degrees = away.angle_error_mean_degrees;
-  d->quasi_conformal_mean = away.quasi_conformal_mean;
-  d->quasi_conformal_p95 = away.quasi_conformal_p95;
-  d->quasi_conformal_max = away.quasi_conformal_max;
-  d->folded_faces_away_from_branch_points = d->folded_faces = away.folded_faces;
+  copy_distortion(away, away.folded_faces, d);
   return MEROMORPH_OK;
 }
 

@@ -94,18 +94,19 @@ void set_aside_defects(const Mesh &input, const Validation &validation, SetAside
     out.vertex_in_work[v] = renumbered[size_t(into[v])];
   mesh_from_arrays(work, out.work);
 
-  const std::string kept_note = " for the computation (the outputs keep them, with the values of ";
-  if (welded)
-    out.notes.push_back(plural(size_t(welded), "seam duplicate vertex", "seam duplicate vertices") +
-                        " welded into the vertex at the same position" + kept_note +
-                        "the vertex they sit on)");
-  if (repeating)
-    out.notes.push_back(plural(size_t(repeating), "face that uses", "faces that use") +
-                        " a vertex twice left out" + kept_note + "their corners)");
-  if (doubled)
-    out.notes.push_back(plural(size_t(doubled), "doubled face", "doubled faces") +
-                        " (on the same three vertices as an earlier face) left out" + kept_note +
-                        "their corners)");
+  // "N things <what> for the computation (the outputs keep them, with the values of <whose>)"
+  auto note = [&](int count, const char *one, const char *many, const std::string &what,
+                  const std::string &whose) {
+    if (count)
+      out.notes.push_back(plural(size_t(count), one, many) + what +
+                          " for the computation (the outputs keep them, with the values of " +
+                          whose + ")");
+  };
+  note(welded, "seam duplicate vertex", "seam duplicate vertices",
+       " welded into the vertex at the same position", "the vertex they sit on");
+  note(repeating, "face that uses", "faces that use", " a vertex twice left out", "their corners");
+  note(doubled, "doubled face", "doubled faces",
+       " (on the same three vertices as an earlier face) left out", "their corners");
   if (unreferenced)
     out.notes.push_back(plural(size_t(unreferenced), "vertex", "vertices") +
                         " on no face left out of the computation: the outputs keep them at the "
