@@ -4,11 +4,13 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <set>
 
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <sys/un.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
@@ -115,6 +117,26 @@ TEST(Outputs, AllOrNothing) {
 // refused with exit 2 before any work and stay what they were; one new file spelled two ways
 // (relative, through `.` or `..`) is refused; written outputs get the permissions of any new
 // file (the umask), and no staging folder is left behind.
+// A write that fails half-way (here: a file size limit, as a full disk) is reported under the
+// output's own name, not the temporary one it was being written to, and leaves nothing behind.
+TEST(Outputs, AFailedWriteNamesTheOutput) {
+  TempDir dir;
+  const std::string command = "ulimit -f 8; trap '' XFSZ; exec '" + std::string(MEROMORPH_CLI) +
+                              "' param '" + test::data_path("kitten.nv40k.off") + "' -o '" +
+                              dir.path("big.ply") + "' --quiet 2>'" + dir.path("err") + "'";
+  const int status = std::system(("sh -c \"" + command + "\"").c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 4);
+  std::ifstream err_stream(dir.path("err"));
+  const std::string err((std::istreambuf_iterator<char>(err_stream)), {});
+  EXPECT_NE(err.find(dir.path("big.ply") + ": could not be written"), std::string::npos) << err;
+  EXPECT_EQ(err.find(".big.ply.meromorph-"), std::string::npos) << "no temporary name: " << err;
+  size_t left = 0;
+  for (const auto &entry : std::filesystem::directory_iterator(dir.path("")))
+    left += entry.path().filename() != "err";
+  EXPECT_EQ(left, 0u) << "nothing but the captured error is left";
+}
+
 TEST(Outputs, StagingCannotBeRedirected) {
   TempDir dir;
   const std::string original = file_text(test::data_path("eight.off"));

@@ -63,10 +63,11 @@ int run_forms(const FormsOptions &options) {
   if (forms.modulus) report["modulus"] = {forms.modulus->real(), forms.modulus->imag()};
   if (forms.genus >= 2) report["riemann_matrix"] = complex_matrix_json(forms.riemann_matrix);
 
-  if (!options.report.empty()) {
-    write_text_file(report_file, json_text(report) + "\n");
-    outputs.commit();
-  }
+  if (!options.report.empty())
+    outputs.writing([&] {
+      write_text_file(report_file, json_text(report) + "\n");
+      outputs.commit();
+    });
   // Standard output carries the JSON alone when no report file is named: the summary line then
   // goes to standard error.
   if (!options.quiet) {

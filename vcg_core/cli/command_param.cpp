@@ -183,16 +183,17 @@ int run_param(const ParamOptions &options) {
     }
   }
 
-  write_surface(mesh, map, surface_format, output_file);
-  if (!options.sphere.empty()) write_layered_sphere(mesh, map, sphere_file);
-
   nlohmann::json report = parameterization_json(map);
   report["input"] = source_json(input.source);
   report["repairs"] = input.repairs;
   report["timings_ms"]["read"] = input.read_ms;
   report["version"] = MEROMORPH_VERSION;
-  if (!options.report.empty()) write_text_file(report_file, json_text(report) + "\n");
-  outputs.commit();
+  outputs.writing([&] {
+    write_surface(mesh, map, surface_format, output_file);
+    if (!options.sphere.empty()) write_layered_sphere(mesh, map, sphere_file);
+    if (!options.report.empty()) write_text_file(report_file, json_text(report) + "\n");
+    outputs.commit();
+  });
 
   const double total_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

@@ -91,14 +91,16 @@ int run_remesh(const RemeshCommandOptions &options) {
   remesh_through_sphere(mesh, map, remesh_options, bar.progress().range(0.6, 1.0), remesh);
   bar.finish();
 
-  write_remesh(remesh, remesh_format, output_file);
   nlohmann::json report = parameterization_json(map);
   report["input"] = source_json(input.source);
   report["repairs"] = input.repairs;
   report["remesh"] = remesh_json(remesh);
   report["version"] = MEROMORPH_VERSION;
-  if (!options.report.empty()) write_text_file(report_file, json_text(report) + "\n");
-  outputs.commit();
+  outputs.writing([&] {
+    write_remesh(remesh, remesh_format, output_file);
+    if (!options.report.empty()) write_text_file(report_file, json_text(report) + "\n");
+    outputs.commit();
+  });
   if (!options.quiet) {
     warn_sparse_regions(remesh);
     std::cout << remesh_summary(options.input, map, remesh) << "\n";

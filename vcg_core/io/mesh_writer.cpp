@@ -112,8 +112,11 @@ void write_mesh(const Mesh &mesh, const std::string &path, const WriteOptions &o
                 const std::vector<std::string> &protected_inputs) {
   const MeshFormat format = output_format(path);
   StagedOutputs outputs(protected_inputs);
-  save_mesh(mesh, format, outputs.add(path), options);
-  outputs.commit();
+  const std::string temporary = outputs.add(path);
+  outputs.writing([&] {
+    save_mesh(mesh, format, temporary, options);
+    outputs.commit();
+  });
 }
 
 } // namespace meromorph

@@ -108,6 +108,14 @@ void StagedOutputs::commit() {
   temporaries_.clear();
 }
 
+std::string StagedOutputs::in_output_names(std::string message) const {
+  for (size_t i = 0; i < temporaries_.size() && i < outputs_.size(); ++i)
+    for (size_t at = message.find(temporaries_[i]); at != std::string::npos;
+         at = message.find(temporaries_[i], at + outputs_[i].size()))
+      message.replace(at, temporaries_[i].size(), outputs_[i]);
+  return message;
+}
+
 void write_text_file(const std::string &path, const std::string &text) {
   std::FILE *file = std::fopen(path.c_str(), "wb");
   if (!file) throw WriteError(path + ": could not be written (" + std::strerror(errno) + ")");

@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "common/errors.h"
+
 namespace meromorph {
 
 class StagedOutputs {
@@ -29,6 +31,17 @@ public:
   std::string add(const std::string &path);
   // Moves every temporary file into place.
   void commit();
+  // Runs `write` (which writes the temporary files); a WriteError it throws names the outputs,
+  // not their temporary paths.
+  template <class Write> void writing(Write &&write) {
+    try {
+      write();
+    } catch (const WriteError &error) {
+      throw WriteError(in_output_names(error.what()));
+    }
+  }
+  // `message` with every temporary path replaced by its output's path.
+  std::string in_output_names(std::string message) const;
 
 private:
   std::vector<std::string> inputs_, outputs_, folders_, temporaries_;
