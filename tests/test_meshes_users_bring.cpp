@@ -198,5 +198,25 @@ TEST(MeshesUsersBring, QuadsSharingThreeVerticesMakeNoDoubledTriangles) {
   EXPECT_EQ(corners.size(), 4u);
 }
 
+// Where the file's polygons were split into triangles, a message that names triangles also names
+// the file's own faces they are in.
+TEST(MeshesUsersBring, MessagesNameTheFilesOwnFaces) {
+  test::TempDir dir;
+  const std::string path = dir.write("pyramid.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                                    "v 0.5 0.5 1\nf 1 4 3 2\nf 1 2 5\nf 2 3 5\n"
+                                                    "f 3 4 5\nf 4 1 5\nf 1 2 5\n");
+  const test::RunResult strict =
+      test::run_cli({"param", path, "-o", dir.path("p.ply"), "--strict", "--quiet"});
+  EXPECT_EQ(strict.exit_code, 3);
+  EXPECT_NE(strict.err.find("faces 2 and 6 (numbered as triangles; in the file, triangle 2 is in "
+                            "face 1, triangle 6 is in face 5)"),
+            std::string::npos)
+      << strict.err;
+  const test::RunResult info = test::run_cli({"info", path, "--strict"});
+  EXPECT_NE(info.out.find("triangle 6 is in face 5"), std::string::npos) << info.out;
+  // By default the doubled face is left out and the pyramid mapped.
+  EXPECT_EQ(test::run_cli({"param", path, "-o", dir.path("p.ply"), "--quiet"}).exit_code, 0);
+}
+
 } // namespace
 } // namespace meromorph

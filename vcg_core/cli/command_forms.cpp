@@ -36,7 +36,7 @@ int run_forms(const FormsOptions &options) {
 
   TerminalProgress bar(options.quiet);
   const HolomorphicForms forms = naming_the_input(
-      options.input, [&] { return compute_holomorphic_forms(mesh, solver, bar.progress()); });
+      input.source, [&] { return compute_holomorphic_forms(mesh, solver, bar.progress()); });
   bar.finish();
 
   nlohmann::json timings = {{"read", input.read_ms}};

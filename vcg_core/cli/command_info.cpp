@@ -7,6 +7,7 @@
 #include "common/errors.h"
 #include "io/mesh_reader.h"
 #include "job/surface_map.h"
+#include "job_input.h"
 #include "mesh/repair.h"
 #include "mesh/topology.h"
 #include "mesh/validation.h"
@@ -24,11 +25,13 @@ struct InfoOptions {
 
 // A finding with the remedies the grouping's heading does not already name (what param maps as
 // it is can still be removed; what it refuses has only its remedies).
-std::string finding_words(const Finding &finding, bool strict) {
+// Faces are named as the file numbers them too (file_faces_words, job_input.h).
+std::string finding_words(const Finding &finding, bool strict, const MeshSource &source) {
   const FindingHandling handling = finding_handling(finding, strict);
+  const std::string message = finding.message + file_faces_words(source, finding.faces);
   if (handling == FindingHandling::as_it_is || handling == FindingHandling::refused)
-    return with_remedies(finding.message, finding.remedies);
-  return finding.message;
+    return with_remedies(message, finding.remedies);
+  return message;
 }
 
 void print_text(const MeshSource &source, const Topology &topology, const Validation &validation,
@@ -70,7 +73,7 @@ void print_text(const MeshSource &source, const Topology &topology, const Valida
     std::string listed;
     for (const Finding &f : validation.findings)
       if (finding_handling(f, strict) == handling)
-        listed += "  - " + finding_words(f, strict) + "\n";
+        listed += "  - " + finding_words(f, strict, source) + "\n";
     if (!listed.empty()) std::cout << "  " << heading << "\n" << listed;
   }
 }
@@ -140,7 +143,7 @@ int run_info_catching(const InfoOptions &options) {
 
 int run_info(const InfoOptions &options) {
   Mesh mesh;
-  const MeshSource source = read_mesh(options.input, mesh);
+  MeshSource source = read_mesh(options.input, mesh);
   Validation validation = validate_mesh(mesh);
   std::vector<std::string> repairs;
   Validation before_repair;
@@ -148,6 +151,7 @@ int run_info(const InfoOptions &options) {
     before_repair = validation;
     repairs = repair_mesh(mesh);
     validation = validate_mesh(mesh);
+    if (!repairs.empty()) source.triangle_face.clear(); // renumbered
   }
   const Topology topology = compute_topology(mesh);
   // What no finding tells: param's own preparation (the parts, the holes closed, the zero-area
@@ -196,7 +200,7 @@ int run_info(const InfoOptions &options) {
     }
     --others;
     std::cerr << "meromorph: " << options.input << " cannot be parameterized as it is: "
-              << finding_words(*main_finding, options.strict)
+              << finding_words(*main_finding, options.strict, source)
               << (finding_handling(*main_finding, options.strict) == FindingHandling::refused
                       ? std::string()
                       : std::string(" (meromorph param maps it with ") +

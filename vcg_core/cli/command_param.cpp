@@ -171,11 +171,12 @@ int run_param(const ParamOptions &options) {
 
   TerminalProgress bar(options.quiet);
   const Parameterization map =
-      naming_the_input(options.input, [&] { return map_of(mesh, settings, bar.progress()); });
+      naming_the_input(input.source, [&] { return map_of(mesh, settings, bar.progress()); });
   bar.finish();
   if (!map.valid) {
     std::cerr << "meromorph: error: " << options.input
               << ": no valid map on this triangulation: " << join_phrases(map.invalid)
+              << file_faces_words(input.source, map.quality.folded_face_indices)
               << ". What to do: " << advice_words(map.advice) << "\n";
     if (!options.keep_invalid) {
       std::cerr << "meromorph: nothing was written (--keep-invalid writes the map anyway)\n";

@@ -77,7 +77,7 @@ int run_remesh(const RemeshCommandOptions &options) {
   Mesh mesh;
   const JobInput input = read_job_input(options.input, options.repair, mesh);
   TerminalProgress bar(options.quiet);
-  const Parameterization map = naming_the_input(options.input, [&] {
+  const Parameterization map = naming_the_input(input.source, [&] {
     return parameterize_surface(mesh, settings, bar.progress().range(0.0, 0.6));
   });
   if (!map.valid) {

@@ -29,17 +29,32 @@ inline JobInput read_job_input(const std::string &path, bool repair, Mesh &mesh)
   // (reading is serial: the other core's thread is started meanwhile, common/parallel_for.h)
   while_threads_start([&] { input.source = read_mesh(path, mesh); });
   if (repair) input.repairs = repair_mesh(mesh);
-  tune_blas_for_job(long(mesh.vert.size())); // cli/process_settings.h
+  if (!input.repairs.empty()) input.source.triangle_face.clear(); // renumbered
+  tune_blas_for_job(long(mesh.vert.size()));                      // cli/process_settings.h
   input.read_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return input;
 }
 
-template <typename Compute> auto naming_the_input(const std::string &path, Compute compute) {
+// " (numbered as triangles; in the file, triangle 12 is in face 6, ...)": where the file's
+// polygons were split into triangles, the file's own faces of the triangles a message names.
+inline std::string file_faces_words(const MeshSource &source, const std::vector<int> &faces) {
+  std::string words;
+  for (size_t i = 0; i < faces.size() && i < 10; ++i)
+    if (faces[i] >= 0 && size_t(faces[i]) < source.triangle_face.size())
+      words += (words.empty() ? "" : ", ") + std::string("triangle ") + std::to_string(faces[i]) +
+               " is in face " + std::to_string(source.triangle_face[size_t(faces[i])]);
+  if (words.empty()) return "";
+  return " (numbered as triangles; in the file, " + words + (faces.size() > 10 ? ", ..." : "") +
+         ")";
+}
+
+template <typename Compute> auto naming_the_input(const MeshSource &source, Compute compute) {
   try {
     return compute();
   } catch (const InputError &error) { // what is wrong with the mesh: say which file
-    throw InputError(path + ": " + error.what(), error.remedies());
+    throw InputError(source.path + ": " + error.what() + file_faces_words(source, error.faces()),
+                     error.remedies());
   }
 }
 

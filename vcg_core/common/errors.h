@@ -25,14 +25,20 @@ enum class ErrorKind {
 
 class Error : public std::runtime_error {
 public:
-  Error(ErrorKind kind, const std::string &message, std::vector<Remedy> remedies = {})
-      : std::runtime_error(message), kind_(kind), remedies_(std::move(remedies)) {}
+  Error(ErrorKind kind, const std::string &message, std::vector<Remedy> remedies = {},
+        std::vector<int> faces = {})
+      : std::runtime_error(message), kind_(kind), remedies_(std::move(remedies)),
+        faces_(std::move(faces)) {}
   ErrorKind kind() const { return kind_; }
   const std::vector<Remedy> &remedies() const { return remedies_; }
+  // The input's faces the message names by number (empty when it names none, or names faces of
+  // a mesh derived from the input).
+  const std::vector<int> &faces() const { return faces_; }
 
 private:
   ErrorKind kind_;
   std::vector<Remedy> remedies_;
+  std::vector<int> faces_;
 };
 
 // An assumption of the mathematics failed (periods parallel, an odd number of generators).
@@ -51,8 +57,9 @@ public:
 // The input cannot be parameterized: a broken file, an open or non-manifold surface, ...
 class InputError : public Error {
 public:
-  explicit InputError(const std::string &message, std::vector<Remedy> remedies = {})
-      : Error(ErrorKind::input, message, std::move(remedies)) {}
+  explicit InputError(const std::string &message, std::vector<Remedy> remedies = {},
+                      std::vector<int> faces = {})
+      : Error(ErrorKind::input, message, std::move(remedies), std::move(faces)) {}
 };
 
 // An output file cannot be written (no such folder, no permission, disk full): the system's reason.

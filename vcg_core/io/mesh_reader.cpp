@@ -45,6 +45,7 @@ MeshSource read_mesh(const std::string &path, Mesh &mesh, const Progress &progre
       break;
     }
     mesh_from_arrays(arrays, mesh);
+    source.triangle_face = std::move(arrays.triangle_face);
   }
   vcg::tri::UpdateBounding<Mesh>::Box(mesh);
   progress.report(1.0, "reading " + path);

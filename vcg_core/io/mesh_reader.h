@@ -21,6 +21,8 @@ struct MeshSource {
   std::string path;
   MeshFormat format = MeshFormat::ply;
   std::vector<std::string> notes;
+  // Per triangle, the file's face it was split from, when polygons were triangulated (else empty).
+  std::vector<int> triangle_face;
 };
 
 MeshSource read_mesh(const std::string &path, Mesh &mesh, const Progress &progress = {});

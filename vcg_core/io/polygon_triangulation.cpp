@@ -19,8 +19,17 @@ void PolygonTriangulation::add_quad_triangle(const std::array<int, 3> &triangle,
   quad_triangles_.emplace(sorted, quad);
 }
 
+void PolygonTriangulation::finish(std::vector<int> &triangle_face,
+                                  std::vector<std::string> &notes) const {
+  if (split_polygons_ == 0) return;
+  triangle_face = triangle_polygon_;
+  notes.push_back("triangulated " + std::to_string(split_polygons_) + " polygonal faces into " +
+                  std::to_string(triangles_.size()) + " triangles in all");
+}
+
 void PolygonTriangulation::add(const std::vector<int> &polygon) {
   const size_t n = polygon.size();
+  split_polygons_ += n > 3;
   if (n == 3) {
     triangles_.push_back({polygon[0], polygon[1], polygon[2]});
   } else if (n == 4) {
@@ -44,6 +53,8 @@ void PolygonTriangulation::add(const std::vector<int> &polygon) {
     for (size_t i = 1; i + 1 < n; ++i)
       triangles_.push_back({polygon[0], polygon[i], polygon[i + 1]});
   }
+  triangle_polygon_.resize(triangles_.size(), polygons_);
+  ++polygons_;
 }
 
 } // namespace meromorph

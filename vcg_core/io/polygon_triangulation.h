@@ -12,6 +12,7 @@
 
 #include <array>
 #include <map>
+#include <string>
 #include <vector>
 
 #include "mesh/mesh.h"
@@ -24,6 +25,9 @@ public:
                        std::vector<std::array<int, 3>> &triangles)
       : positions_(positions), triangles_(triangles) {}
   void add(const std::vector<int> &polygon);
+  // When any polygon had more than three corners: per triangle, the polygon it came from (in
+  // `triangle_face`), and a note saying so.
+  void finish(std::vector<int> &triangle_face, std::vector<std::string> &notes) const;
 
 private:
   // Whether a quad on other vertices than `quad` (sorted) made this triangle.
@@ -32,6 +36,8 @@ private:
   const std::vector<Point3> &positions_;
   std::vector<std::array<int, 3>> &triangles_;
   std::map<std::array<int, 3>, std::array<int, 4>> quad_triangles_; // sorted corners -> quad
+  std::vector<int> triangle_polygon_;
+  int polygons_ = 0, split_polygons_ = 0;
 };
 
 } // namespace meromorph

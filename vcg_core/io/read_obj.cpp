@@ -14,7 +14,6 @@ MeshArrays read_obj(const std::string &path, const std::string &text,
   // only with negative indices, which are relative to the vertices read so far).
   std::vector<int> polygon;
   PolygonTriangulation triangulation(arrays.positions, arrays.triangles);
-  size_t polygons = 0;
   size_t ignored_lines = 0;
   while (lines.next()) {
     const auto &tokens = lines.tokens();
@@ -43,15 +42,12 @@ MeshArrays read_obj(const std::string &path, const std::string &text,
                      std::to_string(known) + " vertices are defined before it");
         polygon.push_back(int(index));
       }
-      if (polygon.size() > 3) ++polygons;
       triangulation.add(polygon);
     } else if (tokens[0] == "l" || tokens[0] == "p") {
       ++ignored_lines;
     }
   }
-  if (polygons)
-    notes.push_back("triangulated " + std::to_string(polygons) + " polygonal faces into " +
-                    std::to_string(arrays.triangles.size()) + " triangles in all");
+  triangulation.finish(arrays.triangle_face, notes);
   if (ignored_lines)
     notes.push_back("ignored " + std::to_string(ignored_lines) + " line and point elements");
   return arrays;

@@ -50,7 +50,6 @@ MeshArrays read_off(const std::string &path, const std::string &text,
   }
 
   arrays.triangles.reserve(size_t(face_count));
-  size_t polygons = 0;
   std::vector<int> polygon;
   PolygonTriangulation triangulation(arrays.positions, arrays.triangles);
   for (long f = 0; f < face_count; ++f) {
@@ -75,12 +74,9 @@ MeshArrays read_off(const std::string &path, const std::string &text,
                    ", but the file has vertices 0.." + std::to_string(vertex_count - 1));
       polygon.push_back(int(index));
     }
-    if (corners > 3) ++polygons;
     triangulation.add(polygon);
   }
-  if (polygons)
-    notes.push_back("triangulated " + std::to_string(polygons) + " polygonal faces into " +
-                    std::to_string(arrays.triangles.size()) + " triangles in all");
+  triangulation.finish(arrays.triangle_face, notes);
   return arrays;
 }
 

@@ -516,15 +516,11 @@ MeshArrays read_ply(const std::string &path, const std::string &bytes,
       if (&element == layout.strips) strips_to_triangles(polygon, strip_triangles);
     }
   }
-  size_t polygons = 0;
   PolygonTriangulation triangulation(arrays.positions, arrays.triangles);
   for (const std::vector<int> &corners : polygon_list) {
-    polygons += corners.size() > 3;
     triangulation.add(corners);
   }
-  if (polygons)
-    notes.push_back("triangulated " + std::to_string(polygons) + " polygonal faces into " +
-                    std::to_string(arrays.triangles.size()) + " triangles in all");
+  triangulation.finish(arrays.triangle_face, notes);
   if (layout.strips) {
     notes.push_back("read " + std::to_string(strip_triangles.size()) +
                     " triangles from triangle strips (numbered after the faces)");

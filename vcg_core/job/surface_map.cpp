@@ -118,6 +118,11 @@ FindingHandling finding_handling(const Finding &finding, bool strict) {
 
 namespace {
 
+// A refusal about a mesh derived from the input (other face numbers): its faces not passed on.
+InputError in_other_numbers(const InputError &error) {
+  return InputError(error.what(), error.remedies());
+}
+
 Parameterization parameterize_surface_here(Mesh &input, const ParameterizeOptions &options,
                                            const Progress &progress);
 
@@ -142,9 +147,10 @@ Parameterization parameterize_without_defects(const Mesh &input, const Validatio
   try {
     out = parameterize_surface_here(aside.work, work_options, progress);
   } catch (const InputError &error) {
-    throw InputError(std::string(error.what()) + " (vertex and face numbers after " +
-                         join_phrases(aside.notes) + ")",
-                     error.remedies());
+    throw in_other_numbers(InputError(std::string(error.what()) +
+                                          " (vertex and face numbers after " +
+                                          join_phrases(aside.notes) + ")",
+                                      error.remedies()));
   }
   if (options.prepare_only) return out;
   carry_back(input, aside.work.vert.size(), aside.vertex_in_work, aside.face_in_work, options, out);
@@ -192,12 +198,12 @@ Parameterization parameterize_surface_here(Mesh &input, const ParameterizeOption
     flat_fix = take_out_zero_area_faces(whole, flat_free);
     validation = validate_mesh(flat_free);
     if (const Finding *left = finding_left(validation, options.close_holes))
-      throw refusal(*left, " (after zero-area faces were taken out)");
+      throw in_other_numbers(refusal(*left, " (after zero-area faces were taken out)"));
     // Left after the take-out: only a change of the model removes them.
     if (const Finding *still = validation.find(FindingKind::zero_area_faces)) {
       Finding left = *still;
       left.remedies = {Remedy::remesh};
-      throw refusal(left, " (left after meromorph took out those it could)");
+      throw in_other_numbers(refusal(left, " (left after meromorph took out those it could)"));
     }
   }
   Mesh &mesh = flat ? flat_free : whole;

@@ -16,6 +16,8 @@ namespace meromorph {
 struct MeshArrays {
   std::vector<Point3> positions;
   std::vector<std::array<int, 3>> triangles;
+  // Readers: per triangle, the file's face it was split from (empty when no face was split).
+  std::vector<int> triangle_face;
 };
 
 // Replaces `mesh` by the vertices and triangles of `arrays`. Throws InputError for an index that

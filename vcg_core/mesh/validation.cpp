@@ -212,18 +212,21 @@ void check_doubled_faces(const Mesh &mesh, Validation &out) {
   Finding doubled(FindingKind::duplicate_faces);
   for (size_t i = 1; i < sorted_corners.size(); ++i)
     if (sorted_corners[i].first == sorted_corners[i - 1].first) {
+      doubled.faces.push_back(sorted_corners[i - 1].second); // both faces of the pair
       doubled.faces.push_back(sorted_corners[i].second);
       doubled.edges.push_back({sorted_corners[i - 1].second, sorted_corners[i].second});
     }
   if (!doubled.faces.empty()) {
     std::sort(doubled.faces.begin(), doubled.faces.end());
+    doubled.faces.erase(std::unique(doubled.faces.begin(), doubled.faces.end()),
+                        doubled.faces.end());
     std::string pairs;
     for (size_t i = 0; i < std::min<size_t>(10, doubled.edges.size()); ++i)
       pairs += (i ? ", " : "") + std::to_string(doubled.edges[i][0]) + " and " +
                std::to_string(doubled.edges[i][1]);
     if (doubled.edges.size() > 10)
       pairs += " and " + std::to_string(doubled.edges.size() - 10) + " more";
-    doubled.message = plural(doubled.faces.size(), "face uses", "faces use") +
+    doubled.message = plural(doubled.edges.size(), "face uses", "faces use") +
                       " the same three vertices as another face (doubled faces): faces " + pairs;
     doubled.remedies = {Remedy::remove_duplicate_faces};
     doubled.edges.clear();
@@ -464,7 +467,7 @@ Validation validate_mesh(const Mesh &mesh) {
 }
 
 InputError refusal(const Finding &finding, const std::string &more) {
-  return InputError(finding.message + more, finding.remedies);
+  return InputError(finding.message + more, finding.remedies, finding.faces);
 }
 
 } // namespace meromorph
