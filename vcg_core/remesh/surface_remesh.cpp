@@ -320,6 +320,39 @@ void append_part(const LiftedSphere &lifted, int part, SurfaceRemesh &out) {
   out.folded_lifts += lifted.folded_lifts;
 }
 
+// The lifted sphere evened out to about `part_target` vertices (or the resolution's count):
+// refined where faces lift large, smoothed, and what still folds split once more.
+void even_out_part(const PartSurface &surface, const RemeshOptions &options, long long part_target,
+                   bool flat_to_target, const Progress &step, RemeshPart &figures,
+                   LiftedSphere &lifted) {
+  const long long even_target = options.resolution >= 0 ? figures.target_vertices : part_target;
+  const double face_area = surface_area(surface.surface) / (2.0 * double(even_target));
+  if (flat_to_target) {
+    lifted = flat_torus_to_target(surface, face_area, even_target);
+  } else if (options.resolution < 0) {
+    const int frequency =
+        frequency_after_refinement(lifted, figures.frequency, face_area, even_target);
+    if (frequency != figures.frequency) {
+      figures.frequency = frequency;
+      lifted = lift_part(surface, figures, step.range(0.5, 0.9));
+    }
+    refine_to_target(surface, figures, face_area, even_target, step.range(0.5, 0.9), lifted);
+  } else
+    refine_lifted_sphere(surface.surface, refinement_limits(face_area, 1.0), refinement_rounds,
+                         lifted);
+  smooth_lifted_sphere(surface, options.relaxation_rounds, lifted);
+  for (int round = 0; round < 2 && lifted.folded_lifts > 0; ++round) {
+    LiftedSphere split = lifted;
+    RefinementLimits folded;
+    folded.folded = true;
+    refine_lifted_sphere(surface.surface, folded, 1, split);
+    smooth_lifted_sphere(surface, options.relaxation_rounds / 2, split);
+    if (split.folded_lifts >= lifted.folded_lifts) break; // it did not help
+    lifted = std::move(split);
+  }
+  figures.target_vertices = even_target;
+}
+
 } // namespace
 
 void remesh_through_sphere(const Mesh &given, const Parameterization &map,
@@ -356,35 +389,8 @@ void remesh_through_sphere(const Mesh &given, const Parameterization &map,
     const bool flat_to_target = !surface.flat.empty() && options.even_out && options.resolution < 0;
     LiftedSphere lifted;
     if (!flat_to_target) lifted = lift_part(surface, figures, step.range(0.0, 0.5));
-    if (options.even_out) {
-      const long long even_target = options.resolution >= 0 ? figures.target_vertices : part_target;
-      const double face_area = surface_area(surface.surface) / (2.0 * double(even_target));
-      if (flat_to_target) {
-        lifted = flat_torus_to_target(surface, face_area, even_target);
-      } else if (options.resolution < 0) {
-        const int frequency =
-            frequency_after_refinement(lifted, figures.frequency, face_area, even_target);
-        if (frequency != figures.frequency) {
-          figures.frequency = frequency;
-          lifted = lift_part(surface, figures, step.range(0.5, 0.9));
-        }
-        refine_to_target(surface, figures, face_area, even_target, step.range(0.5, 0.9), lifted);
-      } else
-        refine_lifted_sphere(surface.surface, refinement_limits(face_area, 1.0), refinement_rounds,
-                             lifted);
-      smooth_lifted_sphere(surface, options.relaxation_rounds, lifted);
-      // What still folds is split once more and smoothed again.
-      for (int round = 0; round < 2 && lifted.folded_lifts > 0; ++round) {
-        LiftedSphere split = lifted;
-        RefinementLimits folded;
-        folded.folded = true;
-        refine_lifted_sphere(surface.surface, folded, 1, split);
-        smooth_lifted_sphere(surface, options.relaxation_rounds / 2, split);
-        if (split.folded_lifts >= lifted.folded_lifts) break; // it did not help
-        lifted = std::move(split);
-      }
-      figures.target_vertices = even_target;
-    }
+    if (options.even_out)
+      even_out_part(surface, options, part_target, flat_to_target, step, figures, lifted);
     join_near_boundary_vertices(surface.surface, lifted);
     if (lifted.folded_lifts > 0) drop_folded_boundary_faces(surface.surface, lifted);
     refuse_unclosed(surface, lifted, part);
