@@ -477,8 +477,6 @@ int main(int argc, char **argv) {
                  "       bench_meshes --threads SHARED_MESHES_DIR [REPEATS]\n");
     return 2;
   }
-  // As the CLI does for large jobs (the jobs run as `param` runs them).
-  cli::run_with_huge_pages(argc, argv, true);
   cli::tune_command_line_process();
   if (std::string(argv[1]) == "--mesh")
     return mesh_file_row(argv[2], argc > 3 ? std::max(1, std::atoi(argv[3])) : 3,

@@ -12,7 +12,6 @@
 int main(int argc, char **argv) {
   using namespace meromorph;
   using cli::ExitCode;
-  cli::run_with_huge_pages(argc, argv); // cli/process_settings.h: this process is ours
   cli::tune_command_line_process();
   CLI::App app{
       "meromorph: conformal maps of closed surfaces of any genus onto the sphere.\n"

@@ -6,9 +6,6 @@
 #include <cstring>
 #include <string>
 
-#include <sys/stat.h>
-#include <unistd.h>
-
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
@@ -18,24 +15,6 @@
 extern "C" void openblas_set_num_threads(int threads) __attribute__((weak));
 
 namespace meromorph::cli {
-
-void run_with_huge_pages(int argc, char **argv, bool always) {
-  constexpr const char *setting = "glibc.malloc.hugetlb";
-  const char *given = std::getenv("GLIBC_TUNABLES");
-  if (given && std::strstr(given, setting)) return; // the user's, or ours already
-  bool large = always;
-  for (int i = 1; i < argc && !large; ++i) {
-    struct stat file;
-    large = ::stat(argv[i], &file) == 0 && S_ISREG(file.st_mode) && file.st_size > (1 << 20);
-  }
-  if (!large) return;
-  const std::string tunables =
-      (given && *given ? std::string(given) + ":" : std::string()) + setting + "=1";
-  if (::setenv("GLIBC_TUNABLES", tunables.c_str(), 1) != 0) return;
-  ::execv("/proc/self/exe", argv); // returns only where it fails: then run as we are
-  ::unsetenv("GLIBC_TUNABLES");
-  if (given) ::setenv("GLIBC_TUNABLES", given, 1);
-}
 
 void tune_command_line_process() {
 #if defined(__GLIBC__)

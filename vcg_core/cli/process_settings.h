@@ -12,17 +12,12 @@
 // second thread spins on the core that our loops need after every call (a 4k-vertex map took
 // 100-130 ms instead of 21-25 in a third of the runs); it pays in the dense products of the
 // factorizations of large meshes only (a 333k-vertex genus-5 map 25% faster with it).
-// `run_with_huge_pages`: where the job is large (an argument names a file of more than 1 MB, or
-// `always`), the program runs again at once with glibc's own setting for transparent huge pages
-// on its heap (GLIBC_TUNABLES=glibc.malloc.hugetlb=1, which glibc reads at start only), unless
-// the user's GLIBC_TUNABLES says glibc.malloc.hugetlb already; it returns where it does not.
-// Measured: a 50k-vertex genus-0 `param` took 0.49-0.55 s with 35k page faults, 0.39-0.42 s with
-// 1.3k; the second start costs a few milliseconds (the tool links its solvers statically).
+// (Transparent huge pages for the heap, GLIBC_TUNABLES=glibc.malloc.hugetlb=1, were tried and
+// dropped: on a machine up for hours, whose memory is fragmented, they made `param` 30-40% slower
+// from 200k to 800k vertices, 2.34-2.64 s against 1.74-1.98 s and 12.0-12.7 s against 8.6-8.8 s.)
 #pragma once
 
 namespace meromorph::cli {
-
-void run_with_huge_pages(int argc, char **argv, bool always = false);
 
 void tune_command_line_process();
 
