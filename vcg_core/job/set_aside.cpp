@@ -32,24 +32,17 @@ std::vector<int> welded_vertices(size_t vertex_count, const Validation &validati
 std::vector<char> faces_kept(const std::vector<std::array<int, 3>> &triangles, int &repeating,
                              int &doubled) {
   std::vector<char> kept(triangles.size(), 1);
-  std::vector<std::pair<std::array<int, 3>, int>> sorted;
-  sorted.reserve(triangles.size());
   for (size_t f = 0; f < triangles.size(); ++f) {
-    std::array<int, 3> corners = triangles[f];
-    std::sort(corners.begin(), corners.end());
-    if (corners[0] == corners[1] || corners[1] == corners[2]) {
+    const auto &t = triangles[f];
+    if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
       kept[f] = 0;
       ++repeating;
-    } else {
-      sorted.push_back({corners, int(f)});
     }
   }
-  std::sort(sorted.begin(), sorted.end());
-  for (size_t i = 1; i < sorted.size(); ++i)
-    if (sorted[i].first == sorted[i - 1].first) {
-      kept[size_t(sorted[i].second)] = 0;
-      ++doubled;
-    }
+  for (const auto &pair : faces_on_the_same_vertices(triangles)) {
+    kept[size_t(pair[1])] = 0; // the later of the two
+    ++doubled;
+  }
   return kept;
 }
 

@@ -199,23 +199,16 @@ void check_faces(const Mesh &mesh, Validation &out, bool doubled_faces_possible)
 
 // Two faces on the same three vertices: a doubled face, or a flat pillow of two triangles.
 void check_doubled_faces(const Mesh &mesh, Validation &out) {
-  std::vector<std::pair<std::array<int, 3>, int>> sorted_corners;
-  for (size_t f = 0; f < mesh.face.size(); ++f) {
-    if (repeats_a_vertex(mesh.face[f])) continue;
-    std::array<int, 3> corners;
+  std::vector<std::array<int, 3>> triangles(mesh.face.size());
+  for (size_t f = 0; f < mesh.face.size(); ++f)
     for (int k = 0; k < 3; ++k)
-      corners[k] = index_of(mesh, mesh.face[f].cV(k));
-    std::sort(corners.begin(), corners.end());
-    sorted_corners.push_back({corners, int(f)});
-  }
-  std::sort(sorted_corners.begin(), sorted_corners.end());
+      triangles[f][size_t(k)] = index_of(mesh, mesh.face[f].cV(k));
   Finding doubled(FindingKind::duplicate_faces);
-  for (size_t i = 1; i < sorted_corners.size(); ++i)
-    if (sorted_corners[i].first == sorted_corners[i - 1].first) {
-      doubled.faces.push_back(sorted_corners[i - 1].second); // both faces of the pair
-      doubled.faces.push_back(sorted_corners[i].second);
-      doubled.edges.push_back({sorted_corners[i - 1].second, sorted_corners[i].second});
-    }
+  for (const auto &pair : faces_on_the_same_vertices(triangles)) {
+    doubled.faces.push_back(pair[0]); // both faces of the pair
+    doubled.faces.push_back(pair[1]);
+    doubled.edges.push_back(pair);
+  }
   if (!doubled.faces.empty()) {
     std::sort(doubled.faces.begin(), doubled.faces.end());
     doubled.faces.erase(std::unique(doubled.faces.begin(), doubled.faces.end()),
@@ -464,6 +457,24 @@ Validation validate_mesh(const Mesh &mesh) {
   check_vertices(mesh, out);
   if (!one_closed_surface) check_topology(mesh, out);
   return out;
+}
+
+std::vector<std::array<int, 2>>
+faces_on_the_same_vertices(const std::vector<std::array<int, 3>> &triangles) {
+  std::vector<std::pair<std::array<int, 3>, int>> sorted_corners;
+  sorted_corners.reserve(triangles.size());
+  for (size_t f = 0; f < triangles.size(); ++f) {
+    std::array<int, 3> corners = triangles[f];
+    std::sort(corners.begin(), corners.end());
+    if (corners[0] == corners[1] || corners[1] == corners[2]) continue; // uses a vertex twice
+    sorted_corners.push_back({corners, int(f)});
+  }
+  std::sort(sorted_corners.begin(), sorted_corners.end());
+  std::vector<std::array<int, 2>> pairs;
+  for (size_t i = 1; i < sorted_corners.size(); ++i)
+    if (sorted_corners[i].first == sorted_corners[i - 1].first)
+      pairs.push_back({sorted_corners[i - 1].second, sorted_corners[i].second});
+  return pairs;
 }
 
 InputError refusal(const Finding &finding, const std::string &more) {

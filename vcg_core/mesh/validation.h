@@ -82,6 +82,11 @@ bool has_zero_area(const Point3 &p0, const Point3 &p1, const Point3 &p2);
 
 Validation validate_mesh(const Mesh &mesh);
 
+// Faces on the same three vertices as another: pairs (a face, the next one on those vertices),
+// in the order of their sorted corners; faces that use a vertex twice are not paired.
+std::vector<std::array<int, 2>>
+faces_on_the_same_vertices(const std::vector<std::array<int, 3>> &triangles);
+
 // The error that refuses the mesh for this finding: its message (and `more`), its remedies.
 InputError refusal(const Finding &finding, const std::string &more = "");
 
