@@ -131,10 +131,9 @@ meromorph::ParameterizeOptions core_options(const meromorph_options &settings) {
   parameters.form_pair = {settings.form_pair[0], settings.form_pair[1]};
   parameters.layer_gap = settings.layer_gap;
   parameters.pole_face = settings.pole_face;
-  const bool strict = settings.strict != 0;
-  parameters.close_holes = settings.close_holes != 0 && !strict;
-  parameters.split_nonmanifold = settings.split_nonmanifold != 0 && !strict;
-  parameters.set_aside_defects = !strict;
+  parameters.close_holes = settings.close_holes != 0;
+  parameters.split_nonmanifold = settings.split_nonmanifold != 0;
+  if (settings.strict != 0) meromorph::refuse_instead(parameters);
   parameters.pack_uv = settings.pack_uv != 0;
   parameters.area_correct = settings.area_correct != 0;
   return parameters;

@@ -113,7 +113,7 @@ int run_info(const InfoOptions &options);
 // Why param (with --strict or not) refuses the mesh before computing anything; "" when it does not.
 std::string what_preparation_refuses(Mesh &mesh, bool strict) {
   ParameterizeOptions settings;
-  settings.close_holes = settings.split_nonmanifold = settings.set_aside_defects = !strict;
+  if (strict) refuse_instead(settings);
   settings.prepare_only = true;
   try {
     parameterize_surface(mesh, settings);

@@ -49,12 +49,14 @@ ParameterizeOptions settings_from(const ParamOptions &options) {
   settings.layer_gap = options.layer_gap;
   settings.pole_face = options.pole_face;
   settings.solver = solver_from_name(options.solver);
-  // --strict refuses what is otherwise dealt with, except what an option asks for.
-  settings.close_holes = !options.strict || options.close_holes;
   settings.pack_uv = options.pack_uv;
-  settings.split_nonmanifold = !options.strict || options.split_nonmanifold;
-  settings.set_aside_defects = !options.strict;
   settings.area_correct = options.area_correct;
+  // --strict refuses what is otherwise dealt with, except what an option asks for.
+  if (options.strict) {
+    refuse_instead(settings);
+    settings.close_holes = options.close_holes;
+    settings.split_nonmanifold = options.split_nonmanifold;
+  }
 
   return settings;
 }

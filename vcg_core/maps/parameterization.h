@@ -149,6 +149,12 @@ struct Parameterization {
   std::vector<std::array<int, 3>> sphere_faces;
 };
 
+// `--strict`'s options: what parameterize_surface otherwise deals with for the computation
+// (close_holes, split_nonmanifold, set_aside_defects) is refused instead.
+inline void refuse_instead(ParameterizeOptions &options) {
+  options.close_holes = options.split_nonmanifold = options.set_aside_defects = false;
+}
+
 struct Validation;
 
 // `validated`: the mesh's validation when the caller has made it (and it found nothing). The
