@@ -32,7 +32,7 @@ struct ParamOptions {
   std::string solver = "cholmod";
   bool no_mobius = false, repair = false, keep_invalid = false, close_holes = false,
        pack_uv = false, split_nonmanifold = false, quiet = false, area_correct = false,
-       strict = false, without_uv = false;
+       strict = false, without_uv = false, no_added_vertices = false;
   int origin = -1;
   std::vector<int> forms{-1, -1};
   double layer_gap = 0.0;
@@ -51,6 +51,7 @@ ParameterizeOptions settings_from(const ParamOptions &options) {
   settings.solver = solver_from_name(options.solver);
   settings.pack_uv = options.pack_uv;
   settings.area_correct = options.area_correct;
+  settings.add_vertices = !options.no_added_vertices;
   // --strict refuses what is otherwise dealt with, except what an option asks for.
   if (options.strict) {
     refuse_instead(settings);
@@ -127,8 +128,12 @@ std::string summary_line(const std::string &input, const Parameterization &map, 
   line << "genus " << map.genus << ", degree " << map.degree << ", " << map.branch_points.size()
        << " branch points (ramification " << map.ramification << "), Riemann-Hurwitz "
        << (map.riemann_hurwitz_ok ? "holds" : "FAILS") << ", " << map.sheets.count
-       << (map.sheets.count == 1 ? " layer" : " layers")
-       << "; away from branch points: angle error " << away.angle_error_mean_degrees
+       << (map.sheets.count == 1 ? " layer" : " layers");
+  if (!map.added_vertices.empty())
+    line << ", " << map.added_vertices.size()
+         << (map.added_vertices.size() == 1 ? " vertex" : " vertices")
+         << " added to the surface where its faces could not carry the map";
+  line << "; away from branch points: angle error " << away.angle_error_mean_degrees
        << " deg, quasi-conformal mean " << away.quasi_conformal_mean << " (95th percentile "
        << away.quasi_conformal_p95 << "); folded faces " << away.folded_faces
        << " away from branch points (" << map.quality.overall.folded_faces << " in all); "
@@ -191,6 +196,7 @@ int run_param(const ParamOptions &options) {
   report["repairs"] = input.repairs;
   report["timings_ms"]["read"] = input.read_ms;
   report["version"] = MEROMORPH_VERSION;
+  add_written_vertices(map, mesh);
   outputs.writing([&] {
     write_surface(mesh, map, surface_format, output_file);
     if (!options.sphere.empty()) write_layered_sphere(mesh, map, sphere_file);
@@ -257,8 +263,9 @@ Command add_param_command(CLI::App &app) {
       "refuse, naming the problem, what is otherwise dealt with for the computation: "
       "holes (closed), non-manifold vertices and edges (taken apart), seam duplicate "
       "vertices (welded), doubled faces, faces that use a vertex twice and vertices "
-      "on no face (left out); by default the outputs keep them all. With --close-holes or "
-      "--split-nonmanifold, all but that");
+      "on no face (left out); by default the outputs keep them all; and where the input's faces "
+      "cannot carry a map without turning some over, it refuses instead of adding vertices. With "
+      "--close-holes or --split-nonmanifold, all but that");
   param->add_flag("--close-holes", options->close_holes,
                   "close every hole for the computation only (the default, and with --strict; the "
                   "outputs keep the "
@@ -272,6 +279,10 @@ Command add_param_command(CLI::App &app) {
   param->add_flag("--pack-uv", options->pack_uv,
                   "several parts: each part's texture in its own cell of the unit square (a grid, "
                   "row by row from the bottom left) instead of each filling it");
+  param->add_flag("--no-added-vertices", options->no_added_vertices,
+                  "where the input's faces cannot carry the map without turning some over, refuse "
+                  "(exit 3) instead of adding the vertices it needs to the written surface (by "
+                  "default they are added after the input's, and listed in the report)");
   param->add_flag("--without-uv", options->without_uv,
                   "write the surface even in a format that cannot hold texture coordinates (.stl)");
   param->add_flag("--keep-invalid", options->keep_invalid,

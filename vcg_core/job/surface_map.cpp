@@ -134,7 +134,7 @@ Parameterization parameterize_without_defects(const Mesh &input, const Validatio
   SetAside aside;
   set_aside_defects(input, validation, aside);
   ParameterizeOptions work_options = options; // the chosen vertex and face in the work's numbers
-  work_options.set_aside_defects = false;
+  work_options.set_aside_defects = work_options.add_vertices = false;
   if (options.origin_vertex >= 0 && size_t(options.origin_vertex) < aside.vertex_in_work.size())
     work_options.origin_vertex = aside.vertex_in_work[size_t(options.origin_vertex)];
   if (options.pole_face >= 0 && size_t(options.pole_face) < aside.face_in_work.size())
@@ -219,8 +219,12 @@ Parameterization parameterize_surface_here(Mesh &input, const ParameterizeOption
     if (!validation.ok()) split_into_closed_parts(mesh, options.close_holes);
     return {};
   }
-  Parameterization out = validation.ok() ? parameterize(mesh, options, progress, &validation)
-                                         : parameterize_parts(mesh, validation, options, progress);
+  // Vertices are added only where the mesh computed on is the one written.
+  ParameterizeOptions work_options = options;
+  work_options.add_vertices = options.add_vertices && validation.ok() && !split && !flat;
+  Parameterization out = validation.ok()
+                             ? parameterize(mesh, work_options, progress, &validation)
+                             : parameterize_parts(mesh, validation, work_options, progress);
   if (flat) {
     with_zero_area_faces(whole, flat_fix, options, out);
     out.notes.push_back(
@@ -259,6 +263,15 @@ Parameterization parameterize_arrays(const VertexPositions &V, const TriangleCor
   Mesh mesh;
   mesh_from_arrays(arrays, mesh);
   return parameterize_surface(mesh, options, progress);
+}
+
+void add_written_vertices(const Parameterization &map, Mesh &input) {
+  if (map.added_vertices.empty()) return;
+  MeshArrays arrays = arrays_from_mesh(input);
+  for (const AddedVertex &added : map.added_vertices)
+    arrays.positions.emplace_back(added.position[0], added.position[1], added.position[2]);
+  arrays.triangles = map.surface_faces;
+  mesh_from_arrays(arrays, input);
 }
 
 void layered_sphere_mesh(const Mesh &input, const Parameterization &map, Mesh &sphere) {

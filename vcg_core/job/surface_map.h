@@ -59,6 +59,10 @@ Parameterization parameterize_arrays(const VertexPositions &V, const TriangleCor
 enum class FindingHandling { as_it_is, close_holes, split_nonmanifold, set_aside, repair, refused };
 FindingHandling finding_handling(const Finding &finding, bool strict = false);
 
+// The written surface: with vertices added (map.added_vertices), `input` gets them after its own
+// and its faces become map.surface_faces; otherwise it stays as it is.
+void add_written_vertices(const Parameterization &map, Mesh &input);
+
 // The layered sphere as a mesh: `map.layered` positions on the input's faces (on the split
 // mesh's vertices and faces when non-manifold spots were taken apart).
 void layered_sphere_mesh(const Mesh &input, const Parameterization &map, Mesh &sphere);

@@ -4,12 +4,15 @@
 #include "common/stage_clock.h"
 #include "common/wording.h"
 #include "forms/holomorphic_pipeline.h"
+#include "maps/added_vertices.h"
 #include "maps/form_pair_search.h"
 #include "maps/genus0_best_map.h"
 #include "maps/genus1_map.h"
 #include "maps/map_validity.h"
 #include "maps/written_map.h"
+#include "mesh/edge_splitting.h"
 #include "mesh/face_vectors.h"
+#include "mesh/mesh_from_arrays.h"
 #include "mesh/prepared_mesh.h"
 #include "mesh/unit_scale.h"
 #include "mesh/validation.h"
@@ -133,6 +136,118 @@ void correct_the_area(const Mesh &mesh, Parameterization &out, Branching &branch
   clock.done("area_correction");
 }
 
+// The map computed on `mesh` subdivided (fine, whose first vertices and face slots are mesh's),
+// said on mesh's own vertices: their values, the branching and all that follows measured anew on
+// mesh's faces.
+Parameterization restricted_to(const std::vector<Point3> &positions, const Mesh &mesh,
+                               const MeshEdges &edges, const ParameterizeOptions &options,
+                               Parameterization fine, const SplitEdges &subdivision,
+                               const Progress &progress, StageClock &clock) {
+  Parameterization out = std::move(fine);
+  out.sphere.resize(mesh.vert.size());
+  if (!out.flat.empty()) out.flat.resize(mesh.vert.size());
+  out.branch_points.clear();
+  out.advice.clear();
+  if (out.pole_face >= 0) out.pole_face = subdivision.face_source[size_t(out.pole_face)];
+  if (out.origin_vertex >= int(mesh.vert.size())) out.origin_vertex = -1;
+  const Branching branching = analyse_branching(mesh, out.sphere, out.euler);
+  describe_written_map(positions, mesh, edges, options, branching, out, progress, clock);
+  return out;
+}
+
+// When the map on the mesh's own triangulation is not valid: the map computed on the mesh
+// subdivided at its edges' midpoints (once, twice, up to options.finer_levels times, within a
+// budget of faces) carried back to its vertices, from the first subdivision that carries a valid
+// map. Returns the levels used (0: none did).
+int computed_finer(const std::vector<Point3> &positions, Mesh &mesh, const MeshEdges &edges,
+                   const ParameterizeOptions &options, Parameterization &out,
+                   const Progress &progress, StageClock &clock) {
+  constexpr size_t face_budget = size_t(4) << 20;
+  const MeshArrays arrays = arrays_from_mesh(mesh);
+  for (int level = 1; level <= options.finer_levels; ++level) {
+    if (arrays.triangles.size() << (2 * level) > face_budget) break;
+    progress.report(0.0, "the triangulation cannot carry the map: computing on it subdivided");
+    const SplitEdges subdivision = midpoint_subdivision(arrays, level);
+    Mesh fine;
+    mesh_from_arrays(subdivision.arrays, fine);
+    ParameterizeOptions fine_options = options;
+    fine_options.finer_levels = 0;
+    fine_options.add_vertices = false;
+    Parameterization fine_map = parameterize(fine, fine_options, progress);
+    clock.done("finer_computation");
+    if (!fine_map.valid) continue;
+    const std::vector<std::pair<std::string, double>> timings = out.timings_ms;
+    out = restricted_to(positions, mesh, edges, options, std::move(fine_map), subdivision, progress,
+                        clock);
+    out.timings_ms = timings;
+    out.computed_on_subdivision = level;
+    out.notes.push_back("computed on the mesh subdivided " +
+                        std::string(level == 1   ? "once"
+                                    : level == 2 ? "twice"
+                                                 : "three times") +
+                        " at its edges' midpoints (" +
+                        std::to_string(subdivision.arrays.positions.size()) +
+                        " vertices): its own triangulation could not carry a valid map");
+    return level;
+  }
+  return 0;
+}
+
+// Where even that map turns faces of the mesh over: the mesh cut where they are (added_vertices.h)
+// and mapped again, up to eight times, within a budget of added vertices (eight times the mesh's,
+// at least 1,000); when the folded faces do not get fewer, every side is cut. The map of the cut
+// mesh, with its added vertices listed, or none.
+std::optional<Parameterization> mapped_with_added_vertices(const std::vector<Point3> &positions,
+                                                           Mesh &mesh,
+                                                           const ParameterizeOptions &options,
+                                                           Parameterization map, int levels,
+                                                           const Progress &progress) {
+  ParameterizeOptions cut_options = options;
+  cut_options.add_vertices = false;
+  cut_options.finer_levels = std::max(levels, 1);
+  const size_t budget = std::max<size_t>(1000, mesh.vert.size() * 8);
+  MeshArrays arrays = arrays_from_mesh(mesh);
+  std::vector<int> face_source(arrays.triangles.size());
+  for (size_t f = 0; f < face_source.size(); ++f)
+    face_source[f] = int(f);
+  Mesh cut_mesh;
+  const Mesh *mapped = &mesh;
+  size_t fewest_folds = map.quality.folded_face_indices.size() + 1;
+  for (int round = 0; round < 8; ++round) {
+    const size_t folds = map.quality.folded_face_indices.size();
+    std::vector<std::array<int, 2>> sides;
+    if (folds > 0 && folds < fewest_folds) sides = sides_to_cut(*mapped, map);
+    fewest_folds = std::min(fewest_folds, folds);
+    if (sides.empty()) // no progress, or no fold to cut at: every side
+      for (const auto &t : arrays.triangles)
+        for (int k = 0; k < 3; ++k)
+          sides.push_back({t[size_t(k)], t[size_t((k + 1) % 3)]});
+    SplitEdges cut = split_edges(arrays, sides);
+    if (cut.arrays.positions.size() - mesh.vert.size() > budget) return std::nullopt;
+    for (int &source : cut.face_source)
+      source = face_source[size_t(source)];
+    arrays = std::move(cut.arrays);
+    face_source = std::move(cut.face_source);
+    mesh_from_arrays(arrays, cut_mesh);
+    mapped = &cut_mesh;
+    progress.report(0.0, "adding vertices where the map turns faces over");
+    map = parameterize(cut_mesh, cut_options, progress);
+    if (!map.valid) continue;
+    map.added_vertices = places_on(mesh, positions, arrays, face_source);
+    for (BranchPoint &b : map.branch_points) // in the caller's unit
+      b.position = size_t(b.vertex) < mesh.vert.size()
+                       ? positions[size_t(b.vertex)].ToEigenVector<Eigen::Vector3d>()
+                       : map.added_vertices[size_t(b.vertex) - mesh.vert.size()].position;
+    map.surface_faces = arrays.triangles;
+    map.surface_face_source = face_source;
+    map.notes.push_back(plural(map.added_vertices.size(), "vertex was", "vertices were") +
+                        " added to the written surface where its own faces could not carry the "
+                        "map without turning over (listed with their faces)");
+    return map;
+  }
+  return std::nullopt;
+}
+
 } // namespace
 
 Parameterization parameterize(Mesh &mesh, const ParameterizeOptions &options,
@@ -174,6 +289,14 @@ Parameterization parameterize(Mesh &mesh, const ParameterizeOptions &options,
   if (options.area_correct) correct_the_area(mesh, out, branching, clock);
   describe_written_map(unit.originals(), mesh, prepared.edges, options, branching, out, progress,
                        clock);
+  if (!out.valid && out.quality.collapsed_face_indices.empty()) {
+    const int levels =
+        computed_finer(unit.originals(), mesh, prepared.edges, options, out, progress, clock);
+    if (!out.valid && options.add_vertices)
+      if (auto cut =
+              mapped_with_added_vertices(unit.originals(), mesh, options, out, levels, progress))
+        out = std::move(*cut);
+  }
   progress.report(1.0, "done");
   return out;
 }

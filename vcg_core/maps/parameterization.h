@@ -60,6 +60,23 @@ struct ParameterizeOptions {
   // After centring: the Moebius transformation that makes the map most even in area
   // (area_correction.h); conformality is unchanged, the texture density spreads more evenly.
   bool area_correct = false;
+  // When the mesh's own triangulation carries no valid map (slivers, coarse faces near branch
+  // points): compute on it subdivided at its edges' midpoints, up to this many times, and carry
+  // the map back to its vertices (the outputs are the same mesh's). 0: never.
+  int finer_levels = 3;
+  // parameterize called on the mesh the outputs hold: where even the finer map cannot be carried
+  // by the mesh's faces without turning some over, add the few vertices it needs (listed in
+  // `added_vertices`) instead of refusing.
+  bool add_vertices = true;
+};
+
+// A vertex added to the written surface (ParameterizeOptions::add_vertices): the input's face it
+// lies on, its barycentric coordinates b1, b2 (of that face's second and third corners) and its
+// position.
+struct AddedVertex {
+  int face = -1;
+  double b1 = 0, b2 = 0;
+  Eigen::Vector3d position;
 };
 
 // What parameterize_surface took apart (nonmanifold_split.h): input vertices that were split,
@@ -118,7 +135,8 @@ struct Parameterization {
   // Branch points placed on vertices fold-free: genus 1, half periods (genus1_branch_placement.h);
   // genus >= 2, critical points repaired inside faces (branch_snapping.h).
   int snapped_branch_points = 0;
-  int untangled_vertices = 0; // sliver corners moved to unfold them (fold_untangling.h)
+  int untangled_vertices = 0;      // sliver corners moved to unfold them (fold_untangling.h)
+  int computed_on_subdivision = 0; // levels of midpoint subdivision computed on (compute_finer)
   std::array<int, 2> form_pair{-1, -1};
   FormPair form_coefficients; // genus >= 2: a_k, b_k of the pair used (form_pairs.h)
   int pair_attempts = 0;      // genus >= 2: pairs tried until one was generic
@@ -147,12 +165,20 @@ struct Parameterization {
   NonmanifoldSplitReport nonmanifold_split;
   std::vector<int> sphere_source_vertex;
   std::vector<std::array<int, 3>> sphere_faces;
+  // With vertices added (options.add_vertices): the per-vertex arrays above are per vertex of the
+  // written surface, the input's vertices first, then these; its faces are `surface_faces` (the
+  // input's, a cut face keeping its slot with one piece, then the other pieces), each part of
+  // the input's face `surface_face_source`. Empty otherwise.
+  std::vector<AddedVertex> added_vertices;
+  std::vector<std::array<int, 3>> surface_faces;
+  std::vector<int> surface_face_source;
 };
 
 // `--strict`'s options: what parameterize_surface otherwise deals with for the computation
-// (close_holes, split_nonmanifold, set_aside_defects) is refused instead.
+// (close_holes, split_nonmanifold, set_aside_defects) is refused instead, and no vertex is added.
 inline void refuse_instead(ParameterizeOptions &options) {
   options.close_holes = options.split_nonmanifold = options.set_aside_defects = false;
+  options.add_vertices = false;
 }
 
 struct Validation;

@@ -234,6 +234,24 @@ nlohmann::json parameterization_json(const Parameterization &map) {
                                    {"edges", edges},
                                    {"added_vertices", map.nonmanifold_split.added_vertices}};
   }
+  if (map.computed_on_subdivision > 0)
+    report["computed_on_subdivision"] = map.computed_on_subdivision;
+  if (!map.added_vertices.empty()) {
+    // Each added vertex: its index in the written surface, the input's face it lies on, its
+    // barycentric coordinates there (of the face's second and third corners) and its position.
+    nlohmann::json added = nlohmann::json::array();
+    const size_t first = map.sphere.size() - map.added_vertices.size();
+    for (size_t k = 0; k < map.added_vertices.size(); ++k) {
+      const AddedVertex &v = map.added_vertices[k];
+      added.push_back({{"vertex", first + k},
+                       {"face", v.face},
+                       {"b1", v.b1},
+                       {"b2", v.b2},
+                       {"position", {v.position[0], v.position[1], v.position[2]}}});
+    }
+    report["added_vertices"] = added;
+    report["written_faces"] = map.surface_faces.size();
+  }
   if (one_part && map.genus >= 2) add_form_pair_json(map, report);
   return report;
 }

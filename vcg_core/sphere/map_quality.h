@@ -5,11 +5,13 @@
 // Out: per face, the linear map from the triangle to the chord triangle of its image: its
 //      quasi-conformal ratio sigma_max / sigma_min (1 for a similarity) and the mean absolute
 //      difference of the three corner angles in degrees; a face is folded when its image has
-//      non-positive signed spherical area. Statistics overall and for the faces that do not touch
-//      a branch vertex: quasi-conformal mean, 95th percentile and max, mean angle error, folded
-//      count, and the count of collapsed faces, whose image's longest side is below 1e-14 (long
-//      thin parts shrink exponentially under any conformal map; below that, double precision
-//      cannot tell their orientation). Also the indices of the folded and of the collapsed faces.
+//      non-positive signed spherical area or its chord triangle is not clearly positively
+//      oriented (flat images at branch points count: a reader of the positions may see them
+//      turned). Statistics overall and for the faces that do not touch a branch vertex:
+//      quasi-conformal mean, 95th percentile and max, mean angle error, folded count, and the count
+//      of collapsed faces, whose image's longest side is below 1e-14 (long thin parts shrink
+//      exponentially under any conformal map; below that, double precision cannot tell their
+//      orientation). Also the indices of the folded and of the collapsed faces.
 #pragma once
 
 #include <array>

@@ -1,0 +1,31 @@
+// Faces cut at the midpoints of chosen edges, keeping the surface (and its numbering) as it was.
+//
+// In:  plain arrays of a triangle mesh (mesh_from_arrays.h) and the edges to cut, as vertex pairs
+//      (either order; an edge that is not in the mesh is ignored).
+// Out: the same arrays with a vertex at the midpoint of every chosen edge, appended after the
+//      vertices there were, in the order the edges are first met face by face; every face on a
+//      cut edge is cut with it, so the result has no T-junction: a face with one cut edge into
+//      two, with two into three (the quadrilateral left by its shorter diagonal), with three into
+//      four. A cut face keeps its slot with its piece at its first corner; its other pieces are
+//      appended, and `face_source` names, per face of the result, the face it was cut from.
+//      `midpoint_subdivision` cuts every edge, `levels` times: each face into 4^levels similar
+//      ones, the first of them at its first corner in its own slot.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "mesh/mesh_from_arrays.h"
+
+namespace meromorph {
+
+struct SplitEdges {
+  MeshArrays arrays;
+  std::vector<int> face_source;
+};
+
+SplitEdges split_edges(const MeshArrays &arrays, const std::vector<std::array<int, 2>> &edges);
+
+SplitEdges midpoint_subdivision(const MeshArrays &arrays, int levels);
+
+} // namespace meromorph
