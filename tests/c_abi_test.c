@@ -57,6 +57,31 @@ static void make_torus(void) {
   fill_torus(MAJOR, MINOR, positions, triangles);
 }
 
+/* A washer as a CAD program exports it (outer radius 10, inner 6, height 2, 32 segments): each
+   cylinder and each annulus a strip of two long triangles per segment. Its triangles cannot
+   carry a map to the sphere without turning some over. */
+enum { WASHER_SEGMENTS = 32, WASHER_V = 4 * WASHER_SEGMENTS, WASHER_F = 8 * WASHER_SEGMENTS };
+static void fill_washer(double *p, int32_t *t) {
+  const double pi = 3.14159265358979323846, radius[4] = {10, 10, 6, 6}, z[4] = {0, 2, 0, 2};
+  const int n = WASHER_SEGMENTS;
+  int ring, i;
+  for (ring = 0; ring < 4; ++ring) /* outer bottom, outer top, inner bottom, inner top */
+    for (i = 0; i < n; ++i) {
+      double *q = p + 3 * (ring * n + i);
+      q[0] = radius[ring] * cos(2 * pi * i / n);
+      q[1] = radius[ring] * sin(2 * pi * i / n);
+      q[2] = z[ring];
+    }
+  for (i = 0; i < n; ++i) {
+    const int32_t j = (i + 1) % n, ob = 0, ot = n, ib = 2 * n, it = 3 * n;
+    const int32_t faces[8][3] = {{ob + i, ob + j, ot + j}, {ob + i, ot + j, ot + i},
+                                 {ib + i, it + j, ib + j}, {ib + i, it + i, it + j},
+                                 {ot + i, ot + j, it + j}, {ot + i, it + j, it + i},
+                                 {ob + i, ib + j, ob + j}, {ob + i, ib + i, ib + j}};
+    memcpy(t + 24 * i, faces, sizeof(faces));
+  }
+}
+
 /* Four threads map tori of different sizes at once; each checks its own result. */
 typedef struct job {
   int major, minor, ok;
@@ -491,6 +516,80 @@ int main(void) {
     free(faces);
     free(sheet);
     free(degree);
+  }
+
+  {
+    /* A CAD washer: with the defaults, vertices are added where its triangles cannot carry the
+       map; they lie on the triangles named, and the surface as written has them after the
+       input's. Without add_vertices (or from a caller that predates it) the input's triangles
+       are kept and the map is reported as not valid. */
+    double *p = malloc(sizeof(double) * 3 * WASHER_V);
+    int32_t *t = malloc(sizeof(int32_t) * 3 * WASHER_F);
+    size_t a, n, m, k;
+    double *bary, *xyz;
+    int32_t *on, *surface, *source;
+    fill_washer(p, t);
+    meromorph_default_options(&options);
+    CHECK(options.add_vertices == 1);
+    CHECK(meromorph_parameterize_d(p, WASHER_V, t, WASHER_F, &options, &result) == MEROMORPH_OK);
+    CHECK(meromorph_map_valid(result) == 1);
+    a = meromorph_added_vertex_count(result);
+    n = meromorph_vertex_count(result);
+    m = meromorph_triangle_count(result);
+    CHECK(a > 0 && n == WASHER_V + a && m > WASHER_F);
+    bary = malloc(sizeof(double) * 2 * a);
+    xyz = malloc(sizeof(double) * 3 * a);
+    on = malloc(sizeof(int32_t) * a);
+    surface = malloc(sizeof(int32_t) * 3 * m);
+    source = malloc(sizeof(int32_t) * m);
+    CHECK(meromorph_added_vertices(result, on, bary, xyz) == MEROMORPH_OK);
+    for (k = 0; k < a; ++k) {
+      const int32_t *c = t + 3 * on[k];
+      int axis;
+      CHECK(on[k] >= 0 && on[k] < WASHER_F);
+      CHECK(bary[2 * k] >= -1e-12 && bary[2 * k + 1] >= -1e-12 &&
+            bary[2 * k] + bary[2 * k + 1] <= 1 + 1e-12);
+      for (axis = 0; axis < 3; ++axis) {
+        const double at = (1 - bary[2 * k] - bary[2 * k + 1]) * p[3 * c[0] + axis] +
+                          bary[2 * k] * p[3 * c[1] + axis] + bary[2 * k + 1] * p[3 * c[2] + axis];
+        CHECK(fabs(at - xyz[3 * k + axis]) < 1e-9);
+      }
+    }
+    CHECK(meromorph_surface_triangles(result, surface, source) == MEROMORPH_OK);
+    for (k = 0; k < 3 * m; ++k)
+      CHECK(surface[k] >= 0 && (size_t)surface[k] < n);
+    for (k = 0; k < m; ++k)
+      CHECK(source[k] >= 0 && source[k] < WASHER_F && (k >= WASHER_F || source[k] == (int32_t)k));
+    meromorph_result_free(result);
+    result = NULL;
+    options.add_vertices = 0;
+    CHECK(meromorph_parameterize_d(p, WASHER_V, t, WASHER_F, &options, &result) == MEROMORPH_OK);
+    CHECK(meromorph_map_valid(result) == 0 && meromorph_added_vertex_count(result) == 0);
+    CHECK(meromorph_vertex_count(result) == WASHER_V &&
+          meromorph_triangle_count(result) == WASHER_F);
+    meromorph_result_free(result);
+    result = NULL;
+    meromorph_default_options(&options);
+    options.struct_size = offsetof(meromorph_options, add_vertices);
+    options.add_vertices = 1; /* beyond the old struct: never read */
+    CHECK(meromorph_parameterize_d(p, WASHER_V, t, WASHER_F, &options, &result) == MEROMORPH_OK);
+    CHECK(meromorph_added_vertex_count(result) == 0);
+    meromorph_result_free(result);
+    result = NULL;
+    meromorph_default_options(&options);
+    options.add_vertices = 2;
+    CHECK(meromorph_parameterize_d(p, WASHER_V, t, WASHER_F, &options, &result) ==
+          MEROMORPH_ERROR_ARGUMENT);
+    CHECK(strstr(meromorph_last_error(), "add_vertices") != NULL);
+    CHECK(meromorph_added_vertex_count(NULL) == 0);
+    CHECK(meromorph_added_vertices(NULL, NULL, NULL, NULL) == MEROMORPH_ERROR_ARGUMENT);
+    free(p);
+    free(t);
+    free(bary);
+    free(xyz);
+    free(on);
+    free(surface);
+    free(source);
   }
 
   printf("%d passed, 0 failed\n", passed);

@@ -24,7 +24,9 @@ struct meromorph_result {
   std::string report;
   std::string invalid_reasons, advice;
   size_t vertices = 0, triangles = 0;
-  std::vector<std::array<int, 3>> input_triangles; // the sphere's when nothing was split
+  // The written surface's triangles (the input's, or with vertices added the cut ones), which
+  // are the sphere's too when nothing was split.
+  std::vector<std::array<int, 3>> surface_triangles;
 };
 
 struct meromorph_remesh_result {
@@ -67,6 +69,8 @@ std::string check_options(const meromorph_options &options, size_t vertex_count,
     return "options.pack_uv is " + std::to_string(options.pack_uv) + "; use 0 or 1";
   if (options.strict != 0 && options.strict != 1)
     return "options.strict is " + std::to_string(options.strict) + "; use 0 or 1";
+  if (options.add_vertices != 0 && options.add_vertices != 1)
+    return "options.add_vertices is " + std::to_string(options.add_vertices) + "; use 0 or 1";
   if (options.area_correct != 0 && options.area_correct != 1)
     return "options.area_correct is " + std::to_string(options.area_correct) + "; use 0 or 1";
   if (options.origin_vertex < -1 || (long long)options.origin_vertex >= (long long)vertex_count)
@@ -106,17 +110,19 @@ std::string read_options(const meromorph_options *options, meromorph_options &se
   meromorph_default_options(&settings);
   if (!options) return "";
   // Version 1 ended before close_holes, version 2 before split_nonmanifold, version 5 (up to
-  // meromorph 0.1) before area_correct, and 0.2 as first built, before strict.
-  const size_t known_sizes[] = {offsetof(meromorph_options, close_holes),
-                                offsetof(meromorph_options, split_nonmanifold),
-                                offsetof(meromorph_options, area_correct),
-                                offsetof(meromorph_options, strict), sizeof(meromorph_options)};
+  // meromorph 0.1) before area_correct, and 0.2 as first built, before strict; version 5 with
+  // strict before add_vertices.
+  const size_t known_sizes[] = {
+      offsetof(meromorph_options, close_holes),  offsetof(meromorph_options, split_nonmanifold),
+      offsetof(meromorph_options, area_correct), offsetof(meromorph_options, strict),
+      offsetof(meromorph_options, add_vertices), sizeof(meromorph_options)};
   if (std::find(std::begin(known_sizes), std::end(known_sizes), options->struct_size) ==
       std::end(known_sizes))
     return "options.struct_size is " + std::to_string(options->struct_size) +
            ", which matches no version of meromorph_options (this library's is " +
            std::to_string(sizeof(meromorph_options)) +
            "): initialize the options with meromorph_default_options";
+  settings.add_vertices = 0; // an older caller counts on the input's vertices and triangles
   std::memcpy(&settings, options, options->struct_size);
   settings.struct_size = sizeof(meromorph_options);
   return "";
@@ -133,6 +139,7 @@ meromorph::ParameterizeOptions core_options(const meromorph_options &settings) {
   parameters.pole_face = settings.pole_face;
   parameters.close_holes = settings.close_holes != 0;
   parameters.split_nonmanifold = settings.split_nonmanifold != 0;
+  parameters.add_vertices = settings.add_vertices != 0;
   if (settings.strict != 0) meromorph::refuse_instead(parameters);
   parameters.pack_uv = settings.pack_uv != 0;
   parameters.area_correct = settings.area_correct != 0;
@@ -184,9 +191,10 @@ std::unique_ptr<meromorph_result> map_result(meromorph::MeshArrays &arrays,
   for (const Advice &advice : out->map.advice)
     causes.push_back(advice.cause);
   out->advice = join_phrases(causes);
-  out->vertices = arrays.positions.size();
+  out->vertices = arrays.positions.size() + out->map.added_vertices.size();
+  if (!out->map.surface_faces.empty()) arrays.triangles = out->map.surface_faces;
   out->triangles = arrays.triangles.size();
-  if (out->map.sphere_faces.empty()) out->input_triangles = std::move(arrays.triangles);
+  out->surface_triangles = std::move(arrays.triangles);
   return out;
 }
 
@@ -348,6 +356,7 @@ void meromorph_default_options(meromorph_options *options) {
   options->pole_face = -1;
   options->close_holes = 1;
   options->split_nonmanifold = 1;
+  options->add_vertices = 1;
 }
 
 meromorph_status meromorph_parameterize_d(const double *positions, size_t vertex_count,
@@ -481,10 +490,43 @@ meromorph_status meromorph_sphere_mesh(const meromorph_result *r, double *layere
     if (branch) branch[v] = map.branch_flag[v];
   }
   if (triangles) {
-    const auto &faces = map.sphere_faces.empty() ? r->input_triangles : map.sphere_faces;
+    const auto &faces = map.sphere_faces.empty() ? r->surface_triangles : map.sphere_faces;
     for (size_t t = 0; t < faces.size(); ++t)
       for (int k = 0; k < 3; ++k)
         triangles[3 * t + k] = faces[t][k];
+  }
+  return MEROMORPH_OK;
+}
+
+size_t meromorph_added_vertex_count(const meromorph_result *r) {
+  return r ? r->map.added_vertices.size() : 0;
+}
+
+meromorph_status meromorph_added_vertices(const meromorph_result *r, int32_t *triangles,
+                                          double *barycentric, double *xyz) {
+  if (!r) return fail(MEROMORPH_ERROR_ARGUMENT, "result is NULL");
+  for (size_t k = 0; k < r->map.added_vertices.size(); ++k) {
+    const meromorph::AddedVertex &added = r->map.added_vertices[k];
+    if (triangles) triangles[k] = added.face;
+    if (barycentric) barycentric[2 * k] = added.b1, barycentric[2 * k + 1] = added.b2;
+    if (xyz)
+      for (int axis = 0; axis < 3; ++axis)
+        xyz[3 * k + size_t(axis)] = added.position[axis];
+  }
+  return MEROMORPH_OK;
+}
+
+meromorph_status meromorph_surface_triangles(const meromorph_result *r, int32_t *triangles,
+                                             int32_t *source_triangle) {
+  if (!r) return fail(MEROMORPH_ERROR_ARGUMENT, "result is NULL");
+  const auto &faces = r->surface_triangles;
+  for (size_t t = 0; t < r->triangles; ++t) {
+    if (triangles)
+      for (int k = 0; k < 3; ++k)
+        triangles[3 * t + size_t(k)] = faces[t][size_t(k)];
+    if (source_triangle)
+      source_triangle[t] =
+          r->map.surface_face_source.empty() ? int32_t(t) : r->map.surface_face_source[t];
   }
   return MEROMORPH_OK;
 }

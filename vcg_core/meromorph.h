@@ -34,7 +34,7 @@ extern "C" {
    symbol version, libmeromorph.so.5 and MEROMORPH_5). Additions do not change it: a new option is
    a new field at the end of meromorph_options, which struct_size tells apart (an older caller's
    struct gets the new field's default), and a new function is a new symbol. */
-#define MEROMORPH_ABI_VERSION 5
+#define MEROMORPH_ABI_VERSION 6
 
 #if defined(__GNUC__)
 #define MEROMORPH_API __attribute__((visibility("default")))
@@ -107,6 +107,13 @@ typedef struct meromorph_options {
                             are welded or left out for the computation, and the results still have
                             every input vertex and triangle). Since meromorph 0.2; an older
                             struct_size is accepted, with 0 here. */
+  int add_vertices;      /* 1: where the input's triangles cannot carry the map without turning
+                            some over (slivers, coarse triangles at branch points), add the
+                            vertices it needs (default): they come after the input's, and
+                            meromorph_vertex_count and meromorph_triangle_count count the surface
+                            as written (see meromorph_added_vertices); 0 (and with strict): keep
+                            the input's triangles and report the map as not valid. Since ABI
+                            version 6; an older struct_size is accepted, with 0 here. */
 } meromorph_options;
 
 /* A map and everything measured on it; opaque. Made by meromorph_parameterize_*, read by the
@@ -164,8 +171,11 @@ MEROMORPH_API void meromorph_result_free(meromorph_result *result);
 
 /* Scalar getters. Inputs: result (may be NULL: counts give 0, genus and degree -1, flags 0,
    strings ""). Thread-safe: yes. Strings are owned by the result and live as long as it. */
-MEROMORPH_API size_t meromorph_vertex_count(const meromorph_result *result);   /* the input's */
-MEROMORPH_API size_t meromorph_triangle_count(const meromorph_result *result); /* the input's */
+/* The surface as written: the input's vertices and triangles, unless vertices were added
+   (options.add_vertices): then the input's vertices followed by the added ones, and the
+   triangles of meromorph_surface_triangles. */
+MEROMORPH_API size_t meromorph_vertex_count(const meromorph_result *result);
+MEROMORPH_API size_t meromorph_triangle_count(const meromorph_result *result);
 MEROMORPH_API int meromorph_genus(const meromorph_result *result);  /* summed over the parts */
 MEROMORPH_API int meromorph_degree(const meromorph_result *result); /* summed over the parts */
 MEROMORPH_API int meromorph_riemann_hurwitz_ok(const meromorph_result *result); /* 1 or 0 */
@@ -226,6 +236,30 @@ MEROMORPH_API meromorph_status meromorph_sphere_mesh(const meromorph_result *res
                                                      double *layered_xyz, int32_t *triangles,
                                                      int32_t *source_vertex, int32_t *layer,
                                                      int32_t *component, int32_t *branch);
+
+/* Vertices added where the input's triangles could not carry the map (since ABI version 6):
+   meromorph_added_vertex_count of them (0 when none was; NULL result: 0), numbered after the
+   input's vertices in the order given here.
+   Inputs:  result  not NULL
+   Outputs (caller-owned; any may be NULL: not filled), with a = meromorph_added_vertex_count:
+     triangles    a int32: the input's triangle each lies on (inside or on a side)
+     barycentric  2 * a doubles: b1, b2 of that triangle's second and third corners
+                  (the point is (1 - b1 - b2) * p0 + b1 * p1 + b2 * p2)
+     xyz          3 * a doubles: its position
+   meromorph_surface_triangles: the written surface's triangles (meromorph_triangle_count of them;
+   the input's when no vertex was added): an input triangle that was cut keeps its index with one
+   piece, its other pieces come after the input's triangles.
+     triangles        3 * meromorph_triangle_count int32 (may be NULL)
+     source_triangle  meromorph_triangle_count int32: the input's triangle each is part of (may be
+                      NULL)
+   Returns: MEROMORPH_OK, or MEROMORPH_ERROR_ARGUMENT for a NULL result. Thread-safe: yes. */
+MEROMORPH_API size_t meromorph_added_vertex_count(const meromorph_result *result);
+MEROMORPH_API meromorph_status meromorph_added_vertices(const meromorph_result *result,
+                                                        int32_t *triangles, double *barycentric,
+                                                        double *xyz);
+MEROMORPH_API meromorph_status meromorph_surface_triangles(const meromorph_result *result,
+                                                           int32_t *triangles,
+                                                           int32_t *source_triangle);
 
 /* Branch points: meromorph_branch_point_count of them (NULL result: 0).
    Inputs:  result  not NULL

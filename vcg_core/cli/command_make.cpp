@@ -8,6 +8,7 @@
 #include "io/mesh_reader.h"
 #include "io/mesh_writer.h"
 #include "mesh/topology.h"
+#include "shapes/cad_parts.h"
 #include "shapes/generated_surfaces.h"
 #include "shapes/rigid_motion.h"
 
@@ -35,6 +36,9 @@ struct MakeOptions {
   int tentacles = 6;
   double tentacle_length = 4.0;
   bool hole = false;
+  // cad
+  int holes = 2, segments = 64;
+  double thickness = 0.05;
   // subdivide
   std::string input;
   int steps = 1;
@@ -137,6 +141,23 @@ CLI::App *add_blob(CLI::App *make, MakeOptions &options) {
   return blob;
 }
 
+CLI::App *add_cad(CLI::App *make, MakeOptions &options) {
+  CLI::App *cad = make->add_subcommand(
+      "cad", "A part as CAD programs export it (write .stl): a plate with round holes (genus = "
+             "holes) or a cylinder (--holes 0), its flat faces cut into long thin triangles.");
+  add_common(cad, options);
+  cad->add_option("--holes", options.holes, "holes through the plate (0: a cylinder)")
+      ->capture_default_str();
+  cad->add_option("--segments", options.segments,
+                  "segments around each circle (a multiple of 4 with holes)")
+      ->capture_default_str();
+  cad->add_option("--thickness", options.thickness,
+                  "plate thickness (holes 1 apart) or cylinder height (radius 1); a thin plate "
+                  "has corners down to atan(thickness)")
+      ->capture_default_str();
+  return cad;
+}
+
 CLI::App *add_subdivide(CLI::App *make, MakeOptions &options) {
   CLI::App *subdivide = make->add_subcommand(
       "subdivide", "A mesh subdivided flat: every face into four, the same surface (the "
@@ -176,8 +197,9 @@ Command add_make_command(CLI::App &app) {
                        "stress test; default remeshes them isotropically");
   CLI::App *blob = add_blob(make, *options);
   CLI::App *subdivide = add_subdivide(make, *options);
+  CLI::App *cad = add_cad(make, *options);
 
-  return [options, sphere, torus, blob, subdivide]() {
+  return [options, sphere, torus, blob, subdivide, cad]() {
     Mesh mesh;
     if (subdivide->parsed()) {
       std::error_code error;
@@ -190,6 +212,8 @@ Command add_make_command(CLI::App &app) {
       make_icosphere(mesh, options->subdivisions, options->radius);
     else if (torus->parsed())
       make_torus(mesh, *options);
+    else if (cad->parsed())
+      make_cad_part(mesh, options->holes, options->segments, options->thickness);
     else if (blob->parsed())
       make_tentacle_blob(mesh, options->tentacles, options->tentacle_length, options->resolution,
                          options->hole);

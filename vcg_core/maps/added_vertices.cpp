@@ -1,15 +1,29 @@
 #include "maps/added_vertices.h"
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 namespace meromorph {
 
 std::vector<std::array<int, 2>> sides_to_cut(const Mesh &mesh, const Parameterization &map) {
   std::set<std::array<int, 2>> sides;
+  auto cut = [&](const MeshFace &face, int side) { // from corner side to corner side + 1
+    const int u = index_of(mesh, face.cV(side)), v = index_of(mesh, face.cV((side + 1) % 3));
+    sides.insert({std::min(u, v), std::max(u, v)});
+  };
+  // Corners the map opens to half a turn or more at branch points.
+  for (const MeshFace &face : mesh.face)
+    for (int k = 0; k < 3; ++k) {
+      const int e = map.branch_flag[size_t(index_of(mesh, face.cV(k)))];
+      if (e >= 2 &&
+          vcg::Angle(face.cP((k + 1) % 3) - face.cP(k), face.cP((k + 2) % 3) - face.cP(k)) * e >=
+              0.98 * M_PI)
+        cut(face, (k + 1) % 3);
+    }
   for (int f : map.quality.folded_face_indices) {
     const MeshFace &face = mesh.face[size_t(f)];
-    int side = 0; // from corner side to corner side + 1
+    int side = 0;
     double length = -1;
     for (int k = 0; k < 3; ++k) {
       const int opposite = index_of(mesh, face.cV((k + 2) % 3));
@@ -17,8 +31,7 @@ std::vector<std::array<int, 2>> sides_to_cut(const Mesh &mesh, const Parameteriz
       const double l = (face.cP(k) - face.cP((k + 1) % 3)).Norm() + (faces_branch ? 1e300 : 0);
       if (l > length) length = l, side = k;
     }
-    const int u = index_of(mesh, face.cV(side)), v = index_of(mesh, face.cV((side + 1) % 3));
-    sides.insert({std::min(u, v), std::max(u, v)});
+    cut(face, side);
   }
   return {sides.begin(), sides.end()};
 }

@@ -3,9 +3,10 @@
 // In:  a mesh and a map on it (its sphere positions, branch flags and folded faces as measured);
 //      for places, the mesh cut (edge_splitting.h, its vertices first) with, per face, the mesh's
 //      face it is part of.
-// Out: `sides_to_cut`: per folded face one side: the side opposite its branch point when it has
-//      one (the map multiplies the angle there: a corner of 180 / e degrees or more at a point of
-//      local degree e turns over whatever the values), else its longest side; each side once.
+// Out: `sides_to_cut`: the side opposite every corner at a branch point of local degree e that is
+//      (about) 180 / e degrees or more (the map multiplies the angle there: such a face turns over
+//      or flattens whatever the values), and per folded face one side: the side opposite its
+//      branch point when it has one, else its longest side; each side once.
 //      `places_on`: per vertex of the cut mesh after the mesh's own, the mesh's face it lies on,
 //      its barycentric coordinates there (b1, b2: of the face's second and third corners) and its
 //      position among `positions` (the mesh's vertex positions in the caller's unit).

@@ -1,5 +1,7 @@
 #include "maps/parameterization.h"
 
+#include <numeric>
+
 #include "common/errors.h"
 #include "common/stage_clock.h"
 #include "common/wording.h"
@@ -155,75 +157,77 @@ Parameterization restricted_to(const std::vector<Point3> &positions, const Mesh 
   return out;
 }
 
-// When the map on the mesh's own triangulation is not valid: the map computed on the mesh
-// subdivided at its edges' midpoints (once, twice, up to options.finer_levels times, within a
-// budget of faces) carried back to its vertices, from the first subdivision that carries a valid
-// map. Returns the levels used (0: none did).
-int computed_finer(const std::vector<Point3> &positions, Mesh &mesh, const MeshEdges &edges,
-                   const ParameterizeOptions &options, Parameterization &out,
-                   const Progress &progress, StageClock &clock) {
+// The map computed on the mesh subdivided at its edges' midpoints, `level` times.
+struct FinerMap {
+  int level = 0;
+  SplitEdges subdivision;
+  Parameterization map;
+};
+
+// When the map on the mesh's own triangulation is not valid: the map on the mesh subdivided
+// (once, twice, up to options.finer_levels times, within a budget of faces), from the first
+// subdivision that carries a valid one; none when none does.
+std::optional<FinerMap> finer_map(Mesh &mesh, const ParameterizeOptions &options,
+                                  const Progress &progress, StageClock &clock) {
   constexpr size_t face_budget = size_t(4) << 20;
   const MeshArrays arrays = arrays_from_mesh(mesh);
   for (int level = 1; level <= options.finer_levels; ++level) {
     if (arrays.triangles.size() << (2 * level) > face_budget) break;
     progress.report(0.0, "the triangulation cannot carry the map: computing on it subdivided");
-    const SplitEdges subdivision = midpoint_subdivision(arrays, level);
+    FinerMap finer{level, midpoint_subdivision(arrays, level), {}};
     Mesh fine;
-    mesh_from_arrays(subdivision.arrays, fine);
+    mesh_from_arrays(finer.subdivision.arrays, fine);
     ParameterizeOptions fine_options = options;
     fine_options.finer_levels = 0;
     fine_options.add_vertices = false;
-    Parameterization fine_map = parameterize(fine, fine_options, progress);
+    finer.map = parameterize(fine, fine_options, progress);
     clock.done("finer_computation");
-    if (!fine_map.valid) continue;
-    const std::vector<std::pair<std::string, double>> timings = out.timings_ms;
-    out = restricted_to(positions, mesh, edges, options, std::move(fine_map), subdivision, progress,
-                        clock);
-    out.timings_ms = timings;
-    out.computed_on_subdivision = level;
-    out.notes.push_back("computed on the mesh subdivided " +
-                        std::string(level == 1   ? "once"
-                                    : level == 2 ? "twice"
-                                                 : "three times") +
-                        " at its edges' midpoints (" +
-                        std::to_string(subdivision.arrays.positions.size()) +
-                        " vertices): its own triangulation could not carry a valid map");
-    return level;
+    if (finer.map.valid) return finer;
   }
-  return 0;
+  return std::nullopt;
 }
 
-// Where even that map turns faces of the mesh over: the mesh cut where they are (added_vertices.h)
-// and mapped again, up to eight times, within a budget of added vertices (eight times the mesh's,
-// at least 1,000); when the folded faces do not get fewer, every side is cut. The map of the cut
-// mesh, with its added vertices listed, or none.
-std::optional<Parameterization> mapped_with_added_vertices(const std::vector<Point3> &positions,
-                                                           Mesh &mesh,
-                                                           const ParameterizeOptions &options,
-                                                           Parameterization map, int levels,
-                                                           const Progress &progress) {
+std::string times_words(int level) {
+  return level == 1 ? "once" : level == 2 ? "twice" : std::to_string(level) + " times";
+}
+
+// The written surface with vertices added: the map of `surface` (whose first vertices are
+// mesh's, whose faces are parts of mesh's faces `face_source`), with its added vertices' places
+// on mesh, their positions and the branch points' in the caller's unit.
+void with_added_vertices(const Mesh &mesh, const std::vector<Point3> &positions,
+                         const MeshArrays &surface, const std::vector<int> &face_source,
+                         Parameterization &map) {
+  map.added_vertices = places_on(mesh, positions, surface, face_source);
+  for (BranchPoint &b : map.branch_points)
+    b.position = size_t(b.vertex) < mesh.vert.size()
+                     ? positions[size_t(b.vertex)].ToEigenVector<Eigen::Vector3d>()
+                     : map.added_vertices[size_t(b.vertex) - mesh.vert.size()].position;
+  map.surface_faces = surface.triangles;
+  map.surface_face_source = face_source;
+  map.notes.push_back(plural(map.added_vertices.size(), "vertex was", "vertices were") +
+                      " added to the written surface where its own faces could not carry the "
+                      "map without turning over (listed with their faces)");
+}
+
+// Where the map turns faces of the mesh over: the mesh cut there (added_vertices.h) and mapped
+// again, as long as the folded faces get fewer, up to four times. The map of the cut mesh, or
+// none.
+std::optional<Parameterization> mapped_with_cuts(const std::vector<Point3> &positions, Mesh &mesh,
+                                                 const ParameterizeOptions &options,
+                                                 Parameterization map, int levels,
+                                                 const Progress &progress) {
   ParameterizeOptions cut_options = options;
   cut_options.add_vertices = false;
   cut_options.finer_levels = std::max(levels, 1);
-  const size_t budget = std::max<size_t>(1000, mesh.vert.size() * 8);
   MeshArrays arrays = arrays_from_mesh(mesh);
   std::vector<int> face_source(arrays.triangles.size());
-  for (size_t f = 0; f < face_source.size(); ++f)
-    face_source[f] = int(f);
+  std::iota(face_source.begin(), face_source.end(), 0);
   Mesh cut_mesh;
   const Mesh *mapped = &mesh;
-  size_t fewest_folds = map.quality.folded_face_indices.size() + 1;
-  for (int round = 0; round < 8; ++round) {
-    const size_t folds = map.quality.folded_face_indices.size();
-    std::vector<std::array<int, 2>> sides;
-    if (folds > 0 && folds < fewest_folds) sides = sides_to_cut(*mapped, map);
-    fewest_folds = std::min(fewest_folds, folds);
-    if (sides.empty()) // no progress, or no fold to cut at: every side
-      for (const auto &t : arrays.triangles)
-        for (int k = 0; k < 3; ++k)
-          sides.push_back({t[size_t(k)], t[size_t((k + 1) % 3)]});
+  for (int round = 0; round < 4; ++round) {
+    const std::vector<std::array<int, 2>> sides = sides_to_cut(*mapped, map);
+    if (sides.empty()) return std::nullopt;
     SplitEdges cut = split_edges(arrays, sides);
-    if (cut.arrays.positions.size() - mesh.vert.size() > budget) return std::nullopt;
     for (int &source : cut.face_source)
       source = face_source[size_t(source)];
     arrays = std::move(cut.arrays);
@@ -231,21 +235,51 @@ std::optional<Parameterization> mapped_with_added_vertices(const std::vector<Poi
     mesh_from_arrays(arrays, cut_mesh);
     mapped = &cut_mesh;
     progress.report(0.0, "adding vertices where the map turns faces over");
+    const size_t folds = map.quality.folded_face_indices.size();
     map = parameterize(cut_mesh, cut_options, progress);
-    if (!map.valid) continue;
-    map.added_vertices = places_on(mesh, positions, arrays, face_source);
-    for (BranchPoint &b : map.branch_points) // in the caller's unit
-      b.position = size_t(b.vertex) < mesh.vert.size()
-                       ? positions[size_t(b.vertex)].ToEigenVector<Eigen::Vector3d>()
-                       : map.added_vertices[size_t(b.vertex) - mesh.vert.size()].position;
-    map.surface_faces = arrays.triangles;
-    map.surface_face_source = face_source;
-    map.notes.push_back(plural(map.added_vertices.size(), "vertex was", "vertices were") +
-                        " added to the written surface where its own faces could not carry the "
-                        "map without turning over (listed with their faces)");
-    return map;
+    if (map.valid) {
+      with_added_vertices(mesh, positions, arrays, face_source, map);
+      return map;
+    }
+    if (map.quality.folded_face_indices.size() >= folds) return std::nullopt;
   }
   return std::nullopt;
+}
+
+// When the map on the mesh's own triangulation is not valid: the finer map carried back to its
+// vertices; where that turns faces over (and options.add_vertices), the mesh cut there and mapped
+// again, or else the finer map on the whole subdivision.
+void map_finer(const std::vector<Point3> &positions, Mesh &mesh, const MeshEdges &edges,
+               const ParameterizeOptions &options, Parameterization &out, const Progress &progress,
+               StageClock &clock) {
+  std::optional<FinerMap> finer = finer_map(mesh, options, progress, clock);
+  if (finer) {
+    const std::vector<std::pair<std::string, double>> timings = out.timings_ms;
+    out = restricted_to(positions, mesh, edges, options, finer->map, finer->subdivision, progress,
+                        clock);
+    out.timings_ms = timings;
+    out.computed_on_subdivision = finer->level;
+    out.notes.push_back("computed on the mesh subdivided " + times_words(finer->level) +
+                        " at its edges' midpoints (" +
+                        std::to_string(finer->subdivision.arrays.positions.size()) +
+                        " vertices): its own triangulation could not carry a valid map");
+  }
+  if (out.valid || !options.add_vertices) return;
+  if (auto cut =
+          mapped_with_cuts(positions, mesh, options, out, finer ? finer->level : 0, progress)) {
+    out = std::move(*cut);
+    return;
+  }
+  if (!finer) return;
+  // The finer map as it is, on the subdivision: every midpoint added.
+  Parameterization subdivided = std::move(finer->map);
+  subdivided.computed_on_subdivision = finer->level;
+  with_added_vertices(mesh, positions, finer->subdivision.arrays, finer->subdivision.face_source,
+                      subdivided);
+  subdivided.notes.push_back("the surface is written subdivided " + times_words(finer->level) +
+                             " at its edges' midpoints, as the map was computed: fewer added "
+                             "vertices did not carry it");
+  out = std::move(subdivided);
 }
 
 } // namespace
@@ -289,14 +323,8 @@ Parameterization parameterize(Mesh &mesh, const ParameterizeOptions &options,
   if (options.area_correct) correct_the_area(mesh, out, branching, clock);
   describe_written_map(unit.originals(), mesh, prepared.edges, options, branching, out, progress,
                        clock);
-  if (!out.valid && out.quality.collapsed_face_indices.empty()) {
-    const int levels =
-        computed_finer(unit.originals(), mesh, prepared.edges, options, out, progress, clock);
-    if (!out.valid && options.add_vertices)
-      if (auto cut =
-              mapped_with_added_vertices(unit.originals(), mesh, options, out, levels, progress))
-        out = std::move(*cut);
-  }
+  if (!out.valid && out.quality.collapsed_face_indices.empty() && options.finer_levels > 0)
+    map_finer(unit.originals(), mesh, prepared.edges, options, out, progress, clock);
   progress.report(1.0, "done");
   return out;
 }
