@@ -57,8 +57,10 @@ int FilterMeromorphPlugin::getRequirements(QAction *action) {
 
 int FilterMeromorphPlugin::postCondition(QAction *action) const {
   if (ID(action) == FP_REMESH_THROUGH_CONFORMAL_SPHERE) return MeshModel::MM_NONE;
+  // With vertices added where the map needs them, the faces change too.
   return MeshModel::MM_VERTTEXCOORD | MeshModel::MM_WEDGTEXCOORD | MeshModel::MM_VERTQUALITY |
-         MeshModel::MM_VERTFLAGSELECT;
+         MeshModel::MM_VERTFLAGSELECT | MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNUMBER |
+         MeshModel::MM_FACENUMBER | MeshModel::MM_FACEVERT;
 }
 
 void FilterMeromorphPlugin::initParameterSet(QAction *action, MeshModel &model,
@@ -130,6 +132,11 @@ void FilterMeromorphPlugin::initParameterSet(QAction *action, MeshModel &model,
   parameters.addParam(RichBool("packUv", false, "Pack the parts' texture coordinates",
                                "Several parts, spherical coordinates: each part's texture in its "
                                "own cell of the unit square instead of each filling it."));
+  parameters.addParam(RichBool(
+      "addVertices", true, "Add vertices where needed",
+      "Where the mesh's triangles cannot carry the map without turning some over (slivers, "
+      "coarse faces at branch points), add the vertices it needs after the mesh's own and cut the "
+      "faces they lie on. Off: keep the mesh as it is and report the map as not valid."));
 }
 
 bool FilterMeromorphPlugin::fail(const QString &filter, const QString &message) {
@@ -194,6 +201,7 @@ meromorph_options filter_options(const RichParameterList &parameters, ProgressBr
   options.split_nonmanifold = parameters.getBool("splitNonManifold") ? 1 : 0;
   options.pack_uv = parameters.getBool("packUv") && options.uv_kind == 0 ? 1 : 0;
   options.strict = parameters.getBool("strict") ? 1 : 0;
+  options.add_vertices = parameters.getBool("addVertices") ? 1 : 0;
   options.progress = report_progress;
   options.progress_user = &bridge;
   return options;
@@ -201,7 +209,8 @@ meromorph_options filter_options(const RichParameterList &parameters, ProgressBr
 
 // Everything the filter uses from a result, read through the C ABI.
 struct FetchedMap {
-  std::vector<double> uv, corners, layered;
+  std::vector<double> uv, corners, layered, added;
+  std::vector<int32_t> surface_triangles, surface_source;
   std::vector<int32_t> layers, sphere_triangles, sphere_layers, branch_vertices, branch_degrees;
   meromorph_distortion distortion;
   int genus = 0, degree = 0;
@@ -210,8 +219,16 @@ struct FetchedMap {
   QJsonArray notes; // what was closed or split for the computation, in the report's words
 };
 
-FetchedMap fetch_map(const meromorph_result *result, size_t vertex_count, size_t face_count) {
+FetchedMap fetch_map(const meromorph_result *result) {
   FetchedMap map;
+  // The surface as written: the mesh's vertices, then any the map needed added.
+  const size_t vertex_count = meromorph_vertex_count(result),
+               face_count = meromorph_triangle_count(result);
+  map.added.resize(3 * meromorph_added_vertex_count(result));
+  meromorph_added_vertices(result, nullptr, nullptr, map.added.data());
+  map.surface_triangles.resize(3 * face_count);
+  map.surface_source.resize(face_count);
+  meromorph_surface_triangles(result, map.surface_triangles.data(), map.surface_source.data());
   map.uv.resize(2 * vertex_count);
   map.corners.resize(6 * face_count);
   map.layers.resize(vertex_count);
@@ -244,6 +261,41 @@ FetchedMap fetch_map(const meromorph_result *result, size_t vertex_count, size_t
   map.advice = meshlab_advice_words(causes, remedies).toStdString();
   map.notes = QJsonDocument::fromJson(QByteArray(meromorph_report_json(result)))["notes"].toArray();
   return map;
+}
+
+// The vertices the map needed added to the mesh (after its own), and the faces they cut replaced
+// by the written surface's: a cut face keeps its place with one piece, the other pieces are new
+// faces after the mesh's, each a copy of its face's attributes.
+void add_written_vertices(MeshModel &model, const FetchedMap &map) {
+  CMeshO &mesh = model.cm;
+  const LiveMesh before = live_mesh(mesh);
+  // Storage indices of the live vertices and faces, the new ones after them.
+  std::vector<size_t> vertex_at(before.live_of_dense.begin(), before.live_of_dense.end());
+  std::vector<size_t> face_at;
+  for (CFaceO *face : before.faces)
+    face_at.push_back(size_t(vcg::tri::Index(mesh, face)));
+  const size_t added = map.added.size() / 3, faces = map.surface_source.size();
+  auto vertex = vcg::tri::Allocator<CMeshO>::AddVertices(mesh, added);
+  for (size_t k = 0; k < added; ++k, ++vertex) {
+    vertex->P() = Point3m(map.added[3 * k], map.added[3 * k + 1], map.added[3 * k + 2]);
+    vertex_at.push_back(size_t(vcg::tri::Index(mesh, &*vertex)));
+  }
+  auto face = vcg::tri::Allocator<CMeshO>::AddFaces(mesh, faces - face_at.size());
+  for (size_t f = face_at.size(); f < faces; ++f, ++face)
+    face_at.push_back(size_t(vcg::tri::Index(mesh, &*face)));
+  for (size_t f = 0; f < faces; ++f) {
+    CFaceO &piece = mesh.face[face_at[f]];
+    if (f >= before.faces.size())
+      piece.ImportData(mesh.face[face_at[size_t(map.surface_source[f])]]);
+    for (int k = 0; k < 3; ++k)
+      piece.V(k) = &mesh.vert[vertex_at[size_t(map.surface_triangles[3 * f + k])]];
+  }
+  if (model.hasDataMask(MeshModel::MM_FACEFACETOPO))
+    vcg::tri::UpdateTopology<CMeshO>::FaceFace(mesh);
+  if (model.hasDataMask(MeshModel::MM_VERTFACETOPO))
+    vcg::tri::UpdateTopology<CMeshO>::VertexFace(mesh);
+  vcg::tri::UpdateNormal<CMeshO>::PerVertexNormalizedPerFaceNormalized(mesh);
+  vcg::tri::UpdateBounding<CMeshO>::Box(mesh);
 }
 
 // Texture coordinates per vertex (and per wedge), the layer as quality, branch vertices selected.
@@ -331,13 +383,14 @@ bool FilterMeromorphPlugin::applyFilter(QAction *action, MeshDocument &document,
                         .arg(meromorph_last_error()),
                     std::vector<int>(codes.begin(), codes.end())));
   }
-  const FetchedMap map = fetch_map(result, live.vertex_count(), live.faces.size());
+  const FetchedMap map = fetch_map(result);
   meromorph_result_free(result);
 
   model->updateDataMask(MeshModel::MM_VERTTEXCOORD | MeshModel::MM_VERTQUALITY);
   const bool wedges = parameters.getBool("wedgeTexCoords");
   if (wedges) model->updateDataMask(MeshModel::MM_WEDGTEXCOORD);
-  write_texture(mesh, live, map, wedges);
+  if (!map.added.empty()) add_written_vertices(*model, map);
+  write_texture(mesh, map.added.empty() ? live : live_mesh(mesh), map, wedges);
   if (parameters.getBool("layeredSphere")) add_sphere_layer(document, model->label(), map);
 
   Log("Conformal spherical parameterization: genus %d, degree %d, %d branch points%s%s; "
@@ -348,6 +401,11 @@ bool FilterMeromorphPlugin::applyFilter(QAction *action, MeshDocument &document,
       map.riemann_hurwitz ? "holds" : "FAILS", map.distortion.angle_error_mean_degrees,
       map.distortion.quasi_conformal_mean, map.distortion.quasi_conformal_p95,
       int(map.distortion.folded_faces_away_from_branch_points), (long long)timer.elapsed());
+  if (!map.added.empty())
+    Log("Conformal spherical parameterization: %d vertices added where the mesh's faces could not "
+        "carry the map without turning some over (after the mesh's own; the faces they lie on are "
+        "cut)",
+        int(map.added.size() / 3));
   for (const QJsonValue &note : map.notes)
     Log("Conformal spherical parameterization: %s", note.toString().toStdString().c_str());
   if (!map.valid)

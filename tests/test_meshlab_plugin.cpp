@@ -90,6 +90,22 @@ TEST(MeshLabPlugin, TorusAndGenusTwoMatchTheCommandLine) {
   expect_same_as_cli(meshlab, test::data_path("eight.off"), 6);
 }
 
+TEST(MeshLabPlugin, CadPartsGetTheVerticesTheMapNeeds) {
+  // A plate with a hole as CAD programs export it: its own triangles cannot carry the map, so
+  // the filter adds the vertices it needs, as the command line does (the same count, the same
+  // texture coordinates at every vertex).
+  const MeshLab meshlab;
+  const test::RunResult made =
+      test::run_cli({"make", "cad", "--holes", "1", "--segments", "64", "--thickness", "0.05", "-o",
+                     meshlab.path("plate.ply")});
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  expect_same_as_cli(meshlab, meshlab.path("plate.ply"), 4);
+  Mesh plate, mapped;
+  test::load_ply_attributes(meshlab.path("plate.ply"), plate);
+  test::load_ply_attributes(meshlab.path("meshlab.ply"), mapped);
+  EXPECT_GT(mapped.VN(), plate.VN()) << "vertices were added";
+}
+
 // The example script with one text replaced (it must be there), written as `name` beside the
 // MeshLab copy; returns its path.
 std::string script_with(const MeshLab &meshlab, const std::string &name, const std::string &from,

@@ -3,7 +3,8 @@
 # In:  flat numpy arrays (float32 positions, int32 triangles) and options.
 # Out: a dict of numpy arrays (sphere and layered positions, per-vertex and per-corner UVs,
 #      layers, branch vertices and local degrees; the layered sphere as a mesh, with the copies of
-#      vertices that were split at non-manifold spots) and figures; MeromorphError with the
+#      vertices that were split at non-manifold spots; the vertices added where the mesh's
+#      triangles could not carry the map, and the triangles of the surface with them) and figures; MeromorphError with the
 #      library's message, status and remedy codes when the mesh cannot be mapped or the library cannot be
 #      loaded.
 import ctypes
@@ -12,7 +13,7 @@ import os
 
 import numpy as np
 
-ABI_VERSION = 5
+ABI_VERSION = 6
 STATUS_NAMES = {1: "internal failure", 2: "bad argument", 3: "cannot be mapped", 4: "cancelled"}
 
 PROGRESS = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_double, ctypes.c_char_p, ctypes.c_void_p)
@@ -34,6 +35,7 @@ class Options(ctypes.Structure):
         ("pack_uv", ctypes.c_int),
         ("area_correct", ctypes.c_int),
         ("strict", ctypes.c_int),
+        ("add_vertices", ctypes.c_int),
     ]
 
 
@@ -84,7 +86,7 @@ def load():
             ctypes.POINTER(Options), ctypes.POINTER(ctypes.c_void_p)]
         lib.meromorph_sphere_mesh.argtypes = [ctypes.c_void_p] * 7
         for name in ("vertex_count", "triangle_count", "branch_point_count",
-                     "sphere_vertex_count"):
+                     "sphere_vertex_count", "added_vertex_count"):
             getattr(lib, "meromorph_" + name).restype = ctypes.c_size_t
             getattr(lib, "meromorph_" + name).argtypes = [ctypes.c_void_p]
         for name in ("genus", "degree", "riemann_hurwitz_ok", "map_valid"):
@@ -96,6 +98,8 @@ def load():
             getattr(lib, "meromorph_" + name).argtypes = [ctypes.c_void_p] + (
                 [] if name in ("report_json", "result_free") else [ctypes.c_void_p])
         lib.meromorph_branch_points.argtypes = [ctypes.c_void_p, ctypes.c_void_p, ctypes.c_void_p]
+        lib.meromorph_added_vertices.argtypes = [ctypes.c_void_p] * 4
+        lib.meromorph_surface_triangles.argtypes = [ctypes.c_void_p] * 3
         lib.meromorph_remesh_d.argtypes = [
             ctypes.c_void_p, ctypes.c_size_t, ctypes.c_void_p, ctypes.c_size_t,
             ctypes.POINTER(Options), ctypes.c_int64, ctypes.c_int, ctypes.POINTER(ctypes.c_void_p)]
@@ -169,7 +173,7 @@ def remesh(positions, triangles, target_vertices=0, area_correct=True, close_hol
 
 def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1, pole_face=-1,
                  form_pair=(-1, -1), layer_gap=0.0, close_holes=True, split_nonmanifold=True,
-                 pack_uv=False, strict=False, progress=None):
+                 pack_uv=False, strict=False, add_vertices=True, progress=None):
     lib = load()
     positions = np.ascontiguousarray(positions, dtype=np.float32).reshape(-1)
     triangles = np.ascontiguousarray(triangles, dtype=np.int32).reshape(-1)
@@ -185,6 +189,7 @@ def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
     options.split_nonmanifold = 1 if split_nonmanifold else 0
     options.pack_uv = 1 if pack_uv else 0
     options.strict = 1 if strict else 0
+    options.add_vertices = 1 if add_vertices else 0
     callback = PROGRESS(lambda fraction, stage, user: 1 if progress is None else progress(fraction))
     options.progress = callback
     result = ctypes.c_void_p()
@@ -220,6 +225,15 @@ def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1,
                 out["sphere_source"].ctypes.data, out["sphere_layer"].ctypes.data,
                 out["sphere_component"].ctypes.data, out["sphere_branch"].ctypes.data),
         ]
+        # The surface as written: with vertices added, the input's then these, and its triangles.
+        added = lib.meromorph_added_vertex_count(result)
+        out["added_xyz"] = np.empty(3 * added)
+        out["surface_triangles"] = np.empty(3 * t, dtype=np.int32)
+        out["surface_source"] = np.empty(t, dtype=np.int32)
+        statuses.append(lib.meromorph_added_vertices(result, None, None,
+                                                     out["added_xyz"].ctypes.data))
+        statuses.append(lib.meromorph_surface_triangles(
+            result, out["surface_triangles"].ctypes.data, out["surface_source"].ctypes.data))
         count = lib.meromorph_branch_point_count(result)
         out["branch_vertices"] = np.empty(count, dtype=np.int32)
         out["branch_degrees"] = np.empty(count, dtype=np.int32)

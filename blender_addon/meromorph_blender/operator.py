@@ -1,6 +1,7 @@
 # The operator "Conformal Sphere Map": Blender's mesh in, UVs, selection and a layered sphere out.
 import time
 
+import bmesh
 import bpy
 import numpy as np
 from bpy.props import BoolProperty, EnumProperty, FloatProperty, IntProperty
@@ -36,6 +37,45 @@ def loop_uvs(mesh, loops, corner_uv):
             u = np.where(u < 0.5, u + 1.0, u)
         per_loop[span, 0] = u
     return uv
+
+
+def add_written_vertices(mesh, result):
+    """The vertices the map needed added to `mesh` (after its own), and the polygons whose
+    triangles they cut replaced by the written surface's triangles (with the polygon's material and
+    shading). Returns the mesh's loop triangles' loops and, per loop, the written surface's
+    triangle corner it is (an index into the result's per-corner arrays)."""
+    polygon_of = np.empty(len(mesh.loop_triangles), dtype=np.int32)
+    mesh.loop_triangles.foreach_get("polygon_index", polygon_of)
+    surface = result["surface_triangles"].reshape(-1, 3)
+    source_polygon = polygon_of[result["surface_source"]]
+    replaced = np.unique(polygon_of[np.unique(result["surface_source"][len(polygon_of):])])
+    looks = {int(p): (mesh.polygons[int(p)].material_index, mesh.polygons[int(p)].use_smooth)
+             for p in replaced}
+    bm = bmesh.new()
+    bm.from_mesh(mesh)
+    bm.faces.ensure_lookup_table()
+    bmesh.ops.delete(bm, geom=[bm.faces[int(p)] for p in replaced], context="FACES_ONLY")
+    for co in result["added_xyz"].reshape(-1, 3):
+        bm.verts.new(co)
+    bm.verts.ensure_lookup_table()
+    for k in np.flatnonzero(np.isin(source_polygon, replaced)):
+        face = bm.faces.new([bm.verts[int(v)] for v in surface[k]])
+        face.material_index, face.smooth = looks[int(source_polygon[k])]
+    bm.to_mesh(mesh)
+    bm.free()
+    mesh.update()
+    mesh.calc_loop_triangles()
+    triangles = np.empty(3 * len(mesh.loop_triangles), dtype=np.int32)
+    mesh.loop_triangles.foreach_get("vertices", triangles)
+    loops = np.empty(3 * len(mesh.loop_triangles), dtype=np.int32)
+    mesh.loop_triangles.foreach_get("loops", loops)
+    corner_of = {}
+    for k, corners in enumerate(surface.tolist()):
+        for c, v in enumerate(corners):
+            corner_of[(tuple(sorted(corners)), v)] = 3 * k + c
+    triangles = triangles.reshape(-1, 3).tolist()
+    order = np.array([corner_of[(tuple(sorted(t)), v)] for t in triangles for v in t])
+    return loops, order
 
 
 def add_branch_group(obj, vertices):
@@ -144,6 +184,12 @@ class MESH_OT_conformal_sphere_map(ActiveMeshOperator, bpy.types.Operator):
     pack_uv: BoolProperty(name="Pack Parts' UVs", default=False,
                           description="Several parts: each part's UVs in its own cell of the "
                                       "unit square instead of each filling it")
+    add_vertices: BoolProperty(
+        name="Add Vertices Where Needed", default=True,
+        description="Where the mesh's triangles cannot carry the map without turning some over "
+                    "(slivers, coarse faces at branch points), add the vertices it needs and cut "
+                    "the faces they lie on (undo removes them); off: keep the mesh as it is and "
+                    "report the map as not valid")
 
     back_to_edit_mode = True
 
@@ -158,14 +204,18 @@ class MESH_OT_conformal_sphere_map(ActiveMeshOperator, bpy.types.Operator):
                 form_pair=(self.form_i, self.form_j), layer_gap=self.layer_gap,
                 close_holes=self.close_holes, split_nonmanifold=self.split_nonmanifold,
                 pack_uv=self.pack_uv and self.uv_kind == "SPHERICAL", strict=self.strict,
-                progress=progress)
+                add_vertices=self.add_vertices, progress=progress)
         except library.MeromorphError as error:
             self.report({"ERROR"}, "'%s' cannot be mapped: %s (vertex numbers are Blender's)"
                         % (obj.name, remedies.with_remedies(str(error), error.remedies)))
             return {"CANCELLED"}
 
+        order = np.arange(len(result["corner_uv"]) // 2)  # loop triangle corners = the result's
+        added = len(result["added_xyz"]) // 3
+        if added:
+            loops, order = add_written_vertices(mesh, result)
         layer = mesh.uv_layers.get(self.uv_name) or mesh.uv_layers.new(name=self.uv_name)
-        layer.data.foreach_set("uv", loop_uvs(mesh, loops, result["corner_uv"]))
+        layer.data.foreach_set("uv", loop_uvs(mesh, loops, result["corner_uv"].reshape(-1, 2)[order]))
         mesh.uv_layers.active = layer
 
         branch = result["branch_vertices"]
@@ -178,12 +228,14 @@ class MESH_OT_conformal_sphere_map(ActiveMeshOperator, bpy.types.Operator):
         mesh.update()
 
         if self.create_sphere:
-            self.make_sphere_object(context, obj, result)
+            self.make_sphere_object(context, obj, result, order)
 
         elapsed = time.time() - started
-        self.report({"INFO"}, "%s: genus %d, degree %d, %d branch points; away from them: angle "
-                    "error %.2f deg, quasi-conformal mean %.2f (95th percentile %.2f); %.2f s%s"
+        self.report({"INFO"}, "%s: genus %d, degree %d, %d branch points%s; away from them: "
+                    "angle error %.2f deg, quasi-conformal mean %.2f (95th percentile %.2f); %.2f s%s"
                     % (obj.name, result["genus"], result["degree"], len(branch),
+                       ", %d vertices added where the faces could not carry the map" % added
+                       if added else "",
                        result["angle_error"], result["quasi_conformal_mean"],
                        result["quasi_conformal_p95"], elapsed,
                        "" if result["valid"]
@@ -192,7 +244,7 @@ class MESH_OT_conformal_sphere_map(ActiveMeshOperator, bpy.types.Operator):
                        + remedies.advice_words(result["advice"])))
         return {"FINISHED"}
 
-    def make_sphere_object(self, context, obj, result):
+    def make_sphere_object(self, context, obj, result, order):
         mesh = obj.data
         name = obj.name + " Layered Sphere"
         # Each polygon on the sphere's vertices: a loop's sphere vertex is its triangle corner's
@@ -202,7 +254,7 @@ class MESH_OT_conformal_sphere_map(ActiveMeshOperator, bpy.types.Operator):
         mesh.loop_triangles.foreach_get("loops", loops)
         loop_vertex = np.empty(len(mesh.loops), dtype=np.int64)
         mesh.loops.foreach_get("vertex_index", loop_vertex)
-        loop_vertex[loops] = result["sphere_triangles"]
+        loop_vertex[loops] = result["sphere_triangles"][order]
         polygons = [loop_vertex[p.loop_start:p.loop_start + p.loop_total].tolist()
                     for p in mesh.polygons]
         return add_mesh_object(context, obj, name, result["sphere_layered"], polygons,

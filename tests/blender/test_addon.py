@@ -313,4 +313,32 @@ try:
 except RuntimeError as error:
     check("at least 4" in str(error), "the refusal says why: %s" % error)
 
+# A CAD part as exported (a plate with one hole, flat faces fanned into long thin triangles):
+# its own triangles cannot carry the map, so the vertices it needs are added after the mesh's own
+# (which keep their positions), and the written surface is a valid cover: no triangle of the
+# layered sphere turned over, two layers, four branch points.
+clear_scene()
+cad_path = os.path.join(WORK, "cad_plate.off")
+subprocess.run([CLI, "make", "cad", "--holes", "1", "--segments", "64", "--thickness", "0.05",
+                "-o", cad_path], check=True, stdout=subprocess.DEVNULL)
+plate = add_off(cad_path, "CAD Plate")
+original = np.empty(3 * len(plate.data.vertices))
+plate.data.vertices.foreach_get("co", original)
+check(run_operator(layer_gap=0.3) == {"FINISHED"}, "CAD plate mapped")
+check(len(plate.data.vertices) > len(original) // 3, "vertices added: %d -> %d"
+      % (len(original) // 3, len(plate.data.vertices)))
+now = np.empty(3 * len(plate.data.vertices))
+plate.data.vertices.foreach_get("co", now)
+check(np.abs(now[:len(original)] - original).max() < 1e-6, "the mesh's own vertices stay put")
+check_result(plate, (1, 2, 4), quads=True)
+sphere_data = bpy.data.objects[plate.name + " Layered Sphere"].data
+sphere_data.calc_loop_triangles()
+corners = np.empty(3 * len(sphere_data.loop_triangles), dtype=np.int32)
+sphere_data.loop_triangles.foreach_get("vertices", corners)
+co = np.empty(3 * len(sphere_data.vertices))
+sphere_data.vertices.foreach_get("co", co)
+on_sphere = co.reshape(-1, 3) / np.linalg.norm(co.reshape(-1, 3), axis=1)[:, None]
+a, b, c = (on_sphere[corners.reshape(-1, 3)[:, k]] for k in range(3))
+check((np.einsum("ij,ij->i", a, np.cross(b - a, c - a)) > 0).all(), "no triangle turned over")
+
 print(summary())
