@@ -13,6 +13,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "io/mesh_reader.h"
 #include "mesh/mesh_from_arrays.h"
@@ -216,6 +217,80 @@ TEST(MeshesUsersBring, MessagesNameTheFilesOwnFaces) {
   EXPECT_NE(info.out.find("triangle 6 is in face 5"), std::string::npos) << info.out;
   // By default the doubled face is left out and the pyramid mapped.
   EXPECT_EQ(test::run_cli({"param", path, "-o", dir.path("p.ply"), "--quiet"}).exit_code, 0);
+}
+
+// A CAD part as exported (make cad: a plate with a hole, its flat faces fanned into long thin
+// triangles, as STL): its own triangles cannot carry the map. The written surface keeps the
+// input's vertices first, unchanged and in order, then the added ones, each where the report
+// says (on the input's face it names, at its barycentric coordinates); every written face lies on
+// one input face; the map is a valid cover (judged by the suite's reader). With
+// --no-added-vertices or --strict it is refused instead (exit 3), nothing written.
+TEST(MeshesUsersBring, PoorTriangulationsGetTheVerticesTheMapNeeds) {
+  test::TempDir dir;
+  const std::string input = dir.path("plate.stl");
+  const test::RunResult made = test::run_cli(
+      {"make", "cad", "--holes", "1", "--segments", "64", "--thickness", "0.05", "-o", input});
+  ASSERT_EQ(made.exit_code, 0) << made.err;
+  Mesh mesh;
+  read_mesh(input, mesh);
+  const MeshArrays original = arrays_from_mesh(mesh);
+  const Written written = map_with_defaults(dir, input);
+  ASSERT_FALSE(written.surface.columns.empty());
+  std::ifstream report_stream(dir.path("plate.stl.json"));
+  const nlohmann::json report = nlohmann::json::parse(report_stream);
+  const auto &x = written.surface.columns.at("x"), &y = written.surface.columns.at("y"),
+             &z = written.surface.columns.at("z");
+  const size_t n = original.positions.size();
+  ASSERT_GT(x.size(), n);
+  ASSERT_EQ(report["added_vertices"].size(), x.size() - n);
+  for (size_t v = 0; v < n; ++v)
+    for (int k = 0; k < 3; ++k)
+      EXPECT_EQ((k == 0 ? x : k == 1 ? y : z)[v], original.positions[v][k]) << "vertex " << v;
+  // The written surface's vertex at (face, b1, b2) of the input.
+  auto on_face = [&](int face, double b1, double b2, int k) {
+    const auto &c = original.triangles[size_t(face)];
+    return (1 - b1 - b2) * original.positions[size_t(c[0])][k] +
+           b1 * original.positions[size_t(c[1])][k] + b2 * original.positions[size_t(c[2])][k];
+  };
+  for (const auto &added : report["added_vertices"]) {
+    const size_t v = added["vertex"].get<size_t>();
+    const int face = added["face"].get<int>();
+    const double b1 = added["b1"].get<double>(), b2 = added["b2"].get<double>();
+    ASSERT_TRUE(face >= 0 && size_t(face) < original.triangles.size());
+    EXPECT_TRUE(b1 >= -1e-12 && b2 >= -1e-12 && b1 + b2 <= 1 + 1e-12) << v;
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR((k == 0 ? x : k == 1 ? y : z)[v], on_face(face, b1, b2, k), 1e-12) << v;
+  }
+  // Every written face on one input face: its corners' barycentric coordinates there in [0, 1].
+  auto inside = [&](size_t face, size_t v) {
+    const auto &c = original.triangles[face];
+    const Point3 a = original.positions[size_t(c[0])], e1 = original.positions[size_t(c[1])] - a,
+                 e2 = original.positions[size_t(c[2])] - a, d = Point3(x[v], y[v], z[v]) - a;
+    const double g11 = e1.dot(e1), g12 = e1.dot(e2), g22 = e2.dot(e2), det = g11 * g22 - g12 * g12;
+    const double b1 = (g22 * d.dot(e1) - g12 * d.dot(e2)) / det,
+                 b2 = (g11 * d.dot(e2) - g12 * d.dot(e1)) / det;
+    const Point3 back = a + e1 * b1 + e2 * b2;
+    return b1 >= -1e-9 && b2 >= -1e-9 && b1 + b2 <= 1 + 1e-9 && (back - d - a).Norm() < 1e-9;
+  };
+  const auto &faces = written.sphere.triangles;
+  ASSERT_EQ(faces.size(), report["written_faces"].get<size_t>());
+  for (size_t f = 0; f < faces.size(); ++f) {
+    bool on_one = false;
+    for (size_t g = 0; g < original.triangles.size() && !on_one; ++g)
+      on_one = inside(g, size_t(faces[f][0])) && inside(g, size_t(faces[f][1])) &&
+               inside(g, size_t(faces[f][2]));
+    EXPECT_TRUE(on_one) << "written face " << f << " lies on no input face";
+  }
+  const test::WrittenMap map = test::read_written_map(dir.path("plate.stl.sphere.ply"), 0);
+  EXPECT_EQ(map.folded_faces.size(), 0u);
+  EXPECT_EQ(map.degree, 2);
+  EXPECT_TRUE(map.riemann_hurwitz);
+  for (const char *refuse : {"--no-added-vertices", "--strict"}) {
+    const test::RunResult r =
+        test::run_cli({"param", input, "-o", dir.path("refused.ply"), refuse, "--quiet"});
+    EXPECT_EQ(r.exit_code, 3) << refuse << ": " << r.err;
+    EXPECT_FALSE(std::ifstream(dir.path("refused.ply")).good()) << refuse;
+  }
 }
 
 } // namespace

@@ -218,6 +218,21 @@ TEST(WrittenMaps, PoorTriangulationsMapAsConformallyAsRemeshedOnes) {
   }
 }
 
+TEST(WrittenMaps, CadPartsMapValidly) {
+  // Parts as CAD programs export them (make cad: flat faces fanned into long thin triangles,
+  // walls as strips; a thin plate has corners down to 0.06 degrees), as STL: where their own
+  // triangles cannot carry the map, it is computed on them subdivided and written with the
+  // vertices it needs added. Judged from the written files.
+  test::TempDir dir;
+  for (const char *thickness : {"0.05", "0.001"}) {
+    const std::string input = dir.path(std::string("plate") + thickness + ".stl");
+    const test::RunResult made = run_cli(
+        {"make", "cad", "--holes", "1", "--segments", "64", "--thickness", thickness, "-o", input});
+    ASSERT_EQ(made.exit_code, 0) << made.err;
+    expect_valid_written_map(dir, input, 1);
+  }
+}
+
 // `make genus` of this genus and edges per ring, marching cubes' triangles kept and needles
 // injected (30% of the edges split near one end); its path.
 std::string raw_marching_cubes_with_needles(const test::TempDir &dir, int genus, int resolution) {
