@@ -138,45 +138,56 @@ void correct_the_area(const Mesh &mesh, Parameterization &out, Branching &branch
   clock.done("area_correction");
 }
 
-// The map computed on `mesh` subdivided (fine, whose first vertices and face slots are mesh's),
+// The map computed on `mesh` refined (fine, whose first vertices and face slots are mesh's),
 // said on mesh's own vertices: their values, the branching and all that follows measured anew on
 // mesh's faces.
 Parameterization restricted_to(const std::vector<Point3> &positions, const Mesh &mesh,
                                const MeshEdges &edges, const ParameterizeOptions &options,
-                               Parameterization fine, const SplitEdges &subdivision,
+                               Parameterization fine, const SplitEdges &refined,
                                const Progress &progress, StageClock &clock) {
   Parameterization out = std::move(fine);
   out.sphere.resize(mesh.vert.size());
   if (!out.flat.empty()) out.flat.resize(mesh.vert.size());
   out.branch_points.clear();
   out.advice.clear();
-  if (out.pole_face >= 0) out.pole_face = subdivision.face_source[size_t(out.pole_face)];
+  if (out.pole_face >= 0) out.pole_face = refined.face_source[size_t(out.pole_face)];
   if (out.origin_vertex >= int(mesh.vert.size())) out.origin_vertex = -1;
   const Branching branching = analyse_branching(mesh, out.sphere, out.euler);
   describe_written_map(positions, mesh, edges, options, branching, out, progress, clock);
   return out;
 }
 
-// The map computed on the mesh subdivided at its edges' midpoints, `level` times.
+// The map computed on the mesh refined (split_long_edges) at the `level`th finer edge length.
 struct FinerMap {
   int level = 0;
-  SplitEdges subdivision;
+  SplitEdges refined;
   Parameterization map;
 };
 
-// When the map on the mesh's own triangulation is not valid: the map on the mesh subdivided
-// (once, twice, up to options.finer_levels times, within a budget of faces), from the first
-// subdivision that carries a valid one; none when none does.
+// When the map on the mesh's own triangulation is not valid: the map on the mesh refined until
+// no edge is longer than that of an even triangulation with 4, 16, 64 (up to options.finer_levels
+// powers of 4) times its vertices (long thin faces become many well-shaped ones; within a budget
+// of faces), from the first that carries a valid one; none when none does.
 std::optional<FinerMap> finer_map(Mesh &mesh, const ParameterizeOptions &options,
                                   const Progress &progress, StageClock &clock) {
   constexpr size_t face_budget = size_t(4) << 20;
   const MeshArrays arrays = arrays_from_mesh(mesh);
+  double area = 0;
+  for (const auto &t : arrays.triangles)
+    area += ((arrays.positions[size_t(t[1])] - arrays.positions[size_t(t[0])]) ^
+             (arrays.positions[size_t(t[2])] - arrays.positions[size_t(t[0])]))
+                .Norm() /
+            2;
   for (int level = 1; level <= options.finer_levels; ++level) {
-    if (arrays.triangles.size() << (2 * level) > face_budget) break;
-    progress.report(0.0, "the triangulation cannot carry the map: computing on it subdivided");
-    FinerMap finer{level, midpoint_subdivision(arrays, level), {}};
+    // An equilateral triangulation of this area with n vertices has edges sqrt(area / 0.866 n).
+    const double vertices = double(arrays.positions.size()) * std::pow(4.0, level);
+    progress.report(0.0, "the triangulation cannot carry the map: computing on it refined");
+    std::optional<SplitEdges> refined =
+        split_long_edges(arrays, std::sqrt(area / (0.866 * vertices)), face_budget);
+    if (!refined) break;
+    FinerMap finer{level, std::move(*refined), {}};
     Mesh fine;
-    mesh_from_arrays(finer.subdivision.arrays, fine);
+    mesh_from_arrays(finer.refined.arrays, fine);
     ParameterizeOptions fine_options = options;
     fine_options.finer_levels = 0;
     fine_options.add_vertices = false;
@@ -185,10 +196,6 @@ std::optional<FinerMap> finer_map(Mesh &mesh, const ParameterizeOptions &options
     if (finer.map.valid) return finer;
   }
   return std::nullopt;
-}
-
-std::string times_words(int level) {
-  return level == 1 ? "once" : level == 2 ? "twice" : std::to_string(level) + " times";
 }
 
 // The written surface with vertices added: the map of `surface` (whose first vertices are
@@ -248,21 +255,22 @@ std::optional<Parameterization> mapped_with_cuts(const std::vector<Point3> &posi
 
 // When the map on the mesh's own triangulation is not valid: the finer map carried back to its
 // vertices; where that turns faces over (and options.add_vertices), the mesh cut there and mapped
-// again, or else the finer map on the whole subdivision.
+// again, or else the finer map on the whole refined mesh.
 void map_finer(const std::vector<Point3> &positions, Mesh &mesh, const MeshEdges &edges,
                const ParameterizeOptions &options, Parameterization &out, const Progress &progress,
                StageClock &clock) {
   std::optional<FinerMap> finer = finer_map(mesh, options, progress, clock);
   if (finer) {
     const std::vector<std::pair<std::string, double>> timings = out.timings_ms;
-    out = restricted_to(positions, mesh, edges, options, finer->map, finer->subdivision, progress,
-                        clock);
+    out =
+        restricted_to(positions, mesh, edges, options, finer->map, finer->refined, progress, clock);
     out.timings_ms = timings;
-    out.computed_on_subdivision = finer->level;
-    out.notes.push_back("computed on the mesh subdivided " + times_words(finer->level) +
-                        " at its edges' midpoints (" +
-                        std::to_string(finer->subdivision.arrays.positions.size()) +
-                        " vertices): its own triangulation could not carry a valid map");
+    out.computed_on_refinement = finer->level;
+    out.notes.push_back("computed on the mesh refined (" +
+                        std::to_string(finer->refined.arrays.positions.size()) +
+                        " vertices: its long edges cut at their midpoints until none was longer "
+                        "than an even triangulation's): its own triangulation could not carry a "
+                        "valid map");
   }
   if (out.valid || !options.add_vertices) return;
   if (auto cut =
@@ -271,14 +279,13 @@ void map_finer(const std::vector<Point3> &positions, Mesh &mesh, const MeshEdges
     return;
   }
   if (!finer) return;
-  // The finer map as it is, on the subdivision: every midpoint added.
+  // The finer map as it is, on the refined mesh: every vertex the refinement made added.
   Parameterization subdivided = std::move(finer->map);
-  subdivided.computed_on_subdivision = finer->level;
-  with_added_vertices(mesh, positions, finer->subdivision.arrays, finer->subdivision.face_source,
+  subdivided.computed_on_refinement = finer->level;
+  with_added_vertices(mesh, positions, finer->refined.arrays, finer->refined.face_source,
                       subdivided);
-  subdivided.notes.push_back("the surface is written subdivided " + times_words(finer->level) +
-                             " at its edges' midpoints, as the map was computed: fewer added "
-                             "vertices did not carry it");
+  subdivided.notes.push_back("the surface is written as the map was computed, refined: fewer "
+                             "added vertices did not carry it");
   out = std::move(subdivided);
 }
 

@@ -61,8 +61,9 @@ struct ParameterizeOptions {
   // (area_correction.h); conformality is unchanged, the texture density spreads more evenly.
   bool area_correct = false;
   // When the mesh's own triangulation carries no valid map (slivers, coarse faces near branch
-  // points): compute on it subdivided at its edges' midpoints, up to this many times, and carry
-  // the map back to its vertices (the outputs are the same mesh's). 0: never.
+  // points): compute on it refined (its long edges cut until none is longer than an even
+  // triangulation's with 4, 16, ... times its vertices; up to this many times) and carry the map
+  // back to its vertices. 0: never.
   int finer_levels = 3;
   // parameterize called on the mesh the outputs hold: where even the finer map cannot be carried
   // by the mesh's faces without turning some over, add the few vertices it needs (listed in
@@ -135,8 +136,8 @@ struct Parameterization {
   // Branch points placed on vertices fold-free: genus 1, half periods (genus1_branch_placement.h);
   // genus >= 2, critical points repaired inside faces (branch_snapping.h).
   int snapped_branch_points = 0;
-  int untangled_vertices = 0;      // sliver corners moved to unfold them (fold_untangling.h)
-  int computed_on_subdivision = 0; // levels of midpoint subdivision computed on (compute_finer)
+  int untangled_vertices = 0;     // sliver corners moved to unfold them (fold_untangling.h)
+  int computed_on_refinement = 0; // which refinement the map was computed on (finer_levels)
   std::array<int, 2> form_pair{-1, -1};
   FormPair form_coefficients; // genus >= 2: a_k, b_k of the pair used (form_pairs.h)
   int pair_attempts = 0;      // genus >= 2: pairs tried until one was generic

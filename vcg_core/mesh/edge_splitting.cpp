@@ -83,22 +83,46 @@ SplitEdges split_edges(const MeshArrays &arrays, const std::vector<std::array<in
   return out;
 }
 
-SplitEdges midpoint_subdivision(const MeshArrays &arrays, int levels) {
+namespace {
+
+// `out` with the sides that `cut` chooses cut, its faces' sources still the first arrays'.
+template <class Cut> void split_where(SplitEdges &out, const Cut &cut) {
+  std::vector<std::array<int, 2>> sides;
+  for (const auto &t : out.arrays.triangles)
+    for (int k = 0; k < 3; ++k)
+      if (cut(t[size_t(k)], t[size_t((k + 1) % 3)]))
+        sides.push_back({t[size_t(k)], t[size_t((k + 1) % 3)]});
+  SplitEdges finer = split_edges(out.arrays, sides);
+  for (int &source : finer.face_source)
+    source = out.face_source[size_t(source)];
+  out = std::move(finer);
+}
+
+SplitEdges unsplit(const MeshArrays &arrays) {
   SplitEdges out;
   out.arrays.positions = arrays.positions;
   out.arrays.triangles = arrays.triangles;
   for (size_t f = 0; f < arrays.triangles.size(); ++f)
     out.face_source.push_back(int(f));
-  for (int level = 0; level < levels; ++level) {
-    std::vector<std::array<int, 2>> every;
-    every.reserve(out.arrays.triangles.size() * 3);
-    for (const auto &t : out.arrays.triangles)
-      for (int k = 0; k < 3; ++k)
-        every.push_back({t[size_t(k)], t[size_t((k + 1) % 3)]});
-    SplitEdges finer = split_edges(out.arrays, every);
-    for (int &source : finer.face_source)
-      source = out.face_source[size_t(source)];
-    out = std::move(finer);
+  return out;
+}
+
+} // namespace
+
+std::optional<SplitEdges> split_long_edges(const MeshArrays &arrays, double max_length,
+                                           size_t face_budget) {
+  SplitEdges out = unsplit(arrays);
+  const double squared = max_length * max_length;
+  for (bool more = true; more;) {
+    more = false;
+    split_where(out, [&](int u, int v) {
+      const bool long_side =
+          (out.arrays.positions[size_t(u)] - out.arrays.positions[size_t(v)]).SquaredNorm() >
+          squared;
+      more |= long_side;
+      return long_side;
+    });
+    if (out.arrays.triangles.size() > face_budget) return std::nullopt;
   }
   return out;
 }

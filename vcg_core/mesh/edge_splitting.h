@@ -8,11 +8,14 @@
 //      two, with two into three (the quadrilateral left by its shorter diagonal), with three into
 //      four. A cut face keeps its slot with its piece at its first corner; its other pieces are
 //      appended, and `face_source` names, per face of the result, the face it was cut from.
-//      `midpoint_subdivision` cuts every edge, `levels` times: each face into 4^levels similar
-//      ones, the first of them at its first corner in its own slot.
+//      `split_long_edges` cuts every
+//      edge longer than `max_length`, again and again until none is (long thin faces become
+//      many well-shaped ones; `face_source` names the input's faces); none when that would make
+//      more than `face_budget` faces.
 #pragma once
 
 #include <array>
+#include <optional>
 #include <vector>
 
 #include "mesh/mesh_from_arrays.h"
@@ -26,6 +29,7 @@ struct SplitEdges {
 
 SplitEdges split_edges(const MeshArrays &arrays, const std::vector<std::array<int, 2>> &edges);
 
-SplitEdges midpoint_subdivision(const MeshArrays &arrays, int levels);
+std::optional<SplitEdges> split_long_edges(const MeshArrays &arrays, double max_length,
+                                           size_t face_budget);
 
 } // namespace meromorph

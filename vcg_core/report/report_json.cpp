@@ -234,8 +234,7 @@ nlohmann::json parameterization_json(const Parameterization &map) {
                                    {"edges", edges},
                                    {"added_vertices", map.nonmanifold_split.added_vertices}};
   }
-  if (map.computed_on_subdivision > 0)
-    report["computed_on_subdivision"] = map.computed_on_subdivision;
+  if (map.computed_on_refinement > 0) report["computed_on_refinement"] = map.computed_on_refinement;
   if (!map.added_vertices.empty()) {
     // Each added vertex: its index in the written surface, the input's face it lies on, its
     // barycentric coordinates there (of the face's second and third corners) and its position.
