@@ -48,6 +48,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
       remesh_options.even_out = !(options & 4);
       remesh_options.vertices = 12 + (options >> 3) * 16;
       SurfaceRemesh remesh;
+      add_written_vertices(map, mesh);
       remesh_through_sphere(mesh, map, remesh_options, {}, remesh);
     }
   } catch (const InternalError &) {

@@ -283,6 +283,7 @@ std::unique_ptr<meromorph_remesh_result> remesh_result(meromorph::MeshArrays &ar
   RemeshOptions options;
   options.vertices = target_vertices > 0 ? (long long)target_vertices : -1;
   SurfaceRemesh remesh;
+  add_written_vertices(map, mesh); // the surface the map was written on
   remesh_through_sphere(mesh, map, options, progress.range(0.6, 1.0), remesh);
   auto out = std::make_unique<meromorph_remesh_result>();
   for (const auto &vertex : remesh.mesh.vert)

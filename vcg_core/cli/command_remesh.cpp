@@ -88,6 +88,7 @@ int run_remesh(const RemeshCommandOptions &options) {
     return int(ExitCode::cannot_parameterize);
   }
   SurfaceRemesh remesh;
+  add_written_vertices(map, mesh); // the surface the map was written on
   remesh_through_sphere(mesh, map, remesh_options, bar.progress().range(0.6, 1.0), remesh);
   bar.finish();
 
