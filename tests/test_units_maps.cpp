@@ -457,14 +457,51 @@ TEST(Genus1Placement, FlatCornersAndAreasOfAGridTorus) {
   EXPECT_NEAR(flat, 3 * std::abs(forms.riemann_matrix(0, 0).imag()), 1e-9);
 }
 
-TEST(Genus0Correction, FoldedPlaneFacesByOrientationInTheirChart) {
+TEST(Genus0Correction, FoldedPlaneFacesByOrientationOnTheSphere) {
   FaceIncidence in;
   in.corners = {{0, 1, 2}, {0, 2, 1}, {3, 4, 5}};
   const std::vector<PlaneValue> values = {{{0, 0}},  {{0.5, 0}}, {{0, 0.5}},
                                           {{10, 0}}, {{0, -10}}, {{20, 0}}};
-  // The third face, outside the unit circle, is judged in 1 / z: (0.1, 0.1i, 0.05) turns
-  // counter-clockwise there. The second is the first turned over.
+  // The second face is the first turned over; the third, far out, turns clockwise in the plane
+  // but its circumcircle holds the unit disk's centre's antipode: on the sphere it is not folded.
   EXPECT_EQ(folded_plane_faces(in, values), std::vector<int>{1});
+  // Against a direct computation: a plane triangle keeps its orientation on the sphere exactly
+  // when 1 + |c|^2 > R^2 (c its circumcentre, R its circumradius), for triangles of every size
+  // and place (200k of them; those within rounding of the circle condition left out).
+  std::mt19937_64 random(7);
+  std::normal_distribution<double> normal;
+  std::uniform_real_distribution<double> uniform(-2, 2);
+  FaceIncidence many;
+  std::vector<PlaneValue> corners;
+  std::vector<int> expected;
+  for (int t = 0; t < 200000; ++t) {
+    const double scale = std::pow(10.0, uniform(random));
+    const Complex shift = Complex(normal(random), normal(random)) * scale * (1 + uniform(random));
+    Complex z[3];
+    for (Complex &w : z)
+      w = Complex(normal(random), normal(random)) * scale + shift;
+    const double orientation = std::imag(std::conj(z[1] - z[0]) * (z[2] - z[0]));
+    const Complex a = z[0], b = z[1], c = z[2];
+    const double d = 2 * (a.real() * (b.imag() - c.imag()) + b.real() * (c.imag() - a.imag()) +
+                          c.real() * (a.imag() - b.imag()));
+    const Complex centre(
+        (std::norm(a) * (b.imag() - c.imag()) + std::norm(b) * (c.imag() - a.imag()) +
+         std::norm(c) * (a.imag() - b.imag())) /
+            d,
+        (std::norm(a) * (c.real() - b.real()) + std::norm(b) * (a.real() - c.real()) +
+         std::norm(c) * (b.real() - a.real())) /
+            d);
+    const double power = 1 + std::norm(centre) - std::norm(a - centre);
+    if (std::abs(power) < 1e-6 * (1 + std::norm(a - centre)) || std::abs(orientation) < 1e-9)
+      continue;
+    const int first = int(corners.size());
+    for (const Complex &w : z)
+      corners.push_back({w});
+    many.corners.push_back({first, first + 1, first + 2});
+    if ((orientation > 0) != (power > 0)) expected.push_back(int(many.corners.size()) - 1);
+  }
+  ASSERT_GT(many.corners.size(), 150000u);
+  EXPECT_EQ(folded_plane_faces(many, corners), expected);
 }
 
 // The squared-moduli tests answer as the std::abs ones they replace, near the thresholds, far

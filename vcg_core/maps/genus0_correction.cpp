@@ -10,6 +10,7 @@
 #include "mesh/cotan_laplacian.h"
 #include "solvers/leading_block_solve.h"
 #include "sphere/plane_triangles.h"
+#include "sphere/sphere_geometry.h"
 
 namespace meromorph {
 namespace {
@@ -93,29 +94,15 @@ std::vector<int> south_cap(const std::vector<PlaneValue> &values) {
 
 std::vector<int> folded_plane_faces(const FaceIncidence &in,
                                     const std::vector<PlaneValue> &values) {
+  // As the written map is judged: the chord triangle of the images on the sphere. (A plane
+  // triangle's orientation says nothing there once its circumcircle holds the south pole's
+  // antipode; straight edges in a chart of 1 / z are no image of the map's.)
   return parallel_select(in.corners.size(), [&](size_t f) {
-    PlaneValue corner[3];
-    bool inside_unit_disk = true;
-    for (int k = 0; k < 3; ++k) {
-      corner[k] = values[size_t(in.corners[f][k])];
-      inside_unit_disk &= !corner[k].infinite && inside_unit_circle(corner[k].w);
-    }
-    Complex z[3];
-    bool chart_ok = true;
-    for (int k = 0; k < 3; ++k) {
-      if (inside_unit_disk)
-        z[k] = corner[k].w;
-      else if (corner[k].infinite)
-        z[k] = 0;
-      else if (corner[k].w == Complex(0, 0))
-        chart_ok = false;
-      else
-        z[k] = 1.0 / corner[k].w;
-    }
-    if (!chart_ok) // a face from 0 to beyond the unit circle: only the plane chart holds it
-      for (int k = 0; k < 3; ++k)
-        z[k] = corner[k].w;
-    return folded_in_the_plane(z);
+    Eigen::Vector3d s[3];
+    for (int k = 0; k < 3; ++k)
+      s[k] = to_sphere(values[size_t(in.corners[f][k])]);
+    if (collapsed_image(s[0], s[1], s[2])) return false;
+    return !(s[0].dot((s[1] - s[0]).cross(s[2] - s[0])) > 0);
   });
 }
 

@@ -59,8 +59,8 @@ Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
                                     const std::vector<int> &elimination_order,
                                     const CapLastFactor &cap_last);
 
-// Faces whose image turns clockwise in the plane (checked in the chart z where |z| < 1 on all
-// corners, else in 1 / z), or is flat; faces below what doubles resolve are not counted.
+// Faces whose image on the sphere (the chord triangle of the corners' inverse stereographic
+// images) is turned over or flat; faces below what doubles resolve are not counted.
 std::vector<int> folded_plane_faces(const FaceIncidence &in, const std::vector<PlaneValue> &values);
 
 } // namespace meromorph
