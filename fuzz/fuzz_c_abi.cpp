@@ -79,8 +79,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   const meromorph_status status = meromorph_parameterize_d(
       positions.data(), vertex_count, triangles.data(), triangle_count, &options, &result);
   if (status == MEROMORPH_OK) {
-    std::vector<double> buffer(6 * (vertex_count + triangle_count) + 6);
-    std::vector<int32_t> ints(vertex_count + 1), degrees(vertex_count + 1);
+    // The surface as written: the input's, or with vertices added where the map needs them.
+    const size_t written_vertices = meromorph_vertex_count(result),
+                 written_triangles = meromorph_triangle_count(result);
+    if (written_vertices != vertex_count + meromorph_added_vertex_count(result) ||
+        written_triangles < triangle_count)
+      __builtin_trap();
+    std::vector<double> buffer(6 * (written_vertices + written_triangles) + 6);
+    std::vector<int32_t> ints(written_vertices + 1), degrees(written_vertices + 1);
     meromorph_sphere_positions(result, buffer.data());
     meromorph_layered_positions(result, buffer.data());
     meromorph_vertex_uvs(result, buffer.data());
@@ -88,14 +94,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     meromorph_layers(result, ints.data());
     const size_t sphere_vertices = meromorph_sphere_vertex_count(result);
     std::vector<double> layered(3 * sphere_vertices);
-    std::vector<int32_t> sphere_ints(sphere_vertices), sphere_triangles(3 * triangle_count);
+    std::vector<int32_t> sphere_ints(sphere_vertices), sphere_triangles(3 * written_triangles);
     if (meromorph_sphere_mesh(result, layered.data(), sphere_triangles.data(), sphere_ints.data(),
                               sphere_ints.data(), sphere_ints.data(),
                               sphere_ints.data()) != MEROMORPH_OK)
       __builtin_trap();
     for (int32_t t : sphere_triangles)
       if (t < 0 || size_t(t) >= sphere_vertices) __builtin_trap(); // the sphere mesh is whole
-    if (meromorph_branch_point_count(result) <= vertex_count)
+    if (meromorph_branch_point_count(result) <= written_vertices)
       meromorph_branch_points(result, ints.data(), degrees.data());
     meromorph_distortion distortion;
     meromorph_get_distortion(result, &distortion);
