@@ -85,46 +85,49 @@ SplitEdges split_edges(const MeshArrays &arrays, const std::vector<std::array<in
 
 namespace {
 
-// `out` with the sides that `cut` chooses cut, its faces' sources still the first arrays'.
-template <class Cut> void split_where(SplitEdges &out, const Cut &cut) {
-  std::vector<std::array<int, 2>> sides;
-  for (const auto &t : out.arrays.triangles)
-    for (int k = 0; k < 3; ++k)
-      if (cut(t[size_t(k)], t[size_t((k + 1) % 3)]))
-        sides.push_back({t[size_t(k)], t[size_t((k + 1) % 3)]});
+// `out` with `sides` cut, its faces' sources still the first arrays'.
+void cut_sides(SplitEdges &out, const std::vector<std::array<int, 2>> &sides) {
   SplitEdges finer = split_edges(out.arrays, sides);
   for (int &source : finer.face_source)
     source = out.face_source[size_t(source)];
   out = std::move(finer);
 }
 
-SplitEdges unsplit(const MeshArrays &arrays) {
+} // namespace
+
+std::optional<SplitEdges> split_long_edges(const MeshArrays &arrays, double max_length,
+                                           size_t face_budget) {
+  const auto &p = arrays.positions;
+  // About how many faces it makes: each face its area over an even triangle's of side
+  // max_length, or at least its longest side over max_length; beyond the budget, none is cut.
+  double estimate = 0;
+  for (const auto &t : arrays.triangles) {
+    const Point3 a = p[size_t(t[0])], b = p[size_t(t[1])], c = p[size_t(t[2])];
+    const double longest = std::max({(b - a).Norm(), (c - b).Norm(), (a - c).Norm()});
+    estimate += std::max(((b - a) ^ (c - a)).Norm() / 2 / (0.433 * max_length * max_length),
+                         longest / max_length);
+  }
+  if (!(estimate <= double(face_budget))) return std::nullopt;
   SplitEdges out;
   out.arrays.positions = arrays.positions;
   out.arrays.triangles = arrays.triangles;
   for (size_t f = 0; f < arrays.triangles.size(); ++f)
     out.face_source.push_back(int(f));
-  return out;
-}
-
-} // namespace
-
-std::optional<SplitEdges> split_long_edges(const MeshArrays &arrays, double max_length,
-                                           size_t face_budget) {
-  SplitEdges out = unsplit(arrays);
   const double squared = max_length * max_length;
-  for (bool more = true; more;) {
-    more = false;
-    split_where(out, [&](int u, int v) {
-      const bool long_side =
-          (out.arrays.positions[size_t(u)] - out.arrays.positions[size_t(v)]).SquaredNorm() >
-          squared;
-      more |= long_side;
-      return long_side;
-    });
-    if (out.arrays.triangles.size() > face_budget) return std::nullopt;
+  for (;;) {
+    std::vector<std::array<int, 2>> sides;
+    for (const auto &t : out.arrays.triangles)
+      for (int k = 0; k < 3; ++k) {
+        const int u = t[size_t(k)], v = t[size_t((k + 1) % 3)];
+        if ((out.arrays.positions[size_t(u)] - out.arrays.positions[size_t(v)]).SquaredNorm() >
+            squared)
+          sides.push_back({u, v});
+      }
+    if (sides.empty()) return out;
+    // A cut side adds a face to each face on it.
+    if (out.arrays.triangles.size() + sides.size() > face_budget) return std::nullopt;
+    cut_sides(out, sides);
   }
-  return out;
 }
 
 } // namespace meromorph
