@@ -34,7 +34,7 @@ extern "C" {
    symbol version, libmeromorph.so.5 and MEROMORPH_5). Additions do not change it: a new option is
    a new field at the end of meromorph_options, which struct_size tells apart (an older caller's
    struct gets the new field's default), and a new function is a new symbol. */
-#define MEROMORPH_ABI_VERSION 6
+#define MEROMORPH_ABI_VERSION 5
 
 #if defined(__GNUC__)
 #define MEROMORPH_API __attribute__((visibility("default")))
@@ -112,8 +112,8 @@ typedef struct meromorph_options {
                             vertices it needs (default): they come after the input's, and
                             meromorph_vertex_count and meromorph_triangle_count count the surface
                             as written (see meromorph_added_vertices); 0 (and with strict): keep
-                            the input's triangles and report the map as not valid. Since ABI
-                            version 6; an older struct_size is accepted, with 0 here. */
+                            the input's triangles and report the map as not valid. Since
+                            meromorph 0.3; an older struct_size is accepted, with 0 here. */
 } meromorph_options;
 
 /* A map and everything measured on it; opaque. Made by meromorph_parameterize_*, read by the
@@ -237,7 +237,7 @@ MEROMORPH_API meromorph_status meromorph_sphere_mesh(const meromorph_result *res
                                                      int32_t *source_vertex, int32_t *layer,
                                                      int32_t *component, int32_t *branch);
 
-/* Vertices added where the input's triangles could not carry the map (since ABI version 6):
+/* Vertices added where the input's triangles could not carry the map (since meromorph 0.3):
    meromorph_added_vertex_count of them (0 when none was; NULL result: 0), numbered after the
    input's vertices in the order given here.
    Inputs:  result  not NULL

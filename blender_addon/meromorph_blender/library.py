@@ -13,7 +13,7 @@ import os
 
 import numpy as np
 
-ABI_VERSION = 6
+ABI_VERSION = 5
 STATUS_NAMES = {1: "internal failure", 2: "bad argument", 3: "cannot be mapped", 4: "cancelled"}
 
 PROGRESS = ctypes.CFUNCTYPE(ctypes.c_int, ctypes.c_double, ctypes.c_char_p, ctypes.c_void_p)
