@@ -33,6 +33,8 @@ QString meshlab_remedy_words(int remedy) {
            "Curvatures and Orientation > Transform: Scale)";
   case MEROMORPH_REMEDY_CHOOSE_UV_KIND:
     return "choose 'Spherical' texture coordinates to pack the parts' texture coordinates";
+  case MEROMORPH_REMEDY_ADD_VERTICES:
+    return "tick 'Add vertices where needed' (and untick 'Strict') in this filter's parameters";
   default:
     return "";
   }

@@ -40,7 +40,7 @@ namespace {
 thread_local std::string last_error;
 thread_local std::vector<int32_t> last_remedies;
 
-static_assert(int(meromorph::last_remedy) == MEROMORPH_REMEDY_CHOOSE_UV_KIND,
+static_assert(int(meromorph::last_remedy) == MEROMORPH_REMEDY_ADD_VERTICES,
               "meromorph_remedy in meromorph.h lists every Remedy of common/remedy.h");
 
 meromorph_status fail(meromorph_status status, const std::string &message,

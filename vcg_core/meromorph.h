@@ -65,7 +65,8 @@ typedef enum meromorph_remedy {
   MEROMORPH_REMEDY_GENERIC_FORM_PAIR = 8,      /* options.form_pair = -1, -1 */
   MEROMORPH_REMEDY_SHORTEN_THIN_PARTS = 9,     /* long thin parts: shorten, thicken, or map apart */
   MEROMORPH_REMEDY_CHECK_UNITS = 10,           /* a stray vertex, or coordinates in other units */
-  MEROMORPH_REMEDY_CHOOSE_UV_KIND = 11         /* pack_uv needs uv_kind 0 (spherical) */
+  MEROMORPH_REMEDY_CHOOSE_UV_KIND = 11,        /* pack_uv needs uv_kind 0 (spherical) */
+  MEROMORPH_REMEDY_ADD_VERTICES = 12           /* options.add_vertices = 1 (and strict = 0) */
 } meromorph_remedy;
 
 /* Progress: fraction in [0, 1] and the stage in words. Return 0 to cancel, non-zero to go on.

@@ -19,6 +19,7 @@ WORDS = {
     9: "shorten or thicken them, or map them as separate objects",
     10: "remove the stray vertex, or bring the coordinates to one unit (Object > Apply > Scale)",
     11: "choose Spherical UVs to pack the parts' UVs",
+    12: "turn on Add Vertices Where Needed (and off Strict) in the operator's panel",
 }
 
 

@@ -33,6 +33,9 @@ std::string remedy_words(Remedy remedy) {
     return "remove the stray vertex, or bring the coordinates to one unit";
   case Remedy::choose_uv_kind:
     return "use --pack-uv with --uv spherical (the default)";
+  case Remedy::add_vertices:
+    return "let meromorph add the vertices the map needs (run without --no-added-vertices and "
+           "--strict)";
   }
   return "";
 }

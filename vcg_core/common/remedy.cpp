@@ -18,6 +18,8 @@ const char *remedy_code(Remedy remedy) {
     return "remesh";
   case Remedy::refine:
     return "refine";
+  case Remedy::add_vertices:
+    return "add_vertices";
   case Remedy::generic_form_pair:
     return "generic_form_pair";
   case Remedy::shorten_thin_parts:

@@ -25,9 +25,10 @@ enum class Remedy : int {
   shorten_thin_parts = 9,     // long thin parts shrink below double precision
   check_units = 10,           // a stray vertex far away, or coordinates in different units
   choose_uv_kind = 11,        // packing is for spherical texture coordinates only
+  add_vertices = 12,          // let the map add the vertices the triangulation lacks
 };
 
-constexpr Remedy last_remedy = Remedy::choose_uv_kind;
+constexpr Remedy last_remedy = Remedy::add_vertices;
 
 struct Advice {
   std::string cause;

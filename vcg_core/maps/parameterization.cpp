@@ -253,6 +253,15 @@ std::optional<Parameterization> mapped_with_cuts(const std::vector<Point3> &posi
   return std::nullopt;
 }
 
+// No refinement carried a valid map either: refining by hand would not help; a new
+// triangulation (isotropic remeshing) may.
+void advise_remeshing_after_refinement(Parameterization &out) {
+  for (Advice &advice : out.advice)
+    if (advice.remedy == Remedy::refine)
+      advice = {"no refinement of the mesh that meromorph tried carried a valid map either",
+                Remedy::remesh};
+}
+
 // When the map on the mesh's own triangulation is not valid: the finer map carried back to its
 // vertices; where that turns faces over (and options.add_vertices), the mesh cut there and mapped
 // again, or else the finer map on the whole refined mesh.
@@ -272,13 +281,27 @@ void map_finer(const std::vector<Point3> &positions, Mesh &mesh, const MeshEdges
                         "than an even triangulation's): its own triangulation could not carry a "
                         "valid map");
   }
-  if (out.valid || !options.add_vertices) return;
+  if (out.valid) return;
+  if (!options.add_vertices) {
+    // The refinement carried a valid map; the mesh's own faces cannot: vertices would do.
+    if (finer)
+      out.advice = {{"the map was computed on the mesh refined (" +
+                         std::to_string(finer->refined.arrays.positions.size()) +
+                         " vertices), and the mesh's own faces cannot carry it",
+                     Remedy::add_vertices}};
+    else
+      advise_remeshing_after_refinement(out);
+    return;
+  }
   if (auto cut =
           mapped_with_cuts(positions, mesh, options, out, finer ? finer->level : 0, progress)) {
     out = std::move(*cut);
     return;
   }
-  if (!finer) return;
+  if (!finer) {
+    advise_remeshing_after_refinement(out);
+    return;
+  }
   // The finer map as it is, on the refined mesh: every vertex the refinement made added.
   Parameterization subdivided = std::move(finer->map);
   subdivided.computed_on_refinement = finer->level;
