@@ -290,6 +290,10 @@ TEST(MeshesUsersBring, PoorTriangulationsGetTheVerticesTheMapNeeds) {
         test::run_cli({"param", input, "-o", dir.path("refused.ply"), refuse, "--quiet"});
     EXPECT_EQ(r.exit_code, 3) << refuse << ": " << r.err;
     EXPECT_FALSE(std::ifstream(dir.path("refused.ply")).good()) << refuse;
+    // The advice is the one that works: not to refine by hand (meromorph did), but to let it add
+    // the vertices.
+    EXPECT_NE(r.err.find("add the vertices the map needs"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("refine it"), std::string::npos) << r.err;
   }
 }
 
