@@ -7,7 +7,7 @@
 
 int main(void) {
   enum { AROUND = 48, TUBE = 24, V = AROUND * TUBE, F = 2 * V };
-  double *xyz = malloc(sizeof(double) * 3 * V), *sphere = malloc(sizeof(double) * 3 * V);
+  double *xyz = malloc(sizeof(double) * 3 * V);
   int32_t *triangles = malloc(sizeof(int32_t) * 3 * F);
   for (int i = 0; i < AROUND; ++i)
     for (int j = 0; j < TUBE; ++j) { /* radii 2 and 1 */
@@ -27,6 +27,8 @@ int main(void) {
     fprintf(stderr, "cannot map: %s\n", meromorph_last_error());
     return 1;
   }
+  /* The surface as written: the input's vertices, then any the map needed added. */
+  double *sphere = malloc(sizeof(double) * 3 * meromorph_vertex_count(result));
   meromorph_sphere_positions(result, sphere); /* vertex k on the unit sphere: sphere[3k..3k+2] */
   printf("genus %d, degree %d, %zu branch points, valid: %s\n", meromorph_genus(result),
          meromorph_degree(result), meromorph_branch_point_count(result),

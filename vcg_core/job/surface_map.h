@@ -37,8 +37,10 @@ Parameterization parameterize_surface(Mesh &input, const ParameterizeOptions &op
 //      vertex indices of the triangles (0-based, counter-clockwise seen from outside). Any Eigen
 //      matrix or map converts (a row-major one, or a map over flat x, y, z arrays, without a
 //      copy). options, progress as above (the callback is called on this thread).
-// Out: the map in V's and F's numbering: `sphere` (n unit vectors), `layered`, `uv` (per vertex
-//      and per corner), `sheets.vertex_layer`, `branch_points`, `degree`, `genus`, `valid` and
+// Out: the map in V's and F's numbering: `sphere` (n unit vectors; with vertices added where F's
+//      triangles cannot carry the map, options.add_vertices, n plus `added_vertices`, on the
+//      triangles `surface_faces`), `layered`, `uv` (per vertex and per corner),
+//      `sheets.vertex_layer`, `branch_points`, `degree`, `genus`, `valid` and
 //      `invalid`, `quality` (distortion), `report` data (report/report_json.h turns it into the
 //      JSON of `meromorph param`). The arrays are only read; nothing is kept after the call.
 // Throws: InputError (what is wrong with the mesh, with vertex / face indices, and remedies),
