@@ -14,8 +14,9 @@
 //      `holes_closed`. Outputs hold the input's vertices and faces only: a closed hole shows as a
 //      gap on the sphere. On a closed, connected mesh without defects whose own triangles cannot
 //      carry the map, the vertices it needs are added (options.add_vertices; `added_vertices`,
-//      `surface_faces`: parameterization.h; add_written_vertices below makes the written mesh). With `options.split_nonmanifold`, non-manifold vertices and edges are
-//      first taken apart (nonmanifold_split.h): the per-vertex arrays are then the split mesh's
+//      `surface_faces`: parameterization.h; add_written_vertices below makes the written mesh).
+//      With `options.split_nonmanifold`, non-manifold vertices and edges are first taken apart
+//      (nonmanifold_split.h): the per-vertex arrays are then the split mesh's
 //      (`sphere_faces`, `sphere_source_vertex`) and `nonmanifold_split` says what was split.
 #pragma once
 
