@@ -266,9 +266,8 @@ FetchedMap fetch_map(const meromorph_result *result) {
 // The vertices the map needed added to the mesh (after its own), and the faces they cut replaced
 // by the written surface's: a cut face keeps its place with one piece, the other pieces are new
 // faces after the mesh's, each a copy of its face's attributes.
-void add_written_vertices(MeshModel &model, const FetchedMap &map) {
+void add_written_vertices(MeshModel &model, const LiveMesh &before, const FetchedMap &map) {
   CMeshO &mesh = model.cm;
-  const LiveMesh before = live_mesh(mesh);
   // Storage indices of the live vertices and faces, the new ones after them.
   std::vector<size_t> vertex_at(before.live_of_dense.begin(), before.live_of_dense.end());
   std::vector<size_t> face_at;
@@ -389,7 +388,7 @@ bool FilterMeromorphPlugin::applyFilter(QAction *action, MeshDocument &document,
   model->updateDataMask(MeshModel::MM_VERTTEXCOORD | MeshModel::MM_VERTQUALITY);
   const bool wedges = parameters.getBool("wedgeTexCoords");
   if (wedges) model->updateDataMask(MeshModel::MM_WEDGTEXCOORD);
-  if (!map.added.empty()) add_written_vertices(*model, map);
+  if (!map.added.empty()) add_written_vertices(*model, live, map);
   write_texture(mesh, map.added.empty() ? live : live_mesh(mesh), map, wedges);
   if (parameters.getBool("layeredSphere")) add_sphere_layer(document, model->label(), map);
 

@@ -522,7 +522,6 @@ TEST(PlaneTriangles, AnswerAsTheTestsWithStdAbs) {
   size_t checked = 0;
   for (int trial = 0; trial < 200000; ++trial) {
     const Complex w = value();
-    ASSERT_EQ(inside_unit_circle(w), std::abs(w) < 1) << w;
     const double bound = random() % 4 == 0 ? std::abs(w) : std::abs(value());
     ASSERT_EQ(shorter_than(w, bound), !(std::abs(w) >= bound)) << w << " " << bound;
     Complex z[3] = {value(), value(), value()};
@@ -541,7 +540,6 @@ TEST(PlaneTriangles, AnswerAsTheTestsWithStdAbs) {
   }
   EXPECT_EQ(checked, 200000u);
   const double nan = std::nan("");
-  EXPECT_FALSE(inside_unit_circle(Complex(nan, 0)));
   EXPECT_TRUE(shorter_than(Complex(nan, 0), 1.0));
   EXPECT_TRUE(shorter_than(Complex(1, 0), nan));
   EXPECT_FALSE(shorter_than(Complex(0, 0), -1.0));

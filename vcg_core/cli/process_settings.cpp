@@ -3,8 +3,6 @@
 #include "common/job_threads.h"
 
 #include <cstdlib> // defines __GLIBC__ where glibc is the C library
-#include <cstring>
-#include <string>
 
 #if defined(__GLIBC__)
 #include <malloc.h>

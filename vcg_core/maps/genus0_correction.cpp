@@ -101,8 +101,7 @@ std::vector<int> folded_plane_faces(const FaceIncidence &in,
     Eigen::Vector3d s[3];
     for (int k = 0; k < 3; ++k)
       s[k] = to_sphere(values[size_t(in.corners[f][k])]);
-    if (collapsed_image(s[0], s[1], s[2])) return false;
-    return !(s[0].dot((s[1] - s[0]).cross(s[2] - s[0])) > 0);
+    return !collapsed_image(s[0], s[1], s[2]) && chord_turned_over(s[0], s[1], s[2], 0);
   });
 }
 

@@ -1,7 +1,5 @@
 #include "maps/parameterization.h"
 
-#include <numeric>
-
 #include "common/errors.h"
 #include "common/stage_clock.h"
 #include "common/wording.h"
@@ -172,12 +170,7 @@ std::optional<FinerMap> finer_map(Mesh &mesh, const ParameterizeOptions &options
                                   const Progress &progress, StageClock &clock) {
   constexpr size_t face_budget = size_t(4) << 20;
   const MeshArrays arrays = arrays_from_mesh(mesh);
-  double area = 0;
-  for (const auto &t : arrays.triangles)
-    area += ((arrays.positions[size_t(t[1])] - arrays.positions[size_t(t[0])]) ^
-             (arrays.positions[size_t(t[2])] - arrays.positions[size_t(t[0])]))
-                .Norm() /
-            2;
+  const double area = vcg::tri::Stat<Mesh>::ComputeMeshArea(mesh);
   for (int level = 1; level <= options.finer_levels; ++level) {
     // An equilateral triangulation of this area with n vertices has edges sqrt(area / 0.866 n).
     const double vertices = double(arrays.positions.size()) * std::pow(4.0, level);
@@ -226,26 +219,20 @@ std::optional<Parameterization> mapped_with_cuts(const std::vector<Point3> &posi
   ParameterizeOptions cut_options = options;
   cut_options.add_vertices = false;
   cut_options.finer_levels = std::max(levels, 1);
-  MeshArrays arrays = arrays_from_mesh(mesh);
-  std::vector<int> face_source(arrays.triangles.size());
-  std::iota(face_source.begin(), face_source.end(), 0);
+  SplitEdges cut = split_edges(arrays_from_mesh(mesh), {}); // nothing cut yet
   Mesh cut_mesh;
   const Mesh *mapped = &mesh;
   for (int round = 0; round < 4; ++round) {
     const std::vector<std::array<int, 2>> sides = sides_to_cut(*mapped, map);
     if (sides.empty()) return std::nullopt;
-    SplitEdges cut = split_edges(arrays, sides);
-    for (int &source : cut.face_source)
-      source = face_source[size_t(source)];
-    arrays = std::move(cut.arrays);
-    face_source = std::move(cut.face_source);
-    mesh_from_arrays(arrays, cut_mesh);
+    cut_sides(cut, sides);
+    mesh_from_arrays(cut.arrays, cut_mesh);
     mapped = &cut_mesh;
     progress.report(0.0, "adding vertices where the map turns faces over");
     const size_t folds = map.quality.folded_face_indices.size();
     map = parameterize(cut_mesh, cut_options, progress);
     if (map.valid) {
-      with_added_vertices(mesh, positions, arrays, face_source, map);
+      with_added_vertices(mesh, positions, cut.arrays, cut.face_source, map);
       return map;
     }
     if (map.quality.folded_face_indices.size() >= folds) return std::nullopt;

@@ -83,17 +83,12 @@ SplitEdges split_edges(const MeshArrays &arrays, const std::vector<std::array<in
   return out;
 }
 
-namespace {
-
-// `out` with `sides` cut, its faces' sources still the first arrays'.
-void cut_sides(SplitEdges &out, const std::vector<std::array<int, 2>> &sides) {
-  SplitEdges finer = split_edges(out.arrays, sides);
+void cut_sides(SplitEdges &refined, const std::vector<std::array<int, 2>> &sides) {
+  SplitEdges finer = split_edges(refined.arrays, sides);
   for (int &source : finer.face_source)
-    source = out.face_source[size_t(source)];
-  out = std::move(finer);
+    source = refined.face_source[size_t(source)];
+  refined = std::move(finer);
 }
-
-} // namespace
 
 std::optional<SplitEdges> split_long_edges(const MeshArrays &arrays, double max_length,
                                            size_t face_budget) {
@@ -108,11 +103,7 @@ std::optional<SplitEdges> split_long_edges(const MeshArrays &arrays, double max_
                          longest / max_length);
   }
   if (!(estimate <= double(face_budget))) return std::nullopt;
-  SplitEdges out;
-  out.arrays.positions = arrays.positions;
-  out.arrays.triangles = arrays.triangles;
-  for (size_t f = 0; f < arrays.triangles.size(); ++f)
-    out.face_source.push_back(int(f));
+  SplitEdges out = split_edges(arrays, {}); // nothing cut yet: each face its own source
   const double squared = max_length * max_length;
   for (;;) {
     std::vector<std::array<int, 2>> sides;

@@ -29,6 +29,9 @@ struct SplitEdges {
 
 SplitEdges split_edges(const MeshArrays &arrays, const std::vector<std::array<int, 2>> &edges);
 
+// `refined` with `sides` (of its own arrays) cut too; its face sources stay the first mesh's.
+void cut_sides(SplitEdges &refined, const std::vector<std::array<int, 2>> &sides);
+
 std::optional<SplitEdges> split_long_edges(const MeshArrays &arrays, double max_length,
                                            size_t face_budget);
 

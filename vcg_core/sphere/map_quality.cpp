@@ -115,10 +115,9 @@ MapQuality measure_map_quality(const Mesh &mesh, const std::vector<Eigen::Vector
     // longest side squared), so that no reader of the written positions can see it turned over
     // (flat images at branch points), unless it shrinks below what doubles resolve.
     const bool collapsed = collapsed_image(s[0], s[1], s[2]);
-    const double chord = std::max(
-        {(s[0] - s[1]).squaredNorm(), (s[1] - s[2]).squaredNorm(), (s[2] - s[0]).squaredNorm()});
-    const bool chord_folded = !(s[0].dot((s[1] - s[0]).cross(s[2] - s[0])) > 1e-12 * chord);
-    FaceMeasure m{1.0, 0.0, folded_image(s[0], s[1], s[2]) || (chord_folded && !collapsed),
+    FaceMeasure m{1.0, 0.0,
+                  folded_image(s[0], s[1], s[2]) ||
+                      (chord_turned_over(s[0], s[1], s[2], 1e-12) && !collapsed),
                   collapsed};
     const Eigen::Matrix2d source = frame_edges(p[0], p[1], p[2]);
     const Eigen::Matrix2d image = frame_edges(s[0], s[1], s[2]);

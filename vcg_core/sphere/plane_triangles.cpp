@@ -24,11 +24,6 @@ int less_by_squares(double a_square, double b_square_times_factor_square) {
 
 } // namespace
 
-bool inside_unit_circle(const std::complex<double> &w) {
-  const int clear = less_by_squares(squared_modulus(w), 1.0);
-  return clear >= 0 ? clear == 1 : std::abs(w) < 1;
-}
-
 bool shorter_than(const std::complex<double> &difference, double bound) {
   const int clear = bound > 0 ? less_by_squares(squared_modulus(difference), bound * bound) : -1;
   return clear >= 0 ? clear == 1 : !(std::abs(difference) >= bound);

@@ -6,7 +6,7 @@
 //      by a millionth, and std::abs decides the near-ties and values whose squares would leave
 //      the normal range of doubles (or NaN). The fold checks of the genus-0 maps call these for
 //      every face several times: hypot was a sixth of a 4k-vertex map's work.
-//      `inside_unit_circle(w)`: |w| < 1. `shorter_than(d, bound)`: !(|d| >= bound) (a NaN is
+//      `shorter_than(d, bound)`: !(|d| >= bound) (a NaN is
 //      short). `below_resolution(z)`: the triangle's longer edge from z[0] is below 1e-12 of
 //      its largest |z[k]| (what doubles resolve). `folded_in_the_plane(z)`: resolved, and its
 //      corners turn clockwise or lie on a line.
@@ -20,7 +20,6 @@ inline double squared_modulus(const std::complex<double> &z) {
   return z.real() * z.real() + z.imag() * z.imag();
 }
 
-bool inside_unit_circle(const std::complex<double> &w);
 bool shorter_than(const std::complex<double> &difference, double bound);
 bool below_resolution(const std::complex<double> z[3]);
 bool folded_in_the_plane(const std::complex<double> z[3]);

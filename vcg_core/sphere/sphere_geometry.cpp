@@ -86,6 +86,13 @@ bool folded_image(const Eigen::Vector3d &a, const Eigen::Vector3d &b, const Eige
   return signed_solid_angle(a, b, c) < -1e-9 * chord;
 }
 
+bool chord_turned_over(const Eigen::Vector3d &a, const Eigen::Vector3d &b, const Eigen::Vector3d &c,
+                       double margin) {
+  const double chord =
+      std::max({(a - b).squaredNorm(), (b - c).squaredNorm(), (c - a).squaredNorm()});
+  return !(a.dot((b - a).cross(c - a)) > margin * chord);
+}
+
 bool collapsed_image(const Eigen::Vector3d &a, const Eigen::Vector3d &b, const Eigen::Vector3d &c) {
   return std::max({(a - b).norm(), (b - c).norm(), (c - a).norm()}) < 1e-14;
 }

@@ -49,6 +49,10 @@ double swept_angle(const Eigen::Vector3d &center, const Eigen::Vector3d &a,
 // A face image turned over: negative signed area beyond rounding (1e-9 of its longest chord
 // squared); an image that is flat to rounding is degenerate, not folded.
 bool folded_image(const Eigen::Vector3d &a, const Eigen::Vector3d &b, const Eigen::Vector3d &c);
+// As a reader of the written positions sees a face image: its chord triangle not positively
+// oriented by more than `margin` times its longest side squared (flat ones count when margin > 0).
+bool chord_turned_over(const Eigen::Vector3d &a, const Eigen::Vector3d &b, const Eigen::Vector3d &c,
+                       double margin);
 // The image triangle's longest side is below 1e-14: smaller than doubles resolve on the unit
 // sphere (long thin parts shrink exponentially under a conformal map).
 bool collapsed_image(const Eigen::Vector3d &a, const Eigen::Vector3d &b, const Eigen::Vector3d &c);
