@@ -9,7 +9,7 @@ import bpy
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import check, install_addon, summary  # noqa: E402
+from checks import activate, add_off, check, install_addon, summary  # noqa: E402
 
 ADDON_ZIP, CLI, DATA, WORK = sys.argv[sys.argv.index("--") + 1:][:4]
 
@@ -19,28 +19,6 @@ def clear_scene():
     bpy.ops.object.delete()
     for mesh in list(bpy.data.meshes):
         bpy.data.meshes.remove(mesh)
-
-
-def add_off(path, name):
-    with open(path) as stream:
-        lines = [l.split("#")[0].split() for l in stream]
-    lines = [l for l in lines if l]
-    start = 1 if lines[0] == ["OFF"] else 0
-    nv, nf = int(lines[start][0]), int(lines[start][1])
-    vertices = [tuple(map(float, l[:3])) for l in lines[start + 1:start + 1 + nv]]
-    faces = [tuple(map(int, l[1:1 + int(l[0])])) for l in lines[start + 1 + nv:start + 1 + nv + nf]]
-    mesh = bpy.data.meshes.new(name)
-    mesh.from_pydata(vertices, [], faces)
-    obj = bpy.data.objects.new(name, mesh)
-    bpy.context.collection.objects.link(obj)
-    activate(obj)
-    return obj
-
-
-def activate(obj):
-    bpy.ops.object.select_all(action="DESELECT")
-    obj.select_set(True)
-    bpy.context.view_layer.objects.active = obj
 
 
 def run_operator(**options):

@@ -1,49 +1,22 @@
 # Undo in the real Blender with a window (undo needs one): xvfb-run -a blender --factory-startup
-# --python-exit-code 1 --python test_undo.py -- ADDON_ZIP
+# --python-exit-code 1 --python test_undo.py -- ADDON_ZIP MEROMORPH_CLI
 import os
+import subprocess
 import sys
 
 import bpy
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from checks import check, install_addon, summary  # noqa: E402
+from checks import add_off, check, install_addon, summary  # noqa: E402
 
-ADDON_ZIP = sys.argv[sys.argv.index("--") + 1]
+ADDON_ZIP, CLI = sys.argv[sys.argv.index("--") + 1:][:2]
 
 
 def cad_plate():
-    """A plate with a hole as CAD programs export it: the flat faces fanned from the square's
-    corners to the hole's circle, the walls strips of two triangles (segments 64, thickness 0.05),
-    as meromorph make cad writes it (vertex for vertex)."""
-    import math
-    segments, thickness = 64, 0.05
-    top = [(i, j, thickness) for i in range(2) for j in range(2)]
-    for k in range(segments):
-        angle = 2 * math.pi * (k + 0.5) / segments
-        top.append((0.5 + 0.3 * math.cos(angle), 0.5 + 0.3 * math.sin(angle), thickness))
-    layer = len(top)
-    circle = [4 + k for k in range(segments)] + [4]
-    nearest = [3, 1, 0, 2]  # the corner each quarter of the circle faces
-    faces, walls = [], []
-    for k in range(segments):
-        here, there = nearest[4 * k // segments], nearest[(4 * (k + 1) // segments) % 4]
-        if here != there:
-            faces.append((circle[k], here, there))
-        faces.append((circle[k], there, circle[k + 1]))
-        walls.append((circle[k + 1], circle[k]))
-    walls += [(0, 2), (2, 3), (3, 1), (1, 0)]
-    mesh_faces = faces + [(a + layer, c + layer, b + layer) for a, b, c in faces]
-    for a, b in walls:
-        mesh_faces += [(a + layer, b + layer, b), (a + layer, b, a)]
-    vertices = top + [(x, y, z - thickness) for x, y, z in top]
-    mesh = bpy.data.meshes.new("CAD Plate")
-    mesh.from_pydata(vertices, [], mesh_faces)
-    obj = bpy.data.objects.new("CAD Plate", mesh)
-    bpy.context.collection.objects.link(obj)
-    bpy.ops.object.select_all(action="DESELECT")
-    obj.select_set(True)
-    bpy.context.view_layer.objects.active = obj
-    return obj
+    """A plate with a hole as CAD programs export it (meromorph make cad), the active object."""
+    subprocess.run([CLI, "make", "cad", "--holes", "1", "--segments", "64", "--thickness", "0.05",
+                    "-o", "cad_plate.off"], check=True, stdout=subprocess.DEVNULL)
+    return add_off("cad_plate.off", "CAD Plate")
 
 
 def main():
