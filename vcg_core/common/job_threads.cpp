@@ -74,6 +74,18 @@ int team_size_for(int cpus, int openmp_limit, int runnable, int own_runnable) {
   return std::clamp(usable - others, 1, usable);
 }
 
+namespace {
+thread_local long regions_opened = 0;
+} // namespace
+
+long parallel_regions_opened() {
+  return regions_opened;
+}
+
+void count_parallel_region() {
+  ++regions_opened;
+}
+
 int job_team_size() {
   return team > 0 ? team : openmp_limit();
 }
@@ -86,6 +98,12 @@ JobThreads::JobThreads() {
   if (team > 0) return;
   outermost_ = true;
   team = free_cpus();
+}
+
+JobThreads::JobThreads(int team_size) {
+  if (team > 0) return;
+  outermost_ = true;
+  team = std::max(1, team_size);
 }
 
 JobThreads::~JobThreads() {

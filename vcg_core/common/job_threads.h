@@ -8,7 +8,9 @@
 // Out: `JobThreads`: while it lives, the loops of common/parallel_for.h started on this thread
 //      run teams of `job_team_size()` threads, the free CPUs (at least one); a JobThreads made
 //      while another lives on the same thread keeps the first one's count. Without one, loops
-//      use OpenMP's maximum. `team_size_for` is the rule itself.
+//      use OpenMP's maximum. `team_size_for` is the rule itself. `parallel_regions_opened`: how
+//      many parallel regions (teams of more than one thread) the loops started on this thread
+//      have opened, for a test that a stage does not open hundreds of short ones.
 // Why: OpenMP's waiting threads spin. With another busy process on two cores, a team of two
 //      waits at every barrier for the thread the system put aside: a 118k-vertex genus-1 map took
 //      1.9-2.4 s with two threads against 0.9-1.0 s with one. A core busy with other work is left
@@ -28,9 +30,14 @@ int job_team_size();
 // JobThreads applies).
 int free_cpus();
 
+// Counted by common/parallel_for.h.
+long parallel_regions_opened();
+void count_parallel_region();
+
 class JobThreads {
 public:
   JobThreads();
+  explicit JobThreads(int team); // a team of this size (at least 1) instead of the free CPUs
   ~JobThreads();
   JobThreads(const JobThreads &) = delete;
   JobThreads &operator=(const JobThreads &) = delete;

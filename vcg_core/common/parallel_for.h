@@ -38,7 +38,7 @@
 namespace meromorph {
 
 // Below this many items the threads' start costs more than the work.
-constexpr std::size_t parallel_threshold = 4096;
+constexpr std::size_t parallel_threshold = 16384;
 
 // `threshold`: the least count worth the threads (items of about a microsecond's work each by
 // default; chunks of many items want 2).
@@ -46,6 +46,7 @@ template <class Body>
 void parallel_for(std::size_t count, const Body &body, std::size_t threshold = parallel_threshold) {
 #if defined(_OPENMP)
   const int team = job_team_size(); // common/job_threads.h
+  if (count >= threshold && team > 1) count_parallel_region();
 #pragma omp parallel for schedule(static) if (count >= threshold && team > 1) num_threads(team)
   for (long i = 0; i < long(count); ++i)
     body(std::size_t(i));
@@ -83,6 +84,7 @@ template <class Work> void while_threads_start(const Work &work) {
 #if defined(_OPENMP)
   std::exception_ptr error;
   std::atomic<int> arrived{1};
+  count_parallel_region();
 #pragma omp parallel
   {
     if (omp_get_thread_num() == 0) {
@@ -105,8 +107,11 @@ template <class Work> void while_threads_start(const Work &work) {
 #endif
 }
 
-// Items per chunk of chunked_sum.
+// Items per chunk of chunked_sum, and the least number of chunks worth a parallel region: a sum
+// is often one of many in a row (a step's candidates weighed one after the other), and each
+// region wakes the team, which on a machine with other work waits for a core.
 constexpr std::size_t sum_chunk = 8192;
+constexpr std::size_t sum_chunks_worth_threads = 4;
 
 // Items per block where a chunk's items are stacked as matrix rows for one matrix product: small
 // enough (about 100 KiB at 3 rows of 20 columns each) for the heap to hand the same memory back,
@@ -122,7 +127,7 @@ Sum chunked_sum(std::size_t count, const Sum &zero, const Body &body) {
       [&](std::size_t c) {
         partial[c] = body(c * sum_chunk, std::min(count, (c + 1) * sum_chunk));
       },
-      2);
+      sum_chunks_worth_threads);
   Sum total = zero;
   for (const Sum &part : partial)
     total += part;
@@ -163,6 +168,7 @@ template <class MakeState, class Body>
 void parallel_for_with(std::size_t count, const MakeState &make_state, const Body &body) {
 #if defined(_OPENMP)
   const int team = job_team_size(); // common/job_threads.h
+  if (count >= 2 && team > 1) count_parallel_region();
 #pragma omp parallel if (count >= 2 && team > 1) num_threads(team)
   {
     auto state = make_state();

@@ -168,4 +168,15 @@ Eigen::VectorXcd IntrinsicDelaunay::integrate_along_mesh_edges(const Eigen::Vect
   return out;
 }
 
+PreparedMesh prepared_on_intrinsic_delaunay(const PreparedMesh &prepared) {
+  const IntrinsicDelaunay intrinsic(prepared.mesh, prepared.edges);
+  std::vector<double> weights = intrinsic.cotan_weights();
+  for (double &weight : weights)
+    weight = std::max(weight, 0.0);
+  IndexLists at_vertex = edges_at_vertices(intrinsic.edges(), int(prepared.mesh.vert.size()));
+  return PreparedMesh{prepared.mesh,        intrinsic.edges(),    std::move(weights),
+                      prepared.incidence,   std::move(at_vertex), prepared.geometry,
+                      prepared.vertex_areas};
+}
+
 } // namespace meromorph

@@ -14,6 +14,10 @@
 //      edge (exact: every flip keeps the flipped edge as the two sides of one of its triangles).
 //      Flips that would join a vertex to itself are skipped (the rare cost: an edge left
 //      non-Delaunay).
+//      `prepared_on_intrinsic_delaunay`: a prepared mesh (prepared_mesh.h) whose edges, weights
+//      and edges at each vertex are this triangulation's (weights below 0 by rounding set to 0),
+//      its faces, face geometry and vertex areas the mesh's own: for stages that solve on the
+//      vertices (a Laplacian, rings of vertices) and judge the mesh's faces.
 #pragma once
 
 #include <array>
@@ -24,6 +28,7 @@
 #include "mesh/face_vectors.h"
 #include "mesh/mesh.h"
 #include "mesh/mesh_edges.h"
+#include "mesh/prepared_mesh.h"
 
 namespace meromorph {
 
@@ -62,5 +67,7 @@ private:
   int mesh_edge_count_ = 0;
   std::vector<Retired> retired_; // in the order of the flips
 };
+
+PreparedMesh prepared_on_intrinsic_delaunay(const PreparedMesh &prepared);
 
 } // namespace meromorph

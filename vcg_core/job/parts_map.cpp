@@ -116,6 +116,7 @@ void finish_parts(const SurfaceParts &split, const ParameterizeOptions &options,
     out.origin_vertex =
         only.origin_vertex >= 0 ? split.parts[0].source_vertex[size_t(only.origin_vertex)] : -1;
     out.raised_weights = only.raised_weights;
+    out.intrinsic_delaunay = only.intrinsic_delaunay;
     out.form_pair = only.form_pair;
     out.form_coefficients = only.form_coefficients;
     out.pair_attempts = only.pair_attempts;

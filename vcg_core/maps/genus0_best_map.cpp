@@ -1,33 +1,70 @@
 #include "maps/genus0_best_map.h"
 
 #include "common/parallel_for.h"
+#include "forms/intrinsic_delaunay.h"
+#include "maps/fold_untangling.h"
 #include "maps/genus0_correction.h"
 #include "maps/genus0_map.h"
 #include "maps/south_cap_prediction.h"
 #include "mesh/face_vectors.h"
+#include "sphere/map_quality.h"
 #include "sphere/mobius_centering.h"
 
 namespace meromorph {
 namespace {
 
-// Faces whose image is below double resolution (sphere_geometry.h).
-int collapsed_faces(const FaceIncidence &in, const std::vector<PlaneValue> &values) {
-  return chunked_sum(in.corners.size(), 0, [&](size_t begin, size_t end) {
-    int count = 0;
-    for (size_t f = begin; f < end; ++f) {
-      const std::array<int, 3> &c = in.corners[f];
-      count += collapsed_image(to_sphere(values[size_t(c[0])]), to_sphere(values[size_t(c[1])]),
-                               to_sphere(values[size_t(c[2])]));
-    }
-    return count;
-  });
+// How a centred map compares with another, as it will be written (sliver folds untangled:
+// fold_untangling.h): faces collapsed below double resolution first, then faces turned over, then
+// the mean angle error (measured only where two maps are compared).
+struct CentredQuality {
+  int collapsed = 0, folded = 0;
+  double angle_error = -1; // not measured yet
+  bool better_than(const CentredQuality &other) const {
+    if (collapsed != other.collapsed) return collapsed < other.collapsed;
+    if (folded != other.folded) return folded < other.folded;
+    return angle_error < other.angle_error;
+  }
+};
+
+std::vector<Eigen::Vector3d> as_written(const PreparedMesh &prepared,
+                                        const std::vector<PlaneValue> &centred) {
+  std::vector<Eigen::Vector3d> sphere(centred.size());
+  parallel_for(centred.size(), [&](size_t v) { sphere[v] = to_sphere(centred[v]); });
+  untangle_folds(prepared, sphere, {});
+  return sphere;
 }
 
-// The pinned-pole map of `pole_face` (-1: the default face). The plain cotangent map is the most
-// conformal; if it folds (negative weights on meshes with many obtuse triangles), the map with
-// strictly positive weights cannot. Weights are raised only near folds (two rings), round by
-// round; all of them at the end.
-Genus0Map unfolded_map(const PreparedMesh &prepared, SolverKind solver, int pole_face) {
+CentredQuality quality_of(const PreparedMesh &prepared, const std::vector<PlaneValue> &centred) {
+  const std::vector<Eigen::Vector3d> sphere = as_written(prepared, centred);
+  const auto &corners = prepared.incidence.corners;
+  using Counts = Eigen::Vector2i; // folded, collapsed
+  const Counts counts =
+      chunked_sum(corners.size(), Counts::Zero().eval(), [&](size_t begin, size_t end) {
+        Counts part = Counts::Zero();
+        for (size_t f = begin; f < end; ++f) {
+          const std::array<int, 3> &c = corners[f];
+          const Eigen::Vector3d &a = sphere[size_t(c[0])], &b = sphere[size_t(c[1])],
+                                &d = sphere[size_t(c[2])];
+          part[0] += folded_as_measured(a, b, d);
+          part[1] += collapsed_image(a, b, d);
+        }
+        return part;
+      });
+  return {counts[1], counts[0]};
+}
+
+void measure_angle_error(const PreparedMesh &prepared, const std::vector<PlaneValue> &centred,
+                         CentredQuality &quality) {
+  if (quality.angle_error < 0)
+    quality.angle_error = mean_angle_error_degrees(prepared.mesh, as_written(prepared, centred));
+}
+
+// The pinned-pole map of `pole_face` (-1: the default face). With `repair_folds`, where it folds
+// (negative weights on meshes with many obtuse triangles), weights are raised to positive ones
+// near the folds (two rings), round by round; all of them at the end: with strictly positive
+// weights it cannot fold.
+Genus0Map unfolded_map(const PreparedMesh &prepared, SolverKind solver, int pole_face,
+                       bool repair_folds) {
   if (pole_face < 0) pole_face = default_pole_face(prepared);
   // With CHOLMOD, one factorization serves both steps where the south-pole step's cap is
   // predicted well enough (south_cap_prediction.h).
@@ -43,6 +80,7 @@ Genus0Map unfolded_map(const PreparedMesh &prepared, SolverKind solver, int pole
   }
   std::vector<char> raise(prepared.edges.edge_count(), 0);
   Genus0Map attempt = genus0_map(prepared, solver, pole_face, raise, cap);
+  if (!repair_folds) return attempt;
   const std::vector<int> order = attempt.elimination_order; // the same for the same pole
   for (int round = 0; round < 4 && !attempt.folded_faces.empty(); ++round) {
     // The weights change only there: solve again within a few rings of them first, the rest of
@@ -70,12 +108,15 @@ Genus0Map unfolded_map(const PreparedMesh &prepared, SolverKind solver, int pole
 }
 
 // The pinned-pole map, its shear removed and its pole region solved again
-// (genus0_correction.h).
-Genus0Map corrected_map(const PreparedMesh &prepared, SolverKind solver, int pole_face) {
-  Genus0Map map = unfolded_map(prepared, solver, pole_face);
-  map.values = correct_genus0_map(prepared, map.weights, solver, map.pole_face, map.values,
-                                  map.elimination_order, map.cap_last)
-                   .values;
+// (genus0_correction.h); `finished`: whether both correction steps were taken.
+Genus0Map corrected_map(const PreparedMesh &prepared, SolverKind solver, int pole_face,
+                        bool repair_folds, bool &finished) {
+  Genus0Map map = unfolded_map(prepared, solver, pole_face, repair_folds);
+  const Genus0Correction correction =
+      correct_genus0_map(prepared, map.weights, solver, map.pole_face, map.values,
+                         map.elimination_order, map.cap_last);
+  map.values = correction.values;
+  finished = correction.steps_taken == 2;
   map.cap_last = {};
   return map;
 }
@@ -99,38 +140,65 @@ int face_at_north_pole(const PreparedMesh &prepared, const std::vector<PlaneValu
   return pole_face;
 }
 
+// The map solved with the weights of `solving` (its edges and weights; faces, geometry and
+// areas those of `prepared`), centred and judged on the mesh's faces as it will be written.
+struct Candidate {
+  Genus0Map map;
+  CentredValues centred;
+  CentredQuality quality;
+};
+
+Candidate centred_candidate(const PreparedMesh &prepared, Genus0Map map) {
+  CentredValues centred{map.values, {}};
+  centred.centring = center_on_sphere(centred.values, prepared.vertex_areas);
+  const CentredQuality quality = quality_of(prepared, centred.values);
+  return {std::move(map), std::move(centred), quality};
+}
+
+Candidate solved_on(const PreparedMesh &solving, const PreparedMesh &prepared, SolverKind solver,
+                    int pole_face_asked, bool repair_folds) {
+  bool finished = false;
+  Candidate first = centred_candidate(
+      prepared, corrected_map(solving, solver, pole_face_asked, repair_folds, finished));
+  if (pole_face_asked >= 0) return first;
+  // Parts far from the pole crowd into a tiny spot, where rounding can fold or collapse faces;
+  // and a pole among needles can keep the correction from finishing. Then solve again with the
+  // pole at the face that the centred map puts on the north pole: the new map is nearly centred,
+  // so nothing is crowded. It is kept only where it is the better one (a second pole can lose
+  // more of the long thin parts, or sit among needles).
+  const bool centred_ok = first.centred.centring.centroid_after.norm() < 1e-9;
+  const CentredQuality &quality = first.quality;
+  if (centred_ok && finished && quality.collapsed == 0 && quality.folded == 0) return first;
+  const int pole_face = face_at_north_pole(prepared, first.centred.values);
+  if (pole_face < 0) return first;
+  Candidate again = centred_candidate(
+      prepared, corrected_map(solving, solver, pole_face, repair_folds, finished));
+  measure_angle_error(prepared, first.centred.values, first.quality);
+  measure_angle_error(prepared, again.centred.values, again.quality);
+  return again.quality.better_than(first.quality) ? std::move(again) : std::move(first);
+}
+
 } // namespace
 
 Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, int pole_face_asked) {
-  const std::vector<double> &areas = prepared.vertex_areas;
-  Genus0Map map = corrected_map(prepared, solver, pole_face_asked);
-  std::optional<CentredValues> centred_map;
-  if (pole_face_asked < 0) {
-    // Parts far from the pole crowd into a tiny spot, where rounding can fold or collapse
-    // faces. Then solve again with the pole at the face that the centred map puts on the north
-    // pole: the new map is nearly centred, so nothing is crowded.
-    centred_map = CentredValues{map.values, {}};
-    std::vector<PlaneValue> &centred = centred_map->values;
-    centred_map->centring = center_on_sphere(centred, areas);
-    const bool centred_ok = centred_map->centring.centroid_after.norm() < 1e-9;
-    const int collapsed = collapsed_faces(prepared.incidence, centred);
-    const int pole_face =
-        !centred_ok || collapsed > 0 || !folded_plane_faces(prepared.incidence, centred).empty()
-            ? face_at_north_pole(prepared, centred)
-            : -1;
-    if (pole_face >= 0) {
-      // Where long thin parts shrink below what doubles resolve, a pole in the wrong place
-      // loses more of them: keep the first solution if the second collapses more faces.
-      Genus0Map again = corrected_map(prepared, solver, pole_face);
-      CentredValues centred_again{again.values, {}};
-      centred_again.centring = center_on_sphere(centred_again.values, areas);
-      if (collapsed_faces(prepared.incidence, centred_again.values) <= collapsed) {
-        map = std::move(again);
-        centred_map = std::move(centred_again);
-      }
+  // The intrinsic Delaunay triangulation's weights are non-negative where the mesh's cotangent
+  // weights are negative (obtuse corners, needles), and its map is the more conformal there:
+  // tried first. Where its map folds or collapses faces of the mesh (as written, after
+  // untangling), the mesh's own weights, raised near folds, are tried, and the better map kept.
+  Candidate best =
+      solved_on(prepared_on_intrinsic_delaunay(prepared), prepared, solver, pole_face_asked, false);
+  bool intrinsic = true;
+  if (best.quality.folded > 0 || best.quality.collapsed > 0) {
+    Candidate raised = solved_on(prepared, prepared, solver, pole_face_asked, true);
+    measure_angle_error(prepared, best.centred.values, best.quality);
+    measure_angle_error(prepared, raised.centred.values, raised.quality);
+    if (raised.quality.better_than(best.quality)) {
+      best = std::move(raised);
+      intrinsic = false;
     }
   }
-  return {map.values, map.pole_face, map.raised_weights, std::move(centred_map)};
+  return {best.map.values, best.map.pole_face, best.map.raised_weights, intrinsic,
+          std::move(best.centred)};
 }
 
 } // namespace meromorph

@@ -240,8 +240,7 @@ Genus0Correction correct_genus0_map(const PreparedMesh &prepared,
   std::vector<PlaneValue> unsheared = pinned_map;
   for (PlaneValue &value : unsheared)
     value.w -= *nu * std::conj(value.w);
-  if (!accept(unsheared)) return out;
-  out.shear = *nu;
+  if (accept(unsheared)) out.shear = *nu;
 
   // 2. The south-pole step, in the chart zeta = 1 / (z - z_s).
   std::vector<int> cap = south_cap(out.values);

@@ -73,12 +73,16 @@ WrittenSphere written_genus0_map(const PreparedMesh &prepared, const Parameteriz
   const Genus0Result map = best_genus0_map(prepared, options.solver, options.pole_face);
   out.pole_face = map.pole_face;
   out.raised_weights = map.raised_weights;
-  out.method = "genus 0: harmonic map with a simple pole (strictly positive weights), inverse "
-               "stereographic projection";
+  out.intrinsic_delaunay = map.intrinsic_delaunay;
+  out.method = map.intrinsic_delaunay
+                   ? "genus 0: harmonic map with a simple pole (intrinsic Delaunay weights), "
+                     "inverse stereographic projection"
+                   : "genus 0: harmonic map with a simple pole (cotangent weights, raised to "
+                     "positive ones near folds), inverse stereographic projection";
   clock.done("meromorphic");
   WrittenSphere written;
-  finish_on_sphere(prepared, options.mobius, nullptr, out.euler, map.values, nullptr,
-                   map.centred ? &*map.centred : nullptr, written, progress, clock);
+  finish_on_sphere(prepared, options.mobius, nullptr, out.euler, map.values, nullptr, &map.centred,
+                   written, progress, clock);
   return written;
 }
 

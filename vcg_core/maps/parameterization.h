@@ -133,6 +133,7 @@ struct Parameterization {
   std::vector<std::pair<std::string, double>> timings_ms;
   // What the method used.
   int pole_face = -1, raised_weights = 0, origin_vertex = -1;
+  bool intrinsic_delaunay = false; // genus 0: solved with the intrinsic Delaunay weights
   // Branch points placed on vertices fold-free: genus 1, half periods (genus1_branch_placement.h);
   // genus >= 2, critical points repaired inside faces (branch_snapping.h).
   int snapped_branch_points = 0;

@@ -193,10 +193,16 @@ bool lifted_face_folds(const MappedSurface &surface, const LiftedSphere &lifted,
                        const std::array<int, 3> &face) {
   const Eigen::Vector3d &p = lifted.positions[face[0]], &q = lifted.positions[face[1]],
                         &r = lifted.positions[face[2]];
+  const Eigen::Vector3d normal = (q - p).cross(r - p).normalized();
   Eigen::Vector3d reference = Eigen::Vector3d::Zero();
-  for (int corner : face)
-    reference += surface_normal_at(surface, lifted.surface_point[corner]);
-  return (q - p).cross(r - p).dot(reference) < 0;
+  for (int corner : face) {
+    const Eigen::Vector3d at_corner = surface_normal_at(surface, lifted.surface_point[corner]);
+    // Across a thin part's rim (an ear's edge), a face can agree with the surface at two corners
+    // and be turned over at the third.
+    if (normal.dot(at_corner) < -0.5 * at_corner.norm()) return true;
+    reference += at_corner;
+  }
+  return normal.dot(reference) < 0;
 }
 
 double corner_angle(const Eigen::Vector3d &at, const Eigen::Vector3d &to,

@@ -48,7 +48,8 @@ LiftedSphere lift_sphere(const MappedSurface &surface, const std::vector<int> &f
                          const std::vector<int> &local_degree, int degree,
                          const GeodesicSphere &sphere, const Progress &progress = {});
 
-// Whether a lifted face's normal points against the surface's normals at its corners' points.
+// Whether a lifted face's normal points against the surface's normals at its corners' points (their
+// sum), or more than 120 degrees away from the normal at one corner (across a thin part's rim).
 bool lifted_face_folds(const MappedSurface &surface, const LiftedSphere &lifted,
                        const std::array<int, 3> &face);
 

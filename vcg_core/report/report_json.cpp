@@ -209,7 +209,9 @@ nlohmann::json parameterization_json(const Parameterization &map) {
   if (one_part && map.genus >= 2)
     report["riemann_matrix"] = complex_matrix_json(map.riemann_matrix);
   if (one_part && map.genus == 0)
-    report["genus0"] = {{"pole_face", map.pole_face}, {"raised_weights", map.raised_weights}};
+    report["genus0"] = {{"pole_face", map.pole_face},
+                        {"weights", map.intrinsic_delaunay ? "intrinsic Delaunay" : "cotangent"},
+                        {"raised_weights", map.raised_weights}};
   if (one_part && map.genus == 1) {
     report["origin_vertex"] = map.origin_vertex;
     report["origin_attempts"] = map.origin_attempts;

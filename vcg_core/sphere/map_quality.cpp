@@ -94,6 +94,24 @@ double face_angle_error_degrees(const Mesh &mesh, const std::vector<Eigen::Vecto
   return face_angle_error_degrees(face_corner_angles(mesh, face), mesh, sphere, face);
 }
 
+bool folded_as_measured(const Eigen::Vector3d &a, const Eigen::Vector3d &b,
+                        const Eigen::Vector3d &c) {
+  // Folded also when the chord triangle is not clearly positively oriented (by 1e-12 of its
+  // longest side squared), so that no reader of the written positions can see it turned over
+  // (flat images at branch points), unless it shrinks below what doubles resolve.
+  return folded_image(a, b, c) || (chord_turned_over(a, b, c, 1e-12) && !collapsed_image(a, b, c));
+}
+
+double mean_angle_error_degrees(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere) {
+  const double sum = chunked_sum(mesh.face.size(), 0.0, [&](size_t begin, size_t end) {
+    double part = 0;
+    for (size_t f = begin; f < end; ++f)
+      part += face_angle_error_degrees(mesh, sphere, int(f));
+    return part;
+  });
+  return mesh.face.empty() ? 0.0 : sum / double(mesh.face.size());
+}
+
 MapQuality measure_map_quality(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere,
                                const std::vector<int> &branch_vertices) {
   std::vector<char> near_branch(mesh.vert.size(), 0);
@@ -111,14 +129,8 @@ MapQuality measure_map_quality(const Mesh &mesh, const std::vector<Eigen::Vector
       s[k] = sphere[v];
       touches_branch[f] |= near_branch[v];
     }
-    // Folded also when the chord triangle is not clearly positively oriented (by 1e-12 of its
-    // longest side squared), so that no reader of the written positions can see it turned over
-    // (flat images at branch points), unless it shrinks below what doubles resolve.
-    const bool collapsed = collapsed_image(s[0], s[1], s[2]);
-    FaceMeasure m{1.0, 0.0,
-                  folded_image(s[0], s[1], s[2]) ||
-                      (chord_turned_over(s[0], s[1], s[2], 1e-12) && !collapsed),
-                  collapsed};
+    FaceMeasure m{1.0, 0.0, folded_as_measured(s[0], s[1], s[2]),
+                  collapsed_image(s[0], s[1], s[2])};
     const Eigen::Matrix2d source = frame_edges(p[0], p[1], p[2]);
     const Eigen::Matrix2d image = frame_edges(s[0], s[1], s[2]);
     const std::array<double, 2> stretch = singular_values(image * source.inverse());

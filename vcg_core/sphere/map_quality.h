@@ -48,6 +48,13 @@ std::array<double, 3> face_corner_angles(const Mesh &mesh, int face);
 double face_angle_error_degrees(const std::array<double, 3> &corner_angles, const Mesh &mesh,
                                 const std::vector<Eigen::Vector3d> &sphere, int face);
 
+// One face's image as measure_map_quality judges it: folded, and collapsed.
+bool folded_as_measured(const Eigen::Vector3d &a, const Eigen::Vector3d &b,
+                        const Eigen::Vector3d &c);
+
+// The mean angle error over all faces (measure_map_quality's, without the other measures).
+double mean_angle_error_degrees(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere);
+
 MapQuality measure_map_quality(const Mesh &mesh, const std::vector<Eigen::Vector3d> &sphere,
                                const std::vector<int> &branch_vertices);
 
