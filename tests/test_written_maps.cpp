@@ -163,6 +163,65 @@ TEST(WrittenMaps, GenusZeroAsConformalAsTheBestLinearMethod) {
   }
 }
 
+// The same surface as text OFF, as PLY with single-precision coordinates and as OBJ: the same
+// pole and the same map up to the input's rounding. The surface is subdivided flat (200k
+// vertices), so that many faces have nearly the same shape: its PLY copy once got another pole
+// than the OFF (as a 200k-vertex dragon did), and another map.
+TEST(WrittenMaps, TheSameMapFromOffPlyAndObj) {
+  test::TempDir dir;
+  const std::string off = dir.path("maxplanck16.off");
+  ASSERT_EQ(run_cli({"make", "subdivide", test::data_path("maxplanck.nf25k.off"), "-s", "2", "-o",
+                     off})
+                .exit_code,
+            0);
+  std::vector<std::array<double, 3>> positions;
+  std::vector<std::array<int, 3>> triangles;
+  test::arrays_of(off, positions, triangles);
+  const std::string ply = dir.path("maxplanck16.ply"), obj = dir.path("maxplanck16.obj");
+  {
+    std::ofstream out(ply, std::ios::binary);
+    out << "ply\nformat binary_little_endian 1.0\nelement vertex " << positions.size()
+        << "\nproperty float x\nproperty float y\nproperty float z\nelement face "
+        << triangles.size() << "\nproperty list uchar int vertex_indices\nend_header\n";
+    for (const auto &p : positions)
+      for (double x : p) {
+        const float single = float(x);
+        out.write(reinterpret_cast<const char *>(&single), sizeof single);
+      }
+    for (const auto &t : triangles) {
+      const unsigned char three = 3;
+      out.write(reinterpret_cast<const char *>(&three), 1);
+      out.write(reinterpret_cast<const char *>(t.data()), 3 * sizeof(int));
+    }
+  }
+  {
+    std::ofstream out(obj);
+    out.precision(17);
+    for (const auto &p : positions)
+      out << "v " << p[0] << " " << p[1] << " " << p[2] << "\n";
+    for (const auto &t : triangles)
+      out << "f " << t[0] + 1 << " " << t[1] + 1 << " " << t[2] + 1 << "\n";
+  }
+  std::vector<test::WrittenMap> maps;
+  std::vector<int> poles;
+  for (const std::string &input : {off, ply, obj}) {
+    expect_valid_written_map(dir, input, 0);
+    const std::string name = input.substr(input.rfind('/') + 1);
+    maps.push_back(test::read_written_map(dir.path(name + ".sphere.ply"), 2));
+    std::ifstream report_stream(dir.path(name + ".json"));
+    poles.push_back(nlohmann::json::parse(report_stream)["genus0"]["pole_face"].get<int>());
+  }
+  for (size_t k = 1; k < maps.size(); ++k) {
+    EXPECT_EQ(poles[k], poles[0]) << "input " << k;
+    ASSERT_EQ(maps[k].sphere.size(), maps[0].sphere.size());
+    double farthest = 0;
+    for (size_t v = 0; v < maps[0].sphere.size(); ++v)
+      for (int i = 0; i < 3; ++i)
+        farthest = std::max(farthest, std::abs(maps[k].sphere[v][i] - maps[0].sphere[v][i]));
+    EXPECT_LT(farthest, 1e-3) << "input " << k;
+  }
+}
+
 TEST(WrittenMaps, QuadSplitTori) {
   test::TempDir dir;
   for (const auto &[major, minor, r] : std::vector<std::tuple<int, int, double>>{

@@ -132,7 +132,7 @@ int face_at_north_pole(const PreparedMesh &prepared, const std::vector<PlaneValu
       near_north &= to_sphere(centred[prepared.incidence.corners[f][k]]).z() > 0.9;
     if (!near_north) continue;
     const double angle = smallest_angle(prepared.mesh.face[f]);
-    if (angle > best_angle) {
+    if (angle > best_angle + pole_angle_tie) {
       best_angle = angle;
       pole_face = int(f);
     }

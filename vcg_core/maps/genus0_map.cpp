@@ -25,7 +25,7 @@ int best_shaped_face(const Mesh &mesh, const FaceGeometry &geometry) {
   for (size_t f = 0; f < mesh.face.size(); ++f) {
     if (geometry.areas[f] < 0.5 * median || geometry.areas[f] > 2 * median) continue;
     const double smallest = smallest_angle(mesh.face[f]);
-    if (smallest > best_angle) {
+    if (smallest > best_angle + pole_angle_tie) {
       best_angle = smallest;
       best = int(f);
     }

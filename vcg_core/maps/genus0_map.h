@@ -77,6 +77,11 @@ Eigen::VectorXcd harmonic_extension_by(const ColumnSolve &solve,
 // with the largest smallest angle (the pole's model 1 / w is accurate on a small, round face).
 int default_pole_face(const PreparedMesh &prepared);
 
+// Smallest angles closer than this (radians) are a tie, taken by the lower face index: the same
+// mesh saved in single precision (PLY floats, whose rounding moves a median face's angles by about
+// 3e-5 on a 400k-face mesh) or as text picks the same pole among faces of nearly the same shape.
+constexpr double pole_angle_tie = 1e-3;
+
 // The weights below a floor of 1e-3 of the median positive weight raised to it, where `raise`
 // (one flag per edge; empty: all) allows; `raised` counts them.
 std::vector<double> positive_weights(const std::vector<double> &weights,
