@@ -170,10 +170,10 @@ TEST(WrittenMaps, GenusZeroAsConformalAsTheBestLinearMethod) {
 TEST(WrittenMaps, TheSameMapFromOffPlyAndObj) {
   test::TempDir dir;
   const std::string off = dir.path("maxplanck16.off");
-  ASSERT_EQ(run_cli({"make", "subdivide", test::data_path("maxplanck.nf25k.off"), "-s", "2", "-o",
-                     off})
-                .exit_code,
-            0);
+  ASSERT_EQ(
+      run_cli({"make", "subdivide", test::data_path("maxplanck.nf25k.off"), "-s", "2", "-o", off})
+          .exit_code,
+      0);
   std::vector<std::array<double, 3>> positions;
   std::vector<std::array<int, 3>> triangles;
   test::arrays_of(off, positions, triangles);
