@@ -17,11 +17,16 @@ std::vector<std::string> invalid_reasons(const ParameterizeOptions &options,
   if (chosen_pair ? (map.degree < 1 || map.degree > expected) : map.degree != expected)
     reasons.push_back("the map covers the sphere " + std::to_string(map.degree) +
                       " times instead of " + std::to_string(expected));
+  // Where faces shrink below what doubles resolve, the windings around them cannot be measured:
+  // a count that does not add up says nothing of branch points there.
+  const size_t collapsed = map.quality.collapsed_face_indices.size();
   if (!map.riemann_hurwitz_ok)
     reasons.push_back(
         "Riemann-Hurwitz does not hold (chi = " + std::to_string(map.euler) +
         ", 2 * degree - ramification = " + std::to_string(2 * map.degree - map.ramification) +
-        "): branch points were missed or are wrong");
+        (collapsed > 0 ? "): the windings around the parts that shrink below double precision "
+                         "cannot be measured"
+                       : "): branch points were missed or are wrong"));
   const std::vector<int> &folded = map.quality.folded_face_indices;
   if (!folded.empty())
     reasons.push_back(folded.size() == 1
@@ -29,7 +34,6 @@ std::vector<std::string> invalid_reasons(const ParameterizeOptions &options,
                           : std::to_string(folded.size()) + " faces are turned over (faces " +
                                 list_indices(folded) + ")");
   // Where faces shrink below what doubles resolve, that is the cause of the rest: said first.
-  const size_t collapsed = map.quality.collapsed_face_indices.size();
   if (!reasons.empty() && collapsed > 0)
     reasons.insert(reasons.begin(), plural(collapsed, "face shrinks", "faces shrink") +
                                         " below what double precision resolves (long "
