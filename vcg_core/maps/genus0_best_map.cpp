@@ -34,8 +34,8 @@ std::vector<Eigen::Vector3d> as_written(const PreparedMesh &prepared,
   return sphere;
 }
 
-CentredQuality quality_of(const PreparedMesh &prepared, const std::vector<PlaneValue> &centred) {
-  const std::vector<Eigen::Vector3d> sphere = as_written(prepared, centred);
+CentredQuality quality_of(const PreparedMesh &prepared,
+                          const std::vector<Eigen::Vector3d> &written) {
   const auto &corners = prepared.incidence.corners;
   using Counts = Eigen::Vector2i; // folded, collapsed
   const Counts counts =
@@ -43,20 +43,14 @@ CentredQuality quality_of(const PreparedMesh &prepared, const std::vector<PlaneV
         Counts part = Counts::Zero();
         for (size_t f = begin; f < end; ++f) {
           const std::array<int, 3> &c = corners[f];
-          const Eigen::Vector3d &a = sphere[size_t(c[0])], &b = sphere[size_t(c[1])],
-                                &d = sphere[size_t(c[2])];
+          const Eigen::Vector3d &a = written[size_t(c[0])], &b = written[size_t(c[1])],
+                                &d = written[size_t(c[2])];
           part[0] += folded_as_measured(a, b, d);
           part[1] += collapsed_image(a, b, d);
         }
         return part;
       });
   return {counts[1], counts[0]};
-}
-
-void measure_angle_error(const PreparedMesh &prepared, const std::vector<PlaneValue> &centred,
-                         CentredQuality &quality) {
-  if (quality.angle_error < 0)
-    quality.angle_error = mean_angle_error_degrees(prepared.mesh, as_written(prepared, centred));
 }
 
 // The pinned-pole map of `pole_face` (-1: the default face). With `repair_folds`, where it folds
@@ -124,20 +118,11 @@ Genus0Map corrected_map(const PreparedMesh &prepared, SolverKind solver, int pol
 // Of the faces the centred map puts near the north pole, the best-shaped (it models the pole
 // most accurately); -1 where there is none.
 int face_at_north_pole(const PreparedMesh &prepared, const std::vector<PlaneValue> &centred) {
-  int pole_face = -1;
-  double best_angle = -1;
-  for (size_t f = 0; f < prepared.mesh.face.size(); ++f) {
-    bool near_north = true;
+  return best_shaped_face_among(prepared.mesh, [&](size_t f) {
     for (int k = 0; k < 3; ++k)
-      near_north &= to_sphere(centred[prepared.incidence.corners[f][k]]).z() > 0.9;
-    if (!near_north) continue;
-    const double angle = smallest_angle(prepared.mesh.face[f]);
-    if (angle > best_angle + pole_angle_tie) {
-      best_angle = angle;
-      pole_face = int(f);
-    }
-  }
-  return pole_face;
+      if (!(to_sphere(centred[prepared.incidence.corners[f][k]]).z() > 0.9)) return false;
+    return true;
+  });
 }
 
 // The map solved with the weights of `solving` (its edges and weights; faces, geometry and
@@ -145,14 +130,21 @@ int face_at_north_pole(const PreparedMesh &prepared, const std::vector<PlaneValu
 struct Candidate {
   Genus0Map map;
   CentredValues centred;
+  std::vector<Eigen::Vector3d> written; // as_written(centred)
   CentredQuality quality;
 };
 
 Candidate centred_candidate(const PreparedMesh &prepared, Genus0Map map) {
   CentredValues centred{map.values, {}};
   centred.centring = center_on_sphere(centred.values, prepared.vertex_areas);
-  const CentredQuality quality = quality_of(prepared, centred.values);
-  return {std::move(map), std::move(centred), quality};
+  std::vector<Eigen::Vector3d> written = as_written(prepared, centred.values);
+  const CentredQuality quality = quality_of(prepared, written);
+  return {std::move(map), std::move(centred), std::move(written), quality};
+}
+
+void measure_angle_error(const PreparedMesh &prepared, Candidate &candidate) {
+  if (candidate.quality.angle_error < 0)
+    candidate.quality.angle_error = mean_angle_error_degrees(prepared.mesh, candidate.written);
 }
 
 Candidate solved_on(const PreparedMesh &solving, const PreparedMesh &prepared, SolverKind solver,
@@ -173,8 +165,8 @@ Candidate solved_on(const PreparedMesh &solving, const PreparedMesh &prepared, S
   if (pole_face < 0) return first;
   Candidate again = centred_candidate(
       prepared, corrected_map(solving, solver, pole_face, repair_folds, finished));
-  measure_angle_error(prepared, first.centred.values, first.quality);
-  measure_angle_error(prepared, again.centred.values, again.quality);
+  measure_angle_error(prepared, first);
+  measure_angle_error(prepared, again);
   return again.quality.better_than(first.quality) ? std::move(again) : std::move(first);
 }
 
@@ -190,8 +182,8 @@ Genus0Result best_genus0_map(const PreparedMesh &prepared, SolverKind solver, in
   bool intrinsic = true;
   if (best.quality.folded > 0 || best.quality.collapsed > 0) {
     Candidate raised = solved_on(prepared, prepared, solver, pole_face_asked, true);
-    measure_angle_error(prepared, best.centred.values, best.quality);
-    measure_angle_error(prepared, raised.centred.values, raised.quality);
+    measure_angle_error(prepared, best);
+    measure_angle_error(prepared, raised);
     if (raised.quality.better_than(best.quality)) {
       best = std::move(raised);
       intrinsic = false;

@@ -20,17 +20,10 @@ int best_shaped_face(const Mesh &mesh, const FaceGeometry &geometry) {
   std::vector<double> areas = geometry.areas;
   std::nth_element(areas.begin(), areas.begin() + long(areas.size() / 2), areas.end());
   const double median = areas[areas.size() / 2];
-  int best = 0;
-  double best_angle = -1;
-  for (size_t f = 0; f < mesh.face.size(); ++f) {
-    if (geometry.areas[f] < 0.5 * median || geometry.areas[f] > 2 * median) continue;
-    const double smallest = smallest_angle(mesh.face[f]);
-    if (smallest > best_angle + pole_angle_tie) {
-      best_angle = smallest;
-      best = int(f);
-    }
-  }
-  return best;
+  const int best = best_shaped_face_among(mesh, [&](size_t f) {
+    return !(geometry.areas[f] < 0.5 * median || geometry.areas[f] > 2 * median);
+  });
+  return std::max(best, 0);
 }
 
 } // namespace
@@ -49,6 +42,20 @@ std::vector<double> positive_weights(const std::vector<double> &weights,
       ++raised;
     }
   return positive;
+}
+
+int best_shaped_face_among(const Mesh &mesh, const std::function<bool(size_t)> &eligible) {
+  int best = -1;
+  double best_angle = -1;
+  for (size_t f = 0; f < mesh.face.size(); ++f) {
+    if (!eligible(f)) continue;
+    const double smallest = smallest_angle(mesh.face[f]);
+    if (smallest > best_angle + pole_angle_tie) {
+      best_angle = smallest;
+      best = int(f);
+    }
+  }
+  return best;
 }
 
 int default_pole_face(const PreparedMesh &prepared) {

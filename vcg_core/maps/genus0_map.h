@@ -82,6 +82,10 @@ int default_pole_face(const PreparedMesh &prepared);
 // 3e-5 on a 400k-face mesh) or as text picks the same pole among faces of nearly the same shape.
 constexpr double pole_angle_tie = 1e-3;
 
+// Of the faces `eligible` accepts, the one with the largest smallest angle (ties as above); -1
+// where there is none.
+int best_shaped_face_among(const Mesh &mesh, const std::function<bool(size_t)> &eligible);
+
 // The weights below a floor of 1e-3 of the median positive weight raised to it, where `raise`
 // (one flag per edge; empty: all) allows; `raised` counts them.
 std::vector<double> positive_weights(const std::vector<double> &weights,

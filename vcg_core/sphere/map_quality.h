@@ -48,7 +48,7 @@ std::array<double, 3> face_corner_angles(const Mesh &mesh, int face);
 double face_angle_error_degrees(const std::array<double, 3> &corner_angles, const Mesh &mesh,
                                 const std::vector<Eigen::Vector3d> &sphere, int face);
 
-// One face's image as measure_map_quality judges it: folded, and collapsed.
+// Whether one face's image is folded as measure_map_quality judges it.
 bool folded_as_measured(const Eigen::Vector3d &a, const Eigen::Vector3d &b,
                         const Eigen::Vector3d &c);
 
