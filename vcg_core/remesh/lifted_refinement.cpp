@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 
 #include <Eigen/Geometry>
 
@@ -17,8 +18,16 @@ Side side(int a, int b) {
 // The sides to split this round: those of every face over the limits, closed so that no face
 // has exactly two.
 std::map<Side, int> sides_to_split(const MappedSurface &surface, const LiftedSphere &lifted,
-                                   const RefinementLimits &limits, std::map<Side, int> split) {
-  const std::vector<double> areas = lifted_face_areas(lifted);
+                                   const RefinementLimits &limits, SampleLocator *locator,
+                                   std::map<Side, int> split) {
+  std::vector<double> areas = lifted_face_areas(lifted);
+  if (locator) {
+    const std::vector<double> covered = locator->covered_areas(lifted);
+    // Where the lifts of a face's corners have (nearly) met, the map has shrunk that part below
+    // what double precision tells apart: splitting cannot reach it.
+    for (size_t f = 0; f < areas.size(); ++f)
+      if (areas[f] > 1e-4 * limits.face_area) areas[f] = std::max(areas[f], covered[f]);
+  }
   for (size_t f = 0; f < lifted.faces.size(); ++f) {
     const auto &face = lifted.faces[f];
     // Faces along a hole's boundary are left as lifted (their sides' middles may lie off the
@@ -193,6 +202,8 @@ void refine_lifted_sphere(const MappedSurface &surface, const RefinementLimits &
                           LiftedSphere &lifted) {
   const int max_steps = int(surface.faces.size()) + 16;
   std::vector<Halved> halved;
+  std::optional<SampleLocator> locator;
+  if (limits.samples) locator = *limits.samples;
   for (int round = 0; round < rounds; ++round) {
     std::map<Side, int> known; // the halved faces whole again, their midpoints kept
     for (const Halved &h : halved) {
@@ -200,7 +211,8 @@ void refine_lifted_sphere(const MappedSurface &surface, const RefinementLimits &
       known[side(h.face[0], h.face[1])] = h.middle;
     }
     halved.clear();
-    std::map<Side, int> split = sides_to_split(surface, lifted, limits, known);
+    std::map<Side, int> split =
+        sides_to_split(surface, lifted, limits, locator ? &*locator : nullptr, known);
     std::map<Side, int> opposite; // sides with both ends on the boundary: a face's third corner
     for (const auto &face : lifted.faces)
       for (int k = 0; k < 3; ++k)

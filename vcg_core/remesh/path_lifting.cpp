@@ -9,11 +9,17 @@
 namespace meromorph {
 namespace {
 
-// Determinants of three unit vectors below this are rounding, not a side (about 100 ulps).
-constexpr double side_tolerance = 1e-14;
+// det(x, p, q) = x . (p x q), computed from the differences p - x and q - x, so that it keeps its
+// relative precision for points a hair apart (a long part's image, 1e-8 across and less, where
+// p x q alone is rounding).
+double det(const Eigen::Vector3d &x, const Eigen::Vector3d &p, const Eigen::Vector3d &q) {
+  return x.dot((p - x).cross(q - x));
+}
 
-double det(const Eigen::Vector3d &a, const Eigen::Vector3d &b, const Eigen::Vector3d &c) {
-  return a.dot(b.cross(c));
+// Rounding in det(x, s, r): a few hundred ulps of its terms.
+double side_tolerance(const Eigen::Vector3d &x, const Eigen::Vector3d &s,
+                      const Eigen::Vector3d &r) {
+  return 1e-13 * (s - x).norm() * (r - x).norm();
 }
 
 // Barycentric coordinates of the value x in face f's image (the central projection of x onto the
@@ -78,10 +84,10 @@ std::optional<SurfacePoint> lift_arc(const MappedSurface &surface, const Surface
     double exit_t = std::numeric_limits<double>::infinity();
     for (int k = 0; k < 3; ++k) {
       const Eigen::Vector3d &s = surface.image[c[k]], &r = surface.image[c[(k + 1) % 3]];
-      const double at_a = det(s, r, a), at_b = det(s, r, b);
+      const double at_a = det(a, s, r), at_b = det(b, s, r);
       // b on the inner side of this side, or on its great circle up to rounding (b at one of the
       // side's ends, a branch value, gives a determinant of rounding noise either sign).
-      if (at_b >= -side_tolerance) continue;
+      if (at_b >= -side_tolerance(b, s, r)) continue;
       if (surface.across[face][k] == came_from && came_from >= 0) continue;
       const double crossing = at_a > at_b ? at_a / (at_a - at_b) : t;
       if (crossing < exit_t) {

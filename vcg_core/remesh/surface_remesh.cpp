@@ -135,13 +135,14 @@ double surface_area(const MappedSurface &surface) {
   return total;
 }
 
-constexpr int refinement_rounds = 6;
+constexpr int refinement_rounds = 40;
 constexpr double largest_face = 1.8; // times the target face area
 
 // The refinement's limits for a target face area, `scale` times that allowed.
-RefinementLimits refinement_limits(double face_area, double scale) {
+RefinementLimits refinement_limits(double face_area, double scale, const SampleLocator &samples) {
   RefinementLimits limits;
   limits.face_area = largest_face * scale * face_area;
+  limits.samples = &samples;
   return limits;
 }
 
@@ -165,8 +166,11 @@ double vertices_after_refinement(const std::vector<double> &areas, int lifted_fr
 
 // The highest frequency up to the lifted one whose refined lift holds about the target.
 int frequency_after_refinement(const LiftedSphere &lifted, int lifted_frequency, double face_area,
-                               long long target) {
-  const std::vector<double> areas = lifted_face_areas(lifted);
+                               long long target, const SurfaceSamples &samples) {
+  std::vector<double> areas = lifted_face_areas(lifted);
+  const std::vector<double> covered = SampleLocator(samples).covered_areas(lifted);
+  for (size_t f = 0; f < areas.size(); ++f)
+    areas[f] = std::max(areas[f], covered[f]);
   int frequency = lifted_frequency;
   while (frequency > 1 && vertices_after_refinement(areas, lifted_frequency, frequency, face_area) >
                               1.03 * double(target))
@@ -203,14 +207,18 @@ struct ClosestTry {
 // allowed is scaled by how far a try lands from the target, and where the plain lift alone holds
 // more than the target the sphere's frequency is lowered; the closest of a few tries is kept.
 void refine_to_target(const PartSurface &surface, RemeshPart &figures, double face_area,
-                      long long target, const Progress &progress, LiftedSphere &lifted) {
+                      const SurfaceSamples &samples, long long target, const Progress &progress,
+                      LiftedSphere &lifted) {
+  // The samples located on the plain lift once; each try copies that.
+  SampleLocator located(samples);
+  located.covered_areas(lifted);
   ClosestTry closest;
   double scale = 1.0;
   int best_frequency = figures.frequency;
   for (int attempt = 0; attempt < 6; ++attempt) {
     LiftedSphere refined = lifted;
-    refine_lifted_sphere(surface.surface, refinement_limits(face_area, scale), refinement_rounds,
-                         refined);
+    refine_lifted_sphere(surface.surface, refinement_limits(face_area, scale, located),
+                         refinement_rounds, refined);
     const double held = closest.offer(std::move(refined), target);
     if (closest.kept_last) best_frequency = figures.frequency;
     if (held > 0.95 && held < 1.05) break;
@@ -220,6 +228,8 @@ void refine_to_target(const PartSurface &surface, RemeshPart &figures, double fa
       figures.frequency =
           std::max(1, int(std::floor(figures.frequency / std::sqrt(lift_holds / 0.8))));
       lifted = lift_part(surface, figures, progress);
+      located = SampleLocator(samples);
+      located.covered_areas(lifted);
     }
   }
   lifted = std::move(closest.best);
@@ -229,18 +239,20 @@ void refine_to_target(const PartSurface &surface, RemeshPart &figures, double fa
 // Genus 1: the flat torus sampled so that, refined where the surface is large against its flat
 // image, it holds about the target: the sample count and the largest face area allowed are both
 // scaled by how far a try lands, the closest of a few tries kept.
-LiftedSphere flat_torus_to_target(const PartSurface &surface, double face_area, long long target) {
+LiftedSphere flat_torus_to_target(const PartSurface &surface, double face_area,
+                                  const SurfaceSamples &samples, long long target) {
   ClosestTry closest;
-  double samples = double(target), scale = 1.0;
+  double grid_samples = double(target), scale = 1.0;
   for (int attempt = 0; attempt < 6; ++attempt) {
     LiftedSphere lifted =
         lift_flat_torus(surface.surface, surface.flat, surface.flat_periods, surface.face_layer,
-                        surface.local_degree, std::llround(samples));
-    refine_lifted_sphere(surface.surface, refinement_limits(face_area, scale), refinement_rounds,
-                         lifted);
+                        surface.local_degree, std::llround(grid_samples));
+    refine_lifted_sphere(surface.surface,
+                         refinement_limits(face_area, scale, SampleLocator(samples)),
+                         refinement_rounds, lifted);
     const double held = closest.offer(std::move(lifted), target);
     if (std::abs(std::log(held)) < 0.03) break;
-    samples /= std::sqrt(held);
+    grid_samples /= std::sqrt(held);
     scale *= held;
   }
   return std::move(closest.best);
@@ -327,19 +339,23 @@ void even_out_part(const PartSurface &surface, const RemeshOptions &options, lon
                    LiftedSphere &lifted) {
   const long long even_target = options.resolution >= 0 ? figures.target_vertices : part_target;
   const double face_area = surface_area(surface.surface) / (2.0 * double(even_target));
+  // Samples of a quarter of the target face area: a face over a limb's image is split until no
+  // more of the surface lies under it than its target.
+  const SurfaceSamples samples = sample_surface(surface.surface, face_area / 4);
   if (flat_to_target) {
-    lifted = flat_torus_to_target(surface, face_area, even_target);
+    lifted = flat_torus_to_target(surface, face_area, samples, even_target);
   } else if (options.resolution < 0) {
     const int frequency =
-        frequency_after_refinement(lifted, figures.frequency, face_area, even_target);
+        frequency_after_refinement(lifted, figures.frequency, face_area, even_target, samples);
     if (frequency != figures.frequency) {
       figures.frequency = frequency;
       lifted = lift_part(surface, figures, step.range(0.5, 0.9));
     }
-    refine_to_target(surface, figures, face_area, even_target, step.range(0.5, 0.9), lifted);
+    refine_to_target(surface, figures, face_area, samples, even_target, step.range(0.5, 0.9),
+                     lifted);
   } else
-    refine_lifted_sphere(surface.surface, refinement_limits(face_area, 1.0), refinement_rounds,
-                         lifted);
+    refine_lifted_sphere(surface.surface, refinement_limits(face_area, 1.0, SampleLocator(samples)),
+                         refinement_rounds, lifted);
   smooth_lifted_sphere(surface, options.relaxation_rounds, lifted);
   for (int round = 0; round < 2 && lifted.folded_lifts > 0; ++round) {
     LiftedSphere split = lifted;

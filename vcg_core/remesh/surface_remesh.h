@@ -9,7 +9,8 @@
 //      values on vertices, lifted to the part (layered_sphere_lift.h; a part of genus 1: a
 //      regular grid of its flat torus instead, flat_torus_lift.h, its sample count scaled so that
 //      the refined result holds about the target), evened out where its
-//      triangles lift large (lifted_refinement.h; the frequency chosen so the result holds about
+//      triangles lift large or lie over much of the surface (lifted_refinement.h, covered_area.h:
+//      long parts the map shrinks get their share; the frequency chosen so the result holds about
 //      the target), then rounds of edge flips (lifted_edge_flips.h) and tangential relaxation
 //      through the sphere (lifted_relaxation.h) for the triangles' shapes; the parts' lifts
 //      together as one mesh (part by part), with per vertex its layer, sphere value, local degree
