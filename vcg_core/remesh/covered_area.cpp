@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_map>
+#include <utility>
 
 #include <Eigen/Geometry>
 
@@ -10,6 +12,26 @@
 
 namespace meromorph {
 namespace {
+
+// Distance from p to the triangle abc: to its plane where p projects inside, else to the nearest
+// side.
+double point_triangle_distance(const Eigen::Vector3d &p, const Eigen::Vector3d &a,
+                               const Eigen::Vector3d &b, const Eigen::Vector3d &c) {
+  const Eigen::Vector3d n = (b - a).cross(c - a);
+  const double nn = n.squaredNorm();
+  if (nn > 0) {
+    const double v = (p - a).cross(c - a).dot(n) / nn, w = (b - a).cross(p - a).dot(n) / nn;
+    if (v >= 0 && w >= 0 && v + w <= 1) return std::abs((p - a).dot(n)) / std::sqrt(nn);
+  }
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const auto &[x, y] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}}) {
+    const Eigen::Vector3d e = y - x;
+    const double ee = e.squaredNorm();
+    const double t = ee > 0 ? std::clamp((p - x).dot(e) / ee, 0.0, 1.0) : 0.0;
+    nearest = std::min(nearest, (p - x - t * e).norm());
+  }
+  return nearest;
+}
 
 // The lifted faces' sphere triangles in a grid of cells of every size 2^-level (a triangle in the
 // cells of the level whose cell is between half its bounding box and all of it: at most 27), so
@@ -41,8 +63,8 @@ public:
     }
   }
 
-  // The lifted face whose sphere triangle holds `image` (of several, the nearest to `position` on
-  // the surface); -1 where none does.
+  // The lifted face whose sphere triangle holds `image` (of several, the nearest to `position`); -1
+  // where none does.
   int face_holding(const Eigen::Vector3d &image, const Eigen::Vector3d &position) const {
     int best = -1;
     double nearest = 0;
@@ -53,11 +75,9 @@ public:
       for (int f : found->second) {
         if (!holds(f, image)) continue;
         const auto &face = lifted_.faces[size_t(f)];
-        const double distance =
-            (position - (lifted_.positions[size_t(face[0])] + lifted_.positions[size_t(face[1])] +
-                         lifted_.positions[size_t(face[2])]) /
-                            3.0)
-                .squaredNorm();
+        const double distance = point_triangle_distance(
+            position, lifted_.positions[size_t(face[0])], lifted_.positions[size_t(face[1])],
+            lifted_.positions[size_t(face[2])]);
         if (best < 0 || distance < nearest) {
           best = f;
           nearest = distance;

@@ -8,8 +8,8 @@
 //      of an m x m split, m as small as the bound allows): per sample its area, surface position
 //      and image on the sphere (the face's map, projected from the centre).
 //      `SampleLocator::covered_areas`: per lifted face, the area of the samples whose image its
-//      sphere triangle holds (of the lifted copies that hold it, the one whose lifted centroid lies
-//      nearest the sample on the surface: the sheet the sample is on). Samples no face holds (in a
+//      sphere triangle holds (of the lifted copies that hold it, the one whose lifted triangle lies
+//      nearest the sample: the sheet the sample is on). Samples no face holds (in a
 //      hole's gap) count nowhere.
 #pragma once
 
