@@ -69,6 +69,14 @@ void FilterMeromorphPlugin::initParameterSet(QAction *action, MeshModel &model,
     parameters.addParam(RichInt("targetVertices", model.cm.vn, "Vertices",
                                 "About how many vertices the new mesh should have (the default "
                                 "is the current mesh's count)."));
+    parameters.addParam(RichFloat("edgeLength", 0.0f, "Edge length",
+                                  "About this edge length, in the mesh's units, instead of the "
+                                  "vertex count (0: use Vertices)."));
+    parameters.addParam(RichFloat("maxError", 0.0f, "Max. surface distance (%)",
+                                  "The new mesh within this distance of the current one both "
+                                  "ways (Hausdorff, in percent of the bounding box diagonal), "
+                                  "with as few vertices as the tries find, instead of the vertex "
+                                  "count (0: use Vertices)."));
     parameters.addParam(RichBool(
         "areaCorrect", true, "Even out the sampling",
         "First move the map by the Moebius transformation that spreads the surface's area most "
@@ -430,11 +438,17 @@ bool FilterMeromorphPlugin::remesh(MeshDocument &document, const RichParameterLi
   options.split_nonmanifold = 1;
   options.progress = report_progress;
   options.progress_user = &bridge;
+  // An edge length or a largest distance, when given, sets the size instead of the vertex count.
+  options.remesh_edge_length = std::max(0.0, double(parameters.getFloat("edgeLength")));
+  options.remesh_max_error = std::max(0.0, double(parameters.getFloat("maxError"))) / 100;
+  const int target = options.remesh_edge_length > 0 || options.remesh_max_error > 0
+                         ? 0
+                         : parameters.getInt("targetVertices");
   const std::vector<double> positions(live.positions.begin(), live.positions.end());
   meromorph_remesh_result *result = nullptr;
   const meromorph_status status = meromorph_remesh_d(
       positions.data(), live.vertex_count(), live.triangles.data(), live.faces.size(), &options,
-      parameters.getInt("targetVertices"), parameters.getBool("areaCorrect") ? 1 : 0, &result);
+      target, parameters.getBool("areaCorrect") ? 1 : 0, &result);
   if (status != MEROMORPH_OK) {
     std::vector<int32_t> codes(size_t(meromorph_last_error_remedies(nullptr, 0)));
     meromorph_last_error_remedies(codes.data(), int(codes.size()));

@@ -215,7 +215,8 @@ TEST(MeshLabPlugin, FiltersAreListedWithTheirParameters) {
         "Genus 0: pole face", "Genus >= 2: first form", "Genus >= 2: second form",
         "Seam-correct wedge texture coordinates", "Create the layered sphere", "Layer gap",
         "Close holes", "Split non-manifold spots", "Pack the parts' texture coordinates"}},
-      {"Remesh through the Conformal Sphere", {"Vertices", "Even out the sampling"}}};
+      {"Remesh through the Conformal Sphere",
+       {"Vertices", "Edge length", "Max. surface distance (%)", "Even out the sampling"}}};
   for (const auto &[filter, labels] : filters) {
     const size_t at = dump.find(filter);
     ASSERT_NE(at, std::string::npos) << filter;
@@ -259,6 +260,35 @@ TEST(MeshLabPlugin, RemeshThroughTheConformalSphereMakesANewLayerOfTheSameGenus)
     selected += vertex.IsS();
   }
   EXPECT_EQ(selected, 6) << "the branch vertices are selected";
+}
+
+// The remesh filter sized by the largest distance instead of a vertex count: the summary in the
+// log gives the Hausdorff distance both ways, each within the 0.5% asked.
+TEST(MeshLabPlugin, RemeshWithinAMaxSurfaceDistance) {
+  const MeshLab meshlab;
+  std::ofstream(meshlab.path("within.mlx"))
+      << "<!DOCTYPE FilterScript>\n<FilterScript>\n"
+         " <filter name=\"Remesh through the Conformal Sphere\">\n"
+         "  <Param type=\"RichInt\" value=\"800\" name=\"targetVertices\"/>\n"
+         "  <Param type=\"RichFloat\" value=\"0\" name=\"edgeLength\"/>\n"
+         "  <Param type=\"RichFloat\" value=\"0.5\" name=\"maxError\"/>\n"
+         "  <Param type=\"RichBool\" value=\"true\" name=\"areaCorrect\"/>\n"
+         " </filter>\n</FilterScript>\n";
+  std::string log;
+  ASSERT_EQ(meshlab.run("-i " + test::data_path("eight.off") + " -o " +
+                            meshlab.path("remeshed.ply") + " -s " + meshlab.path("within.mlx"),
+                        log),
+            0)
+      << log;
+  const size_t at = log.find("Hausdorff distance ");
+  ASSERT_NE(at, std::string::npos) << log;
+  std::istringstream figures(log.substr(at + std::string("Hausdorff distance ").size()));
+  double to = 0, from = 0;
+  char percent = 0, slash = 0;
+  figures >> to >> percent >> slash >> from;
+  EXPECT_GT(to, 0.0) << log;
+  EXPECT_LE(to, 0.5) << log;
+  EXPECT_LE(from, 0.5) << log;
 }
 
 } // namespace

@@ -5,6 +5,7 @@
 // against the target (the input's).
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -476,6 +477,74 @@ TEST(Remesh, TheSharedKittenAsCloseAsIsotropicRemeshing) {
 
 TEST(Remesh, TheSharedEightAsCloseAsIsotropicRemeshing) {
   expect_as_close_as_isotropic_remeshing(test::data_path("eight.off"), 2);
+}
+
+double surface_area(const std::vector<Vec3> &p, const std::vector<std::array<int, 3>> &t) {
+  double area = 0;
+  for (const auto &f : t) {
+    const Vec3 n = cross(sub(p[f[1]], p[f[0]]), sub(p[f[2]], p[f[0]]));
+    area += 0.5 * std::sqrt(dot(n, n));
+  }
+  return area;
+}
+
+// `--edge-length L`: about the vertex count of equilateral triangles of side L tiling the surface,
+// and a median edge within 15% of L, measured on the written file.
+TEST(Remesh, AnEdgeLengthGivesEdgesOfThatLength) {
+  test::TempDir dir;
+  const std::string input = test::data_path("kitten.nf20k.off"), output = dir.path("remeshed.ply");
+  std::vector<Vec3> p;
+  std::vector<std::array<int, 3>> t;
+  test::arrays_of(input, p, t);
+  const double length = 0.04;
+  ASSERT_EQ(
+      test::run_cli({"remesh", input, "-o", output, "--edge-length", "0.04", "--quiet"}).exit_code,
+      0);
+  const test::WrittenMesh written = test::read_written_mesh(output);
+  std::vector<Vec3> positions;
+  for (size_t v = 0; v < written.columns.at("x").size(); ++v)
+    positions.push_back(
+        {written.columns.at("x")[v], written.columns.at("y")[v], written.columns.at("z")[v]});
+  const double expected = surface_area(p, t) / (std::sqrt(3.0) / 2 * length * length);
+  EXPECT_NEAR(double(positions.size()), expected, 0.1 * expected);
+  std::vector<double> edges;
+  for (const auto &f : written.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 e = sub(positions[f[(k + 1) % 3]], positions[f[k]]);
+      edges.push_back(std::sqrt(dot(e, e)));
+    }
+  std::nth_element(edges.begin(), edges.begin() + long(edges.size() / 2), edges.end());
+  EXPECT_NEAR(edges[edges.size() / 2], length, 0.15 * length);
+}
+
+// `--max-error E`: the written remesh lies within E percent of the diagonal of the input both ways
+// (the test's own distances, 10% leeway for its different samples), with fewer vertices than a
+// remesh twice as fine would need.
+TEST(Remesh, AMaxErrorIsMetWithFewVertices) {
+  test::TempDir dir;
+  const std::string input = test::data_path("eight.off"), output = dir.path("remeshed.ply");
+  const auto run = test::run_cli({"remesh", input, "-o", output, "--max-error", "0.5", "--quiet"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const RemeshFigures figures = judge_remesh(input, output);
+  EXPECT_LT(std::max(figures.hausdorff_to_input, figures.hausdorff_from_input), 1.1 * 0.005);
+  EXPECT_EQ(figures.euler, -2);
+  EXPECT_EQ(figures.folded, 0);
+  // Halving the bound's distance takes about twice the vertices or more: the count found is well
+  // below what 0.25% needs.
+  const std::string finer = dir.path("finer.ply");
+  ASSERT_EQ(
+      test::run_cli({"remesh", input, "-o", finer, "--max-error", "0.25", "--quiet"}).exit_code, 0);
+  EXPECT_LT(1.4 * figures.vertices, judge_remesh(input, finer).vertices);
+}
+
+// Two ways of giving the size at once are refused as a usage error, naming the options.
+TEST(Remesh, TwoSizesAtOnceAreRefused) {
+  test::TempDir dir;
+  const auto run = test::run_cli({"remesh", test::data_path("eight.off"), "-o", dir.path("out.ply"),
+                                  "--vertices", "1000", "--max-error", "1"});
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_NE(run.err.find("--max-error"), std::string::npos) << run.err;
+  EXPECT_FALSE(std::filesystem::exists(dir.path("out.ply")));
 }
 
 } // namespace

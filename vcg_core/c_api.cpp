@@ -71,6 +71,12 @@ std::string check_options(const meromorph_options &options, size_t vertex_count,
     return "options.strict is " + std::to_string(options.strict) + "; use 0 or 1";
   if (options.add_vertices != 0 && options.add_vertices != 1)
     return "options.add_vertices is " + std::to_string(options.add_vertices) + "; use 0 or 1";
+  if (!(options.remesh_edge_length >= 0) || !(options.remesh_edge_length < 1e300))
+    return "options.remesh_edge_length is " + std::to_string(options.remesh_edge_length) +
+           "; use 0 (not given) or a length in the input's units";
+  if (!(options.remesh_max_error >= 0) || !(options.remesh_max_error < 1))
+    return "options.remesh_max_error is " + std::to_string(options.remesh_max_error) +
+           "; use 0 (not given) or a fraction of the diagonal below 1";
   if (options.area_correct != 0 && options.area_correct != 1)
     return "options.area_correct is " + std::to_string(options.area_correct) + "; use 0 or 1";
   if (options.origin_vertex < -1 || (long long)options.origin_vertex >= (long long)vertex_count)
@@ -111,11 +117,14 @@ std::string read_options(const meromorph_options *options, meromorph_options &se
   if (!options) return "";
   // Version 1 ended before close_holes, version 2 before split_nonmanifold, version 5 (up to
   // meromorph 0.1) before area_correct, and 0.2 as first built, before strict; version 5 with
-  // strict before add_vertices.
-  const size_t known_sizes[] = {
-      offsetof(meromorph_options, close_holes),  offsetof(meromorph_options, split_nonmanifold),
-      offsetof(meromorph_options, area_correct), offsetof(meromorph_options, strict),
-      offsetof(meromorph_options, add_vertices), sizeof(meromorph_options)};
+  // strict before add_vertices; meromorph 0.3 before remesh_edge_length.
+  const size_t known_sizes[] = {offsetof(meromorph_options, close_holes),
+                                offsetof(meromorph_options, split_nonmanifold),
+                                offsetof(meromorph_options, area_correct),
+                                offsetof(meromorph_options, strict),
+                                offsetof(meromorph_options, add_vertices),
+                                offsetof(meromorph_options, remesh_edge_length),
+                                sizeof(meromorph_options)};
   if (std::find(std::begin(known_sizes), std::end(known_sizes), options->struct_size) ==
       std::end(known_sizes))
     return "options.struct_size is " + std::to_string(options->struct_size) +
@@ -282,6 +291,8 @@ std::unique_ptr<meromorph_remesh_result> remesh_result(meromorph::MeshArrays &ar
                      join_phrases(map.invalid));
   RemeshOptions options;
   options.vertices = target_vertices > 0 ? (long long)target_vertices : -1;
+  if (settings.remesh_edge_length > 0) options.edge_length = settings.remesh_edge_length;
+  if (settings.remesh_max_error > 0) options.max_error = settings.remesh_max_error;
   SurfaceRemesh remesh;
   add_written_vertices(map, mesh); // the surface the map was written on
   remesh_through_sphere(mesh, map, options, progress.range(0.6, 1.0), remesh);

@@ -115,6 +115,14 @@ typedef struct meromorph_options {
                             as written (see meromorph_added_vertices); 0 (and with strict): keep
                             the input's triangles and report the map as not valid. Since
                             meromorph 0.3; an older struct_size is accepted, with 0 here. */
+  double remesh_edge_length; /* meromorph_remesh_*: > 0: about this edge length, in the input's
+                                units, instead of target_vertices (the count of equilateral
+                                triangles of that side tiling the surface); 0: not given (default).
+                                Since meromorph 0.4; an older struct_size is accepted, with 0. */
+  double remesh_max_error;   /* meromorph_remesh_*: > 0: the remesh within this distance of the
+                                surface both ways (Hausdorff, a fraction of the bounding-box
+                                diagonal, below 1), with as few vertices as the tries find, instead
+                                of target_vertices; 0: not given (default). Since meromorph 0.4. */
 } meromorph_options;
 
 /* A map and everything measured on it; opaque. Made by meromorph_parameterize_*, read by the

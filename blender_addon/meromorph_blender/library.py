@@ -36,6 +36,8 @@ class Options(ctypes.Structure):
         ("area_correct", ctypes.c_int),
         ("strict", ctypes.c_int),
         ("add_vertices", ctypes.c_int),
+        ("remesh_edge_length", ctypes.c_double),
+        ("remesh_max_error", ctypes.c_double),
     ]
 
 
@@ -140,14 +142,20 @@ def options_with(lib, close_holes, split_nonmanifold, progress):
 
 
 def remesh(positions, triangles, target_vertices=0, area_correct=True, close_holes=True,
-           split_nonmanifold=True, progress=None):
+           split_nonmanifold=True, progress=None, edge_length=0.0, max_error=0.0):
     """The surface remeshed through its layered sphere: vertices (n x 3), triangles (t x 3),
     per vertex its layer and branch degree (0 away from branch vertices), the summary line and
-    the report."""
+    the report. edge_length (> 0: about that edge length) or max_error (> 0: within that
+    fraction of the diagonal both ways, with few vertices) set the size instead of
+    target_vertices."""
     lib = load()
     positions = np.ascontiguousarray(positions, dtype=np.float64).reshape(-1)
     triangles = np.ascontiguousarray(triangles, dtype=np.int32).reshape(-1)
     options, callback = options_with(lib, close_holes, split_nonmanifold, progress)  # noqa: F841
+    options.remesh_edge_length = max(0.0, float(edge_length))
+    options.remesh_max_error = max(0.0, float(max_error))
+    if edge_length > 0 or max_error > 0:
+        target_vertices = 0
     result = ctypes.c_void_p()
     status = lib.meromorph_remesh_d(
         positions.ctypes.data, positions.size // 3, triangles.ctypes.data, triangles.size // 3,

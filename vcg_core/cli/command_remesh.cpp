@@ -1,4 +1,5 @@
-// `meromorph remesh INPUT -o OUT [--resolution N | --vertices K] [--report R.json] ...`: a new
+// `meromorph remesh INPUT -o OUT [--resolution N | --vertices K | --edge-length L |
+// --max-error E] [--report R.json] ...`: a new
 // triangulation of the surface sampled through its layered sphere (surface_remesh.h).
 #include <chrono>
 #include <iomanip>
@@ -26,6 +27,7 @@ struct RemeshCommandOptions {
   std::string input, output, report;
   int resolution = -1;
   long long vertices = -1;
+  double edge_length = -1, max_error_percent = -1;
   bool no_area_correct = false, uniform = false, repair = false, close_holes = false,
        split_nonmanifold = false, quiet = false;
 };
@@ -61,8 +63,12 @@ int run_remesh(const RemeshCommandOptions &options) {
   const MeshFormat remesh_format = output_format(options.output);
   const std::string output_file = outputs.add(options.output);
   const std::string report_file = options.report.empty() ? "" : outputs.add(options.report);
-  if (options.resolution >= 0 && options.vertices > 0)
-    throw ArgumentError("--resolution and --vertices both set the sphere's size: give one");
+  if ((options.resolution >= 0) + (options.vertices > 0) + (options.edge_length > 0) +
+          (options.max_error_percent > 0) >
+      1)
+    throw ArgumentError(
+        "--resolution, --vertices, --edge-length and --max-error each set the remesh's size: "
+        "give one");
 
   ParameterizeOptions settings;
   settings.area_correct = !options.no_area_correct;
@@ -72,6 +78,8 @@ int run_remesh(const RemeshCommandOptions &options) {
   RemeshOptions remesh_options;
   remesh_options.resolution = options.resolution;
   remesh_options.vertices = options.vertices;
+  remesh_options.edge_length = options.edge_length;
+  remesh_options.max_error = options.max_error_percent > 0 ? options.max_error_percent / 100 : -1;
   remesh_options.even_out = !options.uniform;
 
   Mesh mesh;
@@ -133,12 +141,23 @@ Command add_remesh_command(CLI::App &app) {
       ->add_option("--vertices", options->vertices,
                    "about this many vertices in the result (default: as many as the input)")
       ->check(CLI::Range(12LL, max_remesh_vertices));
+  remesh
+      ->add_option("--edge-length", options->edge_length,
+                   "about this edge length, in the input's units (the vertex count of equilateral "
+                   "triangles of that side tiling the surface)")
+      ->check(CLI::PositiveNumber);
+  remesh
+      ->add_option("--max-error", options->max_error_percent,
+                   "the remesh within this distance of the surface both ways (Hausdorff, in "
+                   "percent of the bounding-box diagonal), with as few vertices as the tries find")
+      ->check(CLI::Range(1e-6, 50.0));
   remesh->add_flag("--no-area-correct", options->no_area_correct,
                    "sample the map as centred, without the Moebius area correction (long parts "
                    "then get fewer samples)");
-  remesh->add_flag("--uniform", options->uniform,
-                   "keep the sphere's triangles as they lift, without splitting those that lift "
-                   "large (the result is then exactly semi-regular)");
+  remesh->add_flag("--semi-regular,--uniform", options->uniform,
+                   "keep the subdivided sphere's triangles as they lift, without splitting those "
+                   "over much of the surface (subdivision connectivity, for wavelets and "
+                   "multiresolution; long parts get few vertices)");
   remesh->add_flag("--repair", options->repair, "apply the safe repairs first (see info --help)");
   remesh->add_flag("--close-holes", options->close_holes,
                    "close every hole for the map only (the remesh keeps a hole there)");

@@ -1,10 +1,12 @@
 #include "remesh/surface_remesh.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
 
 #include <vcg/complex/algorithms/update/topology.h>
+#include <vcg/complex/append.h>
 
 #include "common/errors.h"
 #include "common/job_threads.h"
@@ -369,11 +371,8 @@ void even_out_part(const PartSurface &surface, const RemeshOptions &options, lon
   figures.target_vertices = even_target;
 }
 
-} // namespace
-
-void remesh_through_sphere(const Mesh &given, const Parameterization &map,
-                           const RemeshOptions &options, const Progress &progress,
-                           SurfaceRemesh &out) {
+void remesh_at_target(const Mesh &given, const Parameterization &map, const RemeshOptions &options,
+                      const Progress &progress, SurfaceRemesh &out) {
   if (options.resolution > 12)
     throw ArgumentError("the resolution is at most 12 (167 million sphere vertices)");
   if (options.vertices > max_remesh_vertices || (options.vertices >= 0 && options.vertices < 12))
@@ -432,6 +431,106 @@ void remesh_through_sphere(const Mesh &given, const Parameterization &map,
     out.sparse_regions = sparsely_sampled_regions(
         input, sample_shares(input, map.sphere, map.degree), options.sparse_below, 0.005);
   progress.report(1.0, "done");
+}
+
+double mesh_area(const Mesh &mesh) {
+  double total = 0;
+  for (const MeshFace &face : mesh.face)
+    total += vcg::DoubleArea(face) / 2;
+  return total;
+}
+
+// The fewest vertices found whose remesh lies within `options.max_error` of the surface both ways:
+// the chordal distance falls about as one over the vertex count, so each try's target is the last
+// one scaled by its distance over the bound (10% beyond it when short, and at most 8 times); the
+// smallest try that meets the bound is kept.
+void remesh_to_max_error(const Mesh &given, const Parameterization &map,
+                         const RemeshOptions &options, const Progress &progress,
+                         SurfaceRemesh &out) {
+  RemeshOptions attempt = options;
+  attempt.max_error = -1;
+  if (attempt.vertices <= 0)
+    attempt.vertices = std::max<long long>(12, (long long)given.vert.size());
+  double closest = 1e300;
+  long long closest_vertices = 0;
+  bool met = false;
+  for (int k = 0; k < options.max_error_tries; ++k) {
+    SurfaceRemesh remesh;
+    remesh_at_target(given, map, attempt,
+                     progress.range(double(k) / options.max_error_tries,
+                                    double(k + 1) / options.max_error_tries),
+                     remesh);
+    const double error =
+        std::max(remesh.quality.hausdorff_to_input, remesh.quality.hausdorff_from_input);
+    const long long held = (long long)remesh.mesh.vert.size();
+    if (error <= options.max_error && (!met || held < (long long)out.mesh.vert.size())) {
+      vcg::tri::Append<Mesh, Mesh>::MeshCopy(out.mesh, remesh.mesh);
+      out.layer = std::move(remesh.layer);
+      out.local_degree = std::move(remesh.local_degree);
+      out.part = std::move(remesh.part);
+      out.sphere = std::move(remesh.sphere);
+      out.parts = std::move(remesh.parts);
+      out.target_vertices = remesh.target_vertices;
+      out.unlifted_faces = remesh.unlifted_faces;
+      out.unclosed_faces = remesh.unclosed_faces;
+      out.folded_lifts = remesh.folded_lifts;
+      out.quality = remesh.quality;
+      out.sparse_regions = std::move(remesh.sparse_regions);
+      met = true;
+    }
+    if (!met && error < closest) {
+      closest = error;
+      closest_vertices = held;
+    }
+    // Within 15% under the bound: close enough to the fewest.
+    if (error <= options.max_error && error > 0.85 * options.max_error) break;
+    const double scale =
+        std::clamp(error / options.max_error * (error > options.max_error ? 1.1 : 1.0), 0.25, 8.0);
+    const long long next = std::clamp<long long>(std::llround(double(attempt.vertices) * scale), 12,
+                                                 max_remesh_vertices);
+    if (next == attempt.vertices) break;
+    attempt.vertices = next;
+  }
+  if (!met) {
+    std::ostringstream words;
+    words << "no remesh within " << 100 * options.max_error
+          << "% of the diagonal was found; the closest, with " << closest_vertices
+          << " vertices, is " << 100 * closest
+          << "% away (give a larger --max-error, or --vertices)";
+    throw InputError(words.str());
+  }
+}
+
+} // namespace
+
+void remesh_through_sphere(const Mesh &given, const Parameterization &map,
+                           const RemeshOptions &options, const Progress &progress,
+                           SurfaceRemesh &out) {
+  const int targets = (options.vertices > 0) + (options.resolution >= 0) +
+                      (options.edge_length > 0) + (options.max_error > 0);
+  if (targets > 1)
+    throw ArgumentError("give one of the resolution, the vertex count, the edge length and the "
+                        "largest error");
+  if (options.edge_length > 0 && !(options.edge_length < 1e300))
+    throw ArgumentError("the edge length must be a positive number");
+  if (options.max_error > 0) {
+    if (!(options.max_error < 1))
+      throw ArgumentError("the largest error is a fraction of the diagonal below 1");
+    remesh_to_max_error(given, map, options, progress, out);
+    return;
+  }
+  RemeshOptions at_target = options;
+  if (options.edge_length > 0) {
+    // Equilateral triangles of that side, two per vertex, tile the surface.
+    const double vertices =
+        mesh_area(given) / (std::sqrt(3.0) / 2 * options.edge_length * options.edge_length);
+    if (!(vertices <= double(max_remesh_vertices)))
+      throw ArgumentError("an edge length of " + std::to_string(options.edge_length) +
+                          " needs more than " + std::to_string(max_remesh_vertices) +
+                          " vertices on this surface");
+    at_target.vertices = std::max<long long>(12, std::llround(vertices));
+  }
+  remesh_at_target(given, map, at_target, progress, out);
 }
 
 } // namespace meromorph

@@ -20,7 +20,8 @@
 //      short of samples (sample_coverage.h: under a quarter of their fair share, 0.5% of the
 //      area or more; one part without non-manifold splits; only without evening out, which fills
 //      them). A hole closed for the map is a gap on the sphere: its faces do not lift, and the
-//      remesh has a hole there too.
+//      remesh has a hole there too. With an edge length or a largest error instead of a vertex
+//      target, the target follows from it (below).
 #pragma once
 
 #include <vector>
@@ -41,6 +42,12 @@ constexpr long long max_remesh_vertices = 2000000000LL;
 struct RemeshOptions {
   int resolution = -1;     // N >= 0: frequency 2^N; -1: from the vertex target
   long long vertices = -1; // the vertex target; -1: the input's vertex count
+  // Instead of a vertex target (> 0 when given): the edge length of equilateral triangles that
+  // tile the surface (the target is the count such triangles need), or the largest Hausdorff
+  // distance both ways over the bounding-box diagonal (the fewest vertices found to meet it:
+  // remeshed at targets scaled by how far each try lands, up to `max_error_tries`).
+  double edge_length = -1, max_error = -1;
+  int max_error_tries = 6;
   double sparse_below = 0.25;
   // Split lifted faces larger than the target (lifted_refinement.h); with a vertex target the
   // sphere's frequency is lowered so that the refined result holds about the target.
@@ -68,7 +75,7 @@ struct SurfaceRemesh {
 
 // `out` must be new (a vcglib mesh cannot be returned by value). Throws InputError when the lift of
 // a closed part does not close (faces whose edge lifts do not meet), naming the nearest two branch
-// values.
+// values, and when no try meets `max_error` (naming the closest).
 void remesh_through_sphere(const Mesh &input, const Parameterization &map,
                            const RemeshOptions &options, const Progress &progress,
                            SurfaceRemesh &out);
