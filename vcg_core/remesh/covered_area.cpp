@@ -51,6 +51,7 @@ public:
       const double bulge = norm > 0 ? 1.0 - std::abs(normal.dot(a)) / norm : 1.0;
       const Eigen::Vector3d low = a.cwiseMin(b).cwiseMin(c).array() - bulge,
                             high = a.cwiseMax(b).cwiseMax(c).array() + bulge;
+      if (!low.allFinite() || !high.allFinite()) continue; // a corner that did not lift
       const double size = std::max((high - low).maxCoeff(), 1e-300);
       const int level = std::clamp(int(std::floor(std::log2(1.0 / size))) + 1, 0, max_level);
       used_[size_t(level)] = true;
@@ -66,6 +67,7 @@ public:
   // The lifted face whose sphere triangle holds `image` (of several, the nearest to `position`); -1
   // where none does.
   int face_holding(const Eigen::Vector3d &image, const Eigen::Vector3d &position) const {
+    if (!image.allFinite()) return -1;
     int best = -1;
     double nearest = 0;
     for (int level = 0; level <= max_level; ++level) {

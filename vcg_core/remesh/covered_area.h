@@ -43,7 +43,10 @@ private:
   using Corners = std::array<int, 3>;
   struct CornersHash {
     size_t operator()(const Corners &c) const {
-      return std::hash<long long>()(((long long)c[0] * 0x9E3779B1LL + c[1]) * 0x85EBCA77LL + c[2]);
+      unsigned long long h = 0;
+      for (int corner : c)
+        h = h * 0x9E3779B97F4A7C15ULL + (unsigned long long)(unsigned)corner;
+      return size_t(h ^ (h >> 29));
     }
   };
   const SurfaceSamples *samples_;
