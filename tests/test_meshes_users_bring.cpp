@@ -136,6 +136,48 @@ TEST(MeshesUsersBring, DefectsAreLeftOutAndTheOutputsKeepThem) {
 
 // The torus written as a PLY of triangle strips (one per ring of quads, as stripifiers write
 // them): read as the same surface and mapped validly.
+// `remesh` with the defaults on the same defects (a seam of 12 duplicate vertices, a face written
+// twice and one written the other way round, a vertex on no face): the safe repairs come first,
+// so the written remesh is a closed torus (every side on two faces, Euler characteristic 0) and
+// the report lists the repairs.
+TEST(MeshesUsersBring, RemeshTakesSeamsAndDoubledFaces) {
+  test::TempDir dir;
+  Positions positions;
+  Triangles triangles;
+  grid_torus(24, 12, positions, triangles);
+  std::map<int, int> copy_of;
+  const size_t n = positions.size();
+  for (int j = 0; j < 12; ++j) {
+    copy_of[j] = int(positions.size());
+    positions.push_back(positions[size_t(j)]);
+  }
+  for (size_t f = 0; f < 2 * 12; ++f)
+    for (int &corner : triangles[f])
+      if (copy_of.count(corner)) corner = copy_of[corner];
+  positions.push_back({5, 5, 5});
+  triangles.push_back(triangles[100]);
+  triangles.push_back({triangles[7][0], triangles[7][2], triangles[7][1]});
+  const std::string input = dir.write("defects.off", test::off_text(positions, triangles));
+  const test::RunResult run = test::run_cli({"remesh", input, "-o", dir.path("remeshed.ply"),
+                                             "--report", dir.path("remeshed.json"), "--quiet"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const test::WrittenMesh remesh = test::read_written_mesh(dir.path("remeshed.ply"));
+  std::map<std::pair<int, int>, int> sides;
+  for (const auto &t : remesh.triangles)
+    for (int k = 0; k < 3; ++k)
+      ++sides[{std::min(t[k], t[(k + 1) % 3]), std::max(t[k], t[(k + 1) % 3])}];
+  for (const auto &[side, faces] : sides)
+    EXPECT_EQ(faces, 2) << side.first << "-" << side.second;
+  EXPECT_EQ(int(remesh.columns.at("x").size()) - int(sides.size()) + int(remesh.triangles.size()),
+            0);
+  EXPECT_NEAR(double(remesh.columns.at("x").size()), double(n), 0.15 * double(n));
+  std::ifstream stream(dir.path("remeshed.json"));
+  const nlohmann::json report = nlohmann::json::parse(stream);
+  const std::string repairs = report.at("repairs").dump();
+  for (const char *said : {"12 duplicate vertices", "2 doubled faces", "1 vertex"})
+    EXPECT_NE(repairs.find(said), std::string::npos) << said << " in " << repairs;
+}
+
 TEST(MeshesUsersBring, TriangleStripsAreRead) {
   test::TempDir dir;
   Positions positions;

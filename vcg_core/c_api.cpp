@@ -15,6 +15,7 @@
 #include "job/surface_map.h"
 #include "maps/parameterization.h"
 #include "mesh/mesh_from_arrays.h"
+#include "mesh/repair.h"
 #include "remesh/surface_remesh.h"
 #include "report/remesh_summary.h"
 #include "report/report_json.h"
@@ -281,6 +282,10 @@ std::unique_ptr<meromorph_remesh_result> remesh_result(meromorph::MeshArrays &ar
   using namespace meromorph;
   Mesh mesh;
   mesh_from_arrays(arrays, mesh);
+  // A new triangulation: the safe repairs first (mesh/repair.h), as `meromorph remesh` makes them
+  // (strict: none, and the defects are refused).
+  const std::vector<std::string> repairs =
+      settings.strict ? std::vector<std::string>{} : repair_mesh(mesh);
   ParameterizeOptions parameters = core_options(settings);
   parameters.area_correct = area_correct;
   parameters.set_aside_defects = false; // the remesh samples the input's own faces
@@ -309,6 +314,7 @@ std::unique_ptr<meromorph_remesh_result> remesh_result(meromorph::MeshArrays &ar
     out->sphere_xyz.insert(out->sphere_xyz.end(), {p.x(), p.y(), p.z()});
   nlohmann::json report = parameterization_json(map);
   report["remesh"] = remesh_json(remesh);
+  report["repairs"] = repairs;
   report["version"] = MEROMORPH_VERSION;
   out->report = json_text(report);
   out->summary = remesh_summary("the mesh", map, remesh);

@@ -83,7 +83,10 @@ int run_remesh(const RemeshCommandOptions &options) {
   remesh_options.even_out = !options.uniform;
 
   Mesh mesh;
-  const JobInput input = read_job_input(options.input, options.repair, mesh);
+  // The remesh is a new triangulation, so the safe repairs (seam duplicates welded, doubled
+  // faces and vertices on no face removed) always come first: nothing needs to attach to the
+  // input's vertices.
+  const JobInput input = read_job_input(options.input, true, mesh);
   TerminalProgress bar(options.quiet);
   const Parameterization map = naming_the_input(input.source, [&] {
     return parameterize_surface(mesh, settings, bar.progress().range(0.0, 0.6));
@@ -158,7 +161,9 @@ Command add_remesh_command(CLI::App &app) {
                    "keep the subdivided sphere's triangles as they lift, without splitting those "
                    "over much of the surface (subdivision connectivity, for wavelets and "
                    "multiresolution; long parts get few vertices)");
-  remesh->add_flag("--repair", options->repair, "apply the safe repairs first (see info --help)");
+  remesh->add_flag("--repair", options->repair,
+                   "the safe repairs (see info --help): always made before a remesh; accepted "
+                   "for scripts that give it");
   remesh->add_flag("--close-holes", options->close_holes,
                    "close every hole for the map only (the remesh keeps a hole there)");
   remesh->add_flag("--split-nonmanifold", options->split_nonmanifold,

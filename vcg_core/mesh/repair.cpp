@@ -62,6 +62,9 @@ std::vector<std::string> repair_mesh(Mesh &mesh) {
                       " along the edges of holes into the vertex at the same position");
   if (int removed = Clean::RemoveDegenerateFace(mesh))
     repairs.push_back("removed " + count(removed, "face", "faces") + " that used a vertex twice");
+  if (int removed = Clean::RemoveDuplicateFace(mesh))
+    repairs.push_back("removed " + count(removed, "doubled face", "doubled faces") +
+                      " (on the same three vertices as another)");
   if (int removed = Clean::RemoveUnreferencedVertex(mesh))
     repairs.push_back("removed " + count(removed, "vertex", "vertices") +
                       " that belonged to no face");
