@@ -137,6 +137,9 @@ double surface_area(const MappedSurface &surface) {
   return total;
 }
 
+// Rounds of splitting: a face over a long limb's image (1e-8 of the sphere and less) is quartered
+// each round until the surface under it fits the target: 24 rounds on the
+// four-tentacle blob at 4,660 vertices, 5 on kitten.nf20k, where nothing is left to split sooner.
 constexpr int refinement_rounds = 40;
 constexpr double largest_face = 1.8; // times the target face area
 
