@@ -18,6 +18,7 @@ packages=(
   libgfortran-12-dev
   libcli11-dev nlohmann-json3-dev
   dpkg-dev
+  python3-dev python3-numpy python3-pybind11
 )
 if [ "$what" = all ]; then
   packages+=(
@@ -25,6 +26,7 @@ if [ "$what" = all ]; then
     qtbase5-dev libqt5opengl5-dev libglew-dev
     meshlab xvfb xauth
     blender python3-numpy
+    python3-dev python3-pybind11 python3-pytest python3-distributed
     clang-format clang libclang-rt-14-dev
   )
 fi

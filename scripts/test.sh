@@ -5,7 +5,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 bash "$here/scripts/build.sh" -DMEROMORPH_BUILD_TESTS=ON -DMEROMORPH_BUILD_MESHLAB_PLUGIN=ON \
-  -DMEROMORPH_BUILD_BLENDER_ADDON=ON
+  -DMEROMORPH_BUILD_BLENDER_ADDON=ON -DMEROMORPH_BUILD_PYTHON=ON
 cd "$here/build"
 log="$here/build/ctest.log"
 status=0

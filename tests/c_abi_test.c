@@ -592,6 +592,59 @@ int main(void) {
     free(source);
   }
 
+  { /* forms, writing a map's files and reading them back */
+    meromorph_forms_result *forms = NULL;
+    meromorph_mesh *mesh = NULL;
+    const char *protect[1] = {"c_abi_written.ply"};
+    double *xyz;
+    int32_t *written;
+    size_t k;
+    make_torus();
+    CHECK(meromorph_forms_d(positions, V, triangles, F, NULL, &forms) == MEROMORPH_OK);
+    CHECK(meromorph_forms_genus(forms) == 1 && meromorph_forms_genus(NULL) == -1);
+    CHECK(strstr(meromorph_forms_report_json(forms), "\"modulus\"") != NULL);
+    meromorph_forms_free(forms);
+    CHECK(meromorph_forms_d(positions, V, triangles, F - 1, NULL, &forms) == MEROMORPH_ERROR_INPUT);
+    CHECK(forms == NULL && strlen(meromorph_last_error()) > 0);
+
+    meromorph_default_options(&options);
+    CHECK(meromorph_parameterize_d(positions, V, triangles, F, &options, &result) == MEROMORPH_OK);
+    remove("c_abi_written.ply");
+    CHECK(meromorph_write_map(result, "c_abi_written.ply", "c_abi_sphere.ply", "c_abi_report.json",
+                              NULL, 0) == MEROMORPH_OK);
+    CHECK(meromorph_write_map(result, "c_abi_written.ply", NULL, NULL, protect, 1) ==
+          MEROMORPH_ERROR_ARGUMENT);
+    CHECK(meromorph_write_map(result, "c_abi_written.stl", NULL, NULL, NULL, 0) ==
+          MEROMORPH_ERROR_ARGUMENT);
+    CHECK(meromorph_write_map(result, NULL, NULL, NULL, NULL, 0) == MEROMORPH_ERROR_ARGUMENT);
+    CHECK(meromorph_write_map(result, "no_such_folder/x.ply", NULL, NULL, NULL, 0) ==
+          MEROMORPH_ERROR_OUTPUT);
+    CHECK(meromorph_read_mesh("c_abi_written.ply", &mesh) == MEROMORPH_OK);
+    CHECK(meromorph_mesh_vertex_count(mesh) == V && meromorph_mesh_triangle_count(mesh) == F);
+    xyz = malloc(sizeof(double) * 3 * V);
+    written = malloc(sizeof(int32_t) * 3 * F);
+    CHECK(meromorph_mesh_arrays(mesh, xyz, written) == MEROMORPH_OK);
+    for (k = 0; k < 3 * (size_t)F; ++k)
+      if (written[k] != triangles[k]) break;
+    CHECK(k == 3 * (size_t)F);
+    for (k = 0; k < 3 * (size_t)V; ++k)
+      if (fabs(xyz[k] - positions[k]) > 1e-6) break;
+    CHECK(k == 3 * (size_t)V);
+    meromorph_mesh_free(mesh);
+    mesh = NULL;
+    CHECK(meromorph_read_mesh("c_abi_sphere.ply", &mesh) == MEROMORPH_OK);
+    CHECK(meromorph_mesh_vertex_count(mesh) == V);
+    meromorph_mesh_free(mesh);
+    mesh = NULL;
+    CHECK(meromorph_read_mesh("no_such_file.ply", &mesh) == MEROMORPH_ERROR_ARGUMENT);
+    CHECK(mesh == NULL && strstr(meromorph_last_error(), "no_such_file.ply") != NULL);
+    CHECK(meromorph_mesh_vertex_count(NULL) == 0 && meromorph_mesh_notes(NULL)[0] == '\0');
+    meromorph_result_free(result);
+    result = NULL;
+    free(xyz);
+    free(written);
+  }
+
   printf("%d passed, 0 failed\n", passed);
   return 0;
 }

@@ -12,6 +12,10 @@
 #include <vector>
 
 #include "common/errors.h"
+#include "forms/holomorphic_pipeline.h"
+#include "io/mesh_reader.h"
+#include "io/staged_outputs.h"
+#include "job/map_files.h"
 #include "job/surface_map.h"
 #include "maps/parameterization.h"
 #include "mesh/mesh_from_arrays.h"
@@ -28,6 +32,17 @@ struct meromorph_result {
   // The written surface's triangles (the input's, or with vertices added the cut ones), which
   // are the sphere's too when nothing was split.
   std::vector<std::array<int, 3>> surface_triangles;
+  meromorph::MeshArrays input; // the caller's mesh, for meromorph_write_map
+};
+
+struct meromorph_mesh {
+  meromorph::MeshArrays arrays;
+  std::string notes;
+};
+
+struct meromorph_forms_result {
+  int genus = -1;
+  std::string report;
 };
 
 struct meromorph_remesh_result {
@@ -202,6 +217,7 @@ std::unique_ptr<meromorph_result> map_result(meromorph::MeshArrays &arrays,
     causes.push_back(advice.cause);
   out->advice = join_phrases(causes);
   out->vertices = arrays.positions.size() + out->map.added_vertices.size();
+  out->input = arrays;
   if (!out->map.surface_faces.empty()) arrays.triangles = out->map.surface_faces;
   out->triangles = arrays.triangles.size();
   out->surface_triangles = std::move(arrays.triangles);
@@ -220,6 +236,8 @@ template <typename Job> meromorph_status guarded(Job &&job) {
     return fail(MEROMORPH_ERROR_ARGUMENT, error.what(), error.remedies());
   } catch (const InputError &error) {
     return fail(MEROMORPH_ERROR_INPUT, error.what(), error.remedies());
+  } catch (const WriteError &error) {
+    return fail(MEROMORPH_ERROR_OUTPUT, error.what());
   } catch (const std::bad_alloc &) {
     return fail(MEROMORPH_ERROR_INTERNAL, "out of memory");
   } catch (const std::exception &error) {
@@ -339,6 +357,59 @@ meromorph_status remesh(const Scalar *positions, size_t vertex_count, const int3
                               ", or 0 for the input's vertex count");
                         return remesh_result(arrays, settings, target_vertices, area_correct == 1);
                       });
+}
+
+// The forms of `arrays` with their report; throws what the core throws.
+std::unique_ptr<meromorph_forms_result> forms_result(meromorph::MeshArrays &arrays,
+                                                     const meromorph_options &settings) {
+  using namespace meromorph;
+  Mesh mesh;
+  mesh_from_arrays(arrays, mesh);
+  const HolomorphicForms forms =
+      compute_holomorphic_forms(mesh, SolverKind::cholmod, core_progress(settings));
+  auto out = std::make_unique<meromorph_forms_result>();
+  out->genus = forms.genus;
+  nlohmann::json report = holomorphic_forms_json(forms, SolverKind::cholmod);
+  report["version"] = MEROMORPH_VERSION;
+  out->report = json_text(report);
+  return out;
+}
+
+// The written surface of `result`: its input with the vertices the map added.
+void write_map_files(const meromorph_result &result, const char *surface_path,
+                     const char *sphere_path, const char *report_path,
+                     const char *const *protected_paths, size_t protected_count) {
+  using namespace meromorph;
+  std::vector<std::string> inputs;
+  for (size_t k = 0; k < protected_count; ++k)
+    if (protected_paths[k]) inputs.emplace_back(protected_paths[k]);
+  StagedOutputs outputs(inputs);
+  MeshFormat surface_format = MeshFormat::ply;
+  std::string surface_file, sphere_file, report_file;
+  if (surface_path) {
+    surface_format = output_format(surface_path);
+    if (surface_format == MeshFormat::stl)
+      throw ArgumentError(std::string(surface_path) +
+                          ": an STL file cannot hold texture coordinates, which are the map: "
+                          "write .ply, .obj or .off");
+    surface_file = outputs.add(surface_path);
+  }
+  if (sphere_path) {
+    if (output_format(sphere_path) != MeshFormat::ply)
+      throw ArgumentError(std::string(sphere_path) +
+                          ": the layered sphere is written as PLY (.ply)");
+    sphere_file = outputs.add(sphere_path);
+  }
+  if (report_path) report_file = outputs.add(report_path);
+  Mesh mesh;
+  mesh_from_arrays(result.input, mesh);
+  add_written_vertices(result.map, mesh);
+  outputs.writing([&] {
+    if (surface_path) write_surface(mesh, result.map, surface_format, surface_file);
+    if (sphere_path) write_layered_sphere(mesh, result.map, sphere_file);
+    if (report_path) write_text_file(report_file, result.report + "\n");
+    outputs.commit();
+  });
 }
 
 } // namespace
@@ -645,6 +716,87 @@ const char *meromorph_remesh_report_json(const meromorph_remesh_result *r) {
 
 const char *meromorph_remesh_summary(const meromorph_remesh_result *r) {
   return r ? r->summary.c_str() : "";
+}
+
+meromorph_status meromorph_write_map(const meromorph_result *r, const char *surface_path,
+                                     const char *sphere_path, const char *report_path,
+                                     const char *const *protected_paths, size_t protected_count) {
+  last_error.clear();
+  last_remedies.clear();
+  if (!r) return fail(MEROMORPH_ERROR_ARGUMENT, "result pointer is NULL");
+  if (!surface_path && !sphere_path && !report_path)
+    return fail(MEROMORPH_ERROR_ARGUMENT,
+                "no file to write: give a surface, sphere or report path");
+  if (!protected_paths && protected_count)
+    return fail(MEROMORPH_ERROR_ARGUMENT, "protected_paths pointer is NULL");
+  return guarded([&] {
+    write_map_files(*r, surface_path, sphere_path, report_path, protected_paths, protected_count);
+  });
+}
+
+meromorph_status meromorph_read_mesh(const char *path, meromorph_mesh **mesh) {
+  last_error.clear();
+  last_remedies.clear();
+  if (!mesh) return fail(MEROMORPH_ERROR_ARGUMENT, "mesh pointer is NULL");
+  *mesh = nullptr;
+  if (!path) return fail(MEROMORPH_ERROR_ARGUMENT, "path is NULL");
+  return guarded([&] {
+    meromorph::Mesh read;
+    const meromorph::MeshSource source = meromorph::read_mesh(path, read);
+    auto out = std::make_unique<meromorph_mesh>();
+    out->arrays = meromorph::arrays_from_mesh(read);
+    out->notes = meromorph::join_phrases(source.notes);
+    *mesh = out.release();
+  });
+}
+
+void meromorph_mesh_free(meromorph_mesh *mesh) {
+  delete mesh;
+}
+
+size_t meromorph_mesh_vertex_count(const meromorph_mesh *mesh) {
+  return mesh ? mesh->arrays.positions.size() : 0;
+}
+
+size_t meromorph_mesh_triangle_count(const meromorph_mesh *mesh) {
+  return mesh ? mesh->arrays.triangles.size() : 0;
+}
+
+meromorph_status meromorph_mesh_arrays(const meromorph_mesh *mesh, double *xyz,
+                                       int32_t *triangles) {
+  if (!mesh) return fail(MEROMORPH_ERROR_ARGUMENT, "mesh pointer is NULL");
+  if (xyz)
+    for (const meromorph::Point3 &p : mesh->arrays.positions)
+      for (int axis = 0; axis < 3; ++axis)
+        *xyz++ = double(p[axis]);
+  if (triangles)
+    for (const auto &triangle : mesh->arrays.triangles)
+      triangles = std::copy(triangle.begin(), triangle.end(), triangles);
+  return MEROMORPH_OK;
+}
+
+const char *meromorph_mesh_notes(const meromorph_mesh *mesh) {
+  return mesh ? mesh->notes.c_str() : "";
+}
+
+meromorph_status meromorph_forms_d(const double *positions, size_t vertex_count,
+                                   const int32_t *triangles, size_t triangle_count,
+                                   const meromorph_options *options,
+                                   meromorph_forms_result **result) {
+  return checked_call(positions, vertex_count, triangles, triangle_count, options, result,
+                      forms_result);
+}
+
+void meromorph_forms_free(meromorph_forms_result *result) {
+  delete result;
+}
+
+int meromorph_forms_genus(const meromorph_forms_result *result) {
+  return result ? result->genus : -1;
+}
+
+const char *meromorph_forms_report_json(const meromorph_forms_result *result) {
+  return result ? result->report.c_str() : "";
 }
 
 } // extern "C"

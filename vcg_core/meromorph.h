@@ -44,10 +44,11 @@ extern "C" {
 
 typedef enum meromorph_status {
   MEROMORPH_OK = 0,
-  MEROMORPH_ERROR_INTERNAL = 1, /* a bug: please report it with the input */
-  MEROMORPH_ERROR_ARGUMENT = 2, /* a null pointer, a bad option, a buffer of the wrong kind */
-  MEROMORPH_ERROR_INPUT = 3,    /* the mesh cannot be parameterized: open, non-manifold, ... */
-  MEROMORPH_ERROR_CANCELLED = 4 /* the progress callback asked to stop */
+  MEROMORPH_ERROR_INTERNAL = 1,  /* a bug: please report it with the input */
+  MEROMORPH_ERROR_ARGUMENT = 2,  /* a null pointer, a bad option, a buffer of the wrong kind */
+  MEROMORPH_ERROR_INPUT = 3,     /* the mesh cannot be parameterized: open, non-manifold, ... */
+  MEROMORPH_ERROR_CANCELLED = 4, /* the progress callback asked to stop */
+  MEROMORPH_ERROR_OUTPUT = 5     /* a file could not be written (meromorph_write_map) */
 } meromorph_status;
 
 /* Remedies: what the user can do about a refusal (meromorph_last_error_remedies) or an invalid
@@ -345,6 +346,57 @@ MEROMORPH_API meromorph_status meromorph_remesh_mesh(const meromorph_remesh_resu
 MEROMORPH_API const char *meromorph_remesh_report_json(const meromorph_remesh_result *result);
 /* One line of the quality figures in words, as the CLI prints them; NULL result: "". */
 MEROMORPH_API const char *meromorph_remesh_summary(const meromorph_remesh_result *result);
+
+/* Writing a map's files (a later addition to ABI version 5), as `meromorph param` writes them: the
+   surface with per-vertex and per-corner texture coordinates and each vertex's layer as quality
+   (.ply, .obj or .off; the surface as written, see meromorph_vertex_count), the layered sphere
+   (.ply, with per-vertex layer, branch, source_vertex and component) and the JSON report. Inputs:
+   result; surface_path, sphere_path, report_path: where to write (any may be NULL: not written; at
+   least one given); protected_paths: protected_count paths that must not be written over (the
+   caller's inputs; may be NULL when the count is 0). Outputs: the files, all or none: each is
+   written beside its target under a temporary name and moved into place when all are complete.
+   Returns: MEROMORPH_OK; MEROMORPH_ERROR_ARGUMENT for a NULL result, no path, an output that is a
+            protected path or another output, an unsupported extension; MEROMORPH_ERROR_OUTPUT
+            when a file cannot be written (meromorph_last_error gives the system's reason). */
+MEROMORPH_API meromorph_status meromorph_write_map(const meromorph_result *result,
+                                                   const char *surface_path,
+                                                   const char *sphere_path, const char *report_path,
+                                                   const char *const *protected_paths,
+                                                   size_t protected_count);
+
+/* Reading a mesh file (a later addition to ABI version 5), as the command-line tool reads it: PLY,
+   OBJ, OFF or STL, polygons triangulated; nothing is validated or repaired. Inputs:  path  the file
+   (its extension says the format) Outputs: *mesh: the mesh read, owned by the caller
+   (meromorph_mesh_free); NULL on failure. Returns: MEROMORPH_OK; MEROMORPH_ERROR_ARGUMENT for a
+   NULL pointer, a missing file or an unsupported extension; MEROMORPH_ERROR_INPUT for a broken file
+   (the message names the line or element). */
+typedef struct meromorph_mesh meromorph_mesh;
+MEROMORPH_API meromorph_status meromorph_read_mesh(const char *path, meromorph_mesh **mesh);
+MEROMORPH_API void meromorph_mesh_free(meromorph_mesh *mesh); /* NULL is allowed */
+/* Counts (NULL mesh: 0), and the arrays copied into the caller's buffers (either may be NULL):
+   xyz 3n doubles, triangles 3t int32 (0-based, in file order). */
+MEROMORPH_API size_t meromorph_mesh_vertex_count(const meromorph_mesh *mesh);
+MEROMORPH_API size_t meromorph_mesh_triangle_count(const meromorph_mesh *mesh);
+MEROMORPH_API meromorph_status meromorph_mesh_arrays(const meromorph_mesh *mesh, double *xyz,
+                                                     int32_t *triangles);
+/* What the reader noted (polygons triangulated, ...), joined by "; " ("" when nothing). */
+MEROMORPH_API const char *meromorph_mesh_notes(const meromorph_mesh *mesh);
+
+/* The holomorphic 1-forms of a closed, connected, oriented surface (a later addition to ABI version
+   5), as `meromorph forms`: the periods, the modulus (genus 1) or the Riemann matrix (genus >= 2)
+   and the canonical homology basis it is taken in, residuals and timings, as JSON. Inputs: as
+   meromorph_parameterize_d (only options.progress and progress_user are read). Outputs: *result,
+   owned by the caller (meromorph_forms_free); NULL on failure. Returns: as meromorph_parameterize_d
+   (MEROMORPH_ERROR_INPUT for an open, non-manifold or disconnected mesh, naming where). */
+typedef struct meromorph_forms_result meromorph_forms_result;
+MEROMORPH_API meromorph_status meromorph_forms_d(const double *positions, size_t vertex_count,
+                                                 const int32_t *triangles, size_t triangle_count,
+                                                 const meromorph_options *options,
+                                                 meromorph_forms_result **result);
+MEROMORPH_API void meromorph_forms_free(meromorph_forms_result *result);       /* NULL is allowed */
+MEROMORPH_API int meromorph_forms_genus(const meromorph_forms_result *result); /* NULL: -1 */
+/* The JSON report, as `meromorph forms --report` writes it; NULL result: "". */
+MEROMORPH_API const char *meromorph_forms_report_json(const meromorph_forms_result *result);
 
 #ifdef __cplusplus
 }

@@ -39,29 +39,11 @@ int run_forms(const FormsOptions &options) {
       input.source, [&] { return compute_holomorphic_forms(mesh, solver, bar.progress()); });
   bar.finish();
 
-  nlohmann::json timings = {{"read", input.read_ms}};
-  for (const auto &[stage, ms] : forms.timings_ms)
-    timings[stage] = ms;
-  nlohmann::json report = {
-      {"input", source_json(input.source)},
-      {"repairs", input.repairs},
-      {"genus", forms.genus},
-      {"euler", 2 - 2 * forms.genus},
-      {"solver", solver_name(solver)},
-      {"loop_periods", complex_matrix_json(forms.loop_periods)},
-      {"a_periods", complex_matrix_json(forms.a_periods)},
-      {"b_periods", complex_matrix_json(forms.b_periods)},
-      {"residuals",
-       {{"closedness", forms.closedness_residual},
-        {"coclosedness", forms.coclosedness_residual},
-        {"conjugate_fit", forms.conjugate_residual},
-        {"intersection_rounding", forms.wedge_rounding}}},
-      {"non_holomorphicity",
-       {{"mean", forms.non_holomorphicity_mean}, {"max", forms.non_holomorphicity_max}}},
-      {"timings_ms", timings},
-      {"version", MEROMORPH_VERSION}};
-  if (forms.modulus) report["modulus"] = {forms.modulus->real(), forms.modulus->imag()};
-  if (forms.genus >= 2) report["riemann_matrix"] = complex_matrix_json(forms.riemann_matrix);
+  nlohmann::json report = holomorphic_forms_json(forms, solver);
+  report["input"] = source_json(input.source);
+  report["repairs"] = input.repairs;
+  report["timings_ms"]["read"] = input.read_ms;
+  report["version"] = MEROMORPH_VERSION;
 
   if (!options.report.empty())
     outputs.writing([&] {

@@ -5,7 +5,6 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <numeric>
 #include <sstream>
 
 #include "cli/exit_codes.h"
@@ -15,11 +14,13 @@
 #include "io/mesh_reader.h"
 #include "io/mesh_writer.h"
 #include "io/staged_outputs.h"
+#include "job/map_files.h"
 #include "job/surface_map.h"
 #include "job_input.h"
 #include "maps/parameterization.h"
 #include "mesh/mesh_from_arrays.h"
 #include "mesh/repair.h"
+#include "own_peak_memory.h"
 #include "report/report_json.h"
 #include "terminal_progress.h"
 
@@ -60,46 +61,6 @@ ParameterizeOptions settings_from(const ParamOptions &options) {
   }
 
   return settings;
-}
-
-// OUT: the surface with per-vertex and per-wedge texture coordinates, and the layer as MeshLab's
-// per-vertex quality.
-void write_surface(Mesh &mesh, const Parameterization &map, MeshFormat format,
-                   const std::string &file) {
-  for (size_t v = 0; v < mesh.vert.size(); ++v) {
-    mesh.vert[v].T().U() = map.uv.vertex[v][0];
-    mesh.vert[v].T().V() = map.uv.vertex[v][1];
-    mesh.vert[v].Q() = map.sheets.vertex_layer[v]; // the layer, as MeshLab's quality
-  }
-  if (!mesh.face.IsWedgeTexCoordEnabled()) mesh.face.EnableWedgeTexCoord(); // mesh.h
-  for (size_t f = 0; f < mesh.face.size(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      mesh.face[f].WT(k).U() = map.uv.wedge[f][k][0];
-      mesh.face[f].WT(k).V() = map.uv.wedge[f][k][1];
-      mesh.face[f].WT(k).N() = 0;
-    }
-  WriteOptions surface;
-  surface.vertex_texcoords = surface.wedge_texcoords = surface.vertex_quality = true;
-  save_mesh(mesh, format, file, surface);
-}
-
-// The layered sphere (PLY) with per-vertex layer, branch, source_vertex and component.
-void write_layered_sphere(const Mesh &mesh, const Parameterization &map, const std::string &file) {
-  Mesh layered;
-  layered_sphere_mesh(mesh, map, layered);
-  WriteOptions sphere;
-  std::vector<int> component = map.vertex_component;
-  component.resize(layered.vert.size(), 0);
-  std::vector<int> source_vertex = map.sphere_source_vertex;
-  if (source_vertex.empty()) {
-    source_vertex.resize(layered.vert.size());
-    std::iota(source_vertex.begin(), source_vertex.end(), 0);
-  }
-  sphere.vertex_properties = {{"layer", map.sheets.vertex_layer, false},
-                              {"branch", map.branch_flag, true},
-                              {"source_vertex", source_vertex, false},
-                              {"component", component, false}};
-  save_mesh(layered, MeshFormat::ply, file, sphere);
 }
 
 // The one-line summary.
@@ -196,6 +157,7 @@ int run_param(const ParamOptions &options) {
   report["repairs"] = input.repairs;
   report["timings_ms"]["read"] = input.read_ms;
   report["version"] = MEROMORPH_VERSION;
+  report["peak_memory_mb"] = own_peak_memory_mb(); // (until here: the writing comes after)
   add_written_vertices(map, mesh);
   outputs.writing([&] {
     write_surface(mesh, map, surface_format, output_file);

@@ -182,6 +182,8 @@ nlohmann::json parameterization_json(const Parameterization &map) {
       {"genus", map.genus},
       {"euler", map.euler},
       {"degree", map.degree},
+      {"vertices", map.uv.vertex.size()}, // the surface as written
+      {"faces", map.uv.wedge.size()},
       {"image_area_over_4pi", map.area_over_4pi},
       {"method", map.method},
       {"branch_points", branch_points_json(map)},
@@ -259,6 +261,38 @@ nlohmann::json parameterization_json(const Parameterization &map) {
 
 std::string json_text(const nlohmann::json &report) {
   return report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+nlohmann::json holomorphic_forms_json(const HolomorphicForms &forms, SolverKind solver) {
+  nlohmann::json timings = nlohmann::json::object();
+  for (const auto &[stage, ms] : forms.timings_ms)
+    timings[stage] = ms;
+  nlohmann::json symplectic = nlohmann::json::array();
+  for (Eigen::Index row = 0; row < forms.symplectic.rows(); ++row) {
+    nlohmann::json cells = nlohmann::json::array();
+    for (Eigen::Index column = 0; column < forms.symplectic.cols(); ++column)
+      cells.push_back(forms.symplectic(row, column));
+    symplectic.push_back(cells);
+  }
+  nlohmann::json report = {
+      {"genus", forms.genus},
+      {"euler", 2 - 2 * forms.genus},
+      {"solver", solver_name(solver)},
+      {"loop_periods", complex_matrix_json(forms.loop_periods)},
+      {"a_periods", complex_matrix_json(forms.a_periods)},
+      {"b_periods", complex_matrix_json(forms.b_periods)},
+      {"symplectic_basis", symplectic},
+      {"residuals",
+       {{"closedness", forms.closedness_residual},
+        {"coclosedness", forms.coclosedness_residual},
+        {"conjugate_fit", forms.conjugate_residual},
+        {"intersection_rounding", forms.wedge_rounding}}},
+      {"non_holomorphicity",
+       {{"mean", forms.non_holomorphicity_mean}, {"max", forms.non_holomorphicity_max}}},
+      {"timings_ms", timings}};
+  if (forms.modulus) report["modulus"] = {forms.modulus->real(), forms.modulus->imag()};
+  if (forms.genus >= 2) report["riemann_matrix"] = complex_matrix_json(forms.riemann_matrix);
+  return report;
 }
 
 } // namespace meromorph

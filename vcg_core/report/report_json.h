@@ -1,6 +1,7 @@
 // JSON views of the core's results, shared by the CLI reports and the C ABI.
 //
-// In:  a Topology, a Validation, a MeshSource, a Parameterization, a SurfaceRemesh.
+// In:  a Topology, a Validation, a MeshSource, a Parameterization, a SurfaceRemesh,
+//      HolomorphicForms.
 // Out: nlohmann::json objects with the field names documented in the README (`info --json`), and
 //      their text.
 #pragma once
@@ -10,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "forms/holomorphic_pipeline.h"
 #include "io/mesh_reader.h"
 #include "maps/parameterization.h"
 #include "mesh/topology.h"
@@ -30,6 +32,11 @@ nlohmann::json parameterization_json(const Parameterization &map);
 // The `remesh` part of the REPORT.json of `meromorph remesh`, and the area correction's figures.
 nlohmann::json remesh_json(const SurfaceRemesh &remesh);
 nlohmann::json area_correction_json(const AreaCorrection &correction);
+
+// The report of `meromorph forms` without input, repairs, read time and version: genus, periods,
+// the modulus (genus 1) or the Riemann matrix (genus >= 2) with the canonical (symplectic) basis
+// of homology it is taken in, residuals and timings.
+nlohmann::json holomorphic_forms_json(const HolomorphicForms &forms, SolverKind solver);
 
 // The text of a report, indented by 2. Bytes that are not UTF-8 (a file name, or file content
 // quoted in a message) are replaced by U+FFFD rather than failing.
