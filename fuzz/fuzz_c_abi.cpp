@@ -4,6 +4,7 @@
 // status, never crash, and a successful result must answer every getter. Built a second time
 // with MEROMORPH_FUZZ_REMESH (fuzz_c_abi_remesh): meromorph_remesh_d with a vertex target and
 // area correction from the bytes too (any int64, any int), its result answering every getter.
+// Both variants then compute the forms of the same arrays (meromorph_forms_d).
 #include <cstdint>
 #include <cstring>
 #include <vector>
@@ -52,6 +53,18 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   // vertices is legitimate work, too slow for a fuzz run; the bounds are still tried.
   if (target > 4096 && target <= 2000000000) target = 4096;
   const int area_correct = (flags & 2) ? take<int32_t>(data, size) : 1;
+  // The size by an edge length or a largest distance instead, from a last byte: any double, but
+  // accepted ones that would ask for more than a few thousand vertices on the lattice's meshes
+  // (edges below 0.5, distances below 1%) are raised to that, as the target is capped above.
+  const uint8_t sizing = take<uint8_t>(data, size);
+  if (sizing == 1 && !(flags & 64)) {
+    const double length = take<double>(data, size);
+    options.remesh_edge_length = (length > 0 && length < 0.5) ? 0.5 : length;
+  }
+  if (sizing == 2) {
+    const double error = take<double>(data, size);
+    options.remesh_max_error = (error > 0 && error < 0.01) ? 0.01 : error;
+  }
   meromorph_remesh_result *remesh = nullptr;
   const meromorph_status remeshed =
       meromorph_remesh_d(positions.data(), vertex_count, triangles.data(), triangle_count, &options,
@@ -110,5 +123,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     __builtin_trap(); // a failure must leave no result and say why
   }
   meromorph_result_free(result);
+  // The forms of the same arrays: a status, never a crash; a result answers its getters.
+  meromorph_forms_result *forms = nullptr;
+  if (meromorph_forms_d(positions.data(), vertex_count, triangles.data(), triangle_count, nullptr,
+                        &forms) == MEROMORPH_OK) {
+    if (meromorph_forms_genus(forms) < 0) __builtin_trap();
+    (void)std::strlen(meromorph_forms_report_json(forms));
+  } else if (forms != nullptr || std::strlen(meromorph_last_error()) == 0) {
+    __builtin_trap();
+  }
+  meromorph_forms_free(forms);
   return 0;
 }

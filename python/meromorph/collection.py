@@ -38,6 +38,7 @@ import sys
 import tempfile
 import threading
 import time
+import uuid
 from pathlib import Path
 from typing import Iterable, List, Optional, Sequence, Tuple
 
@@ -106,42 +107,53 @@ def _write_atomically(path: Path, text: str) -> None:
         raise
 
 
+def _resident_mb(pid: int) -> float:
+    try:
+        with open(f"/proc/{pid}/status") as status:
+            for line in status:
+                if line.startswith("VmRSS:"):
+                    return int(line.split()[1]) / 1024
+    except (OSError, ValueError, IndexError):
+        pass
+    return 0.0
+
+
 def _run_tool(command: List[str], time_limit: Optional[float],
-              memory_limit: Optional[float]) -> Tuple[Optional[int], str, float]:
-    """Runs the tool in a process of its own: (exit code, or None when stopped at the time limit;
-    its standard error; seconds)."""
-    if memory_limit:  # the child's data segment limit (util-linux prlimit execs the tool)
-        command = ["prlimit", f"--data={int(memory_limit * 2**20)}", "--", *command]
+              memory_limit: Optional[float]) -> Tuple[Optional[str], int, str, float]:
+    """Runs the tool in a process of its own, watched every 50 ms: (the limit it was stopped at,
+    "time" or "memory", else None; its exit code; its standard error; seconds). The memory watched
+    is the tool's resident memory (a limit on its address space or data would stop it in
+    OpenBLAS's start, which reserves buffers it never touches)."""
     environment = dict(os.environ, OMP_NUM_THREADS=os.environ.get("OMP_NUM_THREADS", "1"))
-    lock = threading.Lock()
-    state = {"reaped": False, "stopped": False}
+    stopped = []
     with tempfile.TemporaryFile() as errors:
         start = time.perf_counter()
         child = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=errors,
                                  env=environment)
+        finished = threading.Event()
 
-        def stop():
-            with lock:
-                if not state["reaped"]:
-                    state["stopped"] = True
-                    child.kill()
+        def watch():
+            while not finished.wait(0.05):
+                if time_limit and time.perf_counter() - start > time_limit:
+                    stopped.append("time")
+                elif memory_limit and _resident_mb(child.pid) > memory_limit:
+                    stopped.append("memory")
+                else:
+                    continue
+                child.kill()  # (not yet waited for: the pid is still the child's)
+                return
 
-        timer = threading.Timer(time_limit, stop) if time_limit else None
-        if timer:
-            timer.start()
+        watcher = threading.Thread(target=watch, daemon=True)
+        watcher.start()
         try:
-            _pid, wait_status = os.waitpid(child.pid, 0)
+            code = child.wait()
         finally:
-            with lock:
-                state["reaped"] = True
-            if timer:
-                timer.cancel()
+            finished.set()
+            watcher.join()
         seconds = time.perf_counter() - start
-        child.returncode = os.waitstatus_to_exitcode(wait_status)
         errors.seek(0)
         message = errors.read().decode("utf-8", "replace").strip()
-    code = None if state["stopped"] else child.returncode
-    return code, message, seconds
+    return (stopped[0] if stopped else None), code, message, seconds
 
 
 def _descriptor(genus: int, report: dict, uv_file: Path, sphere_file: Path) -> dict:
@@ -169,18 +181,18 @@ def map_one(path: str, name: str, out: str, options: Sequence[str] = (),
     command = [tool or tool_path(), "param", path, "-o", str(uv_file), "--sphere",
                str(sphere_file), "--report", str(report_file), "--quiet", *options]
     try:
-        status, message, seconds = _run_tool(command, time_limit, memory_limit)
+        stopped, status, message, seconds = _run_tool(command, time_limit, memory_limit)
     except OSError as error:
         row.update(status="error", error=f"cannot run the tool: {error}")
         _write_atomically(out_dir / "rows" / (name + ".json"), json.dumps(row) + "\n")
         return row
     row["seconds"] = round(seconds, 4)
-    if status is None:
+    if stopped == "time":
         row.update(status="time limit", error=f"stopped after {time_limit} s")
+    elif stopped == "memory":
+        row.update(status="memory limit", error=f"stopped above {memory_limit} MB resident")
     elif status == 0:
         row["status"] = "ok"
-    elif memory_limit and (status < 0 or "bad_alloc" in message or "out of memory" in message):
-        row.update(status="memory limit", error=f"over the limit of {memory_limit} MB")
     elif status < 0:
         row.update(status="killed", error=f"killed by signal {-status}")
     else:
@@ -283,20 +295,21 @@ def run(paths: Iterable[str], out: str, client=None, options: Sequence[str] = ()
     try:
         started = time.perf_counter()
         if todo:
-            tool = tool_path()
-            futures = [client.submit(map_one, path, name, str(Path(out).resolve()),
-                                     list(options), time_limit, memory_limit, tool,
-                                     key=f"meromorph-{name}", pure=False, retries=2)
-                       for path, name in todo]
+            # Each worker finds its own tool (the package's copy on that machine). Keys are this
+            # run's own, so a finished or failed task of an earlier run is never taken for it.
+            token = uuid.uuid4().hex[:8]
+            futures = {client.submit(map_one, path, name, str(Path(out).resolve()),
+                                     list(options), time_limit, memory_limit,
+                                     key=f"meromorph-{name}-{token}", pure=False, retries=2): (path, name)
+                       for path, name in todo}
             done = len(rows)
             if progress:
                 _bar(done, len(paths), started)
-            for future in as_completed(futures):
+            for future in as_completed(list(futures)):
                 try:
                     row = future.result()
                 except Exception as error:  # the task itself failed (a worker died too often)
-                    index = futures.index(future)
-                    path, name = todo[index]
+                    path, name = futures[future]
                     row = {column: None for column in COLUMNS}
                     row.update(file=path, name=name, status="worker lost",
                                error=f"{type(error).__name__}: {error}")

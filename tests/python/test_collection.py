@@ -136,14 +136,21 @@ def test_the_command_runs_a_list_with_limits(tmp_path):
     listing = tmp_path / "meshes.txt"
     listing.write_text("# the collection\n" + "\n".join(
         os.path.relpath(p, tmp_path) for p in paths + [str(big)]) + "\n")
-    environment = dict(os.environ)
-    result = subprocess.run([sys.executable, "-m", "meromorph.collection", str(listing),
-                             str(tmp_path / "out"), "--workers", "1", "--time-limit", "0.5",
-                             "--quiet"], capture_output=True, text=True, env=environment)
+    command = [sys.executable, "-m", "meromorph.collection", str(listing), str(tmp_path / "out"),
+               "--workers", "1", "--quiet"]
+    result = subprocess.run(command + ["--time-limit", "60", "--memory-limit", "80"],
+                            capture_output=True, text=True)
     assert result.returncode == 3, result.stderr
     assert "4 meshes, 3 mapped, 1 not" in result.stdout
     rows = [json.loads(line) for line in (tmp_path / "out" / "table.jsonl").read_text().splitlines()]
     statuses = {row["name"]: row["status"] for row in rows}
-    assert statuses["big"] == "time limit"
+    assert statuses["big"] == "memory limit"
     assert sorted(v for k, v in statuses.items() if k != "big") == ["ok"] * 3
+    assert all(row["peak_memory_mb"] < 80 for row in rows if row["status"] == "ok")
+    # Again, the failed one only, now with a time limit that stops it.
+    result = subprocess.run(command + ["--retry-failed", "--time-limit", "0.3"],
+                            capture_output=True, text=True)
+    assert result.returncode == 3 and "4 meshes, 3 mapped, 1 not" in result.stdout
+    rows = [json.loads(line) for line in (tmp_path / "out" / "table.jsonl").read_text().splitlines()]
+    assert {row["name"]: row["status"] for row in rows}["big"] == "time limit"
     assert not (tmp_path / "out" / "meshes" / "big.uv.ply").exists()
