@@ -17,7 +17,7 @@ diff <(block cpp) "$root/docs/examples/map_a_torus.cpp" >/dev/null ||
   fail "the C++ example is not docs/examples/map_a_torus.cpp"
 
 # The synopsis: lines from 'meromorph SUB' to the next line that is not indented further.
-for sub in info param remesh forms; do
+for sub in info param remesh forms match; do
   options=$(awk -v sub_="$sub" '$1 == "meromorph" && $2 == sub_ {on = 1; print; next}
              on && /^              / {print; next} {on = 0}' "$readme" | grep -o -- '--[a-z-]*' | sort -u)
   [ -n "$options" ] || fail "no synopsis of $sub"

@@ -130,14 +130,15 @@ def test_a_killed_worker_loses_nothing_and_duplicates_nothing(tmp_path):
     assert len(outputs) == 36
 
 
-def test_the_command_runs_a_list_with_limits(tmp_path):
+def test_the_command_runs_a_list_with_limits_on_a_running_scheduler(tmp_path, client):
     paths = generated_collection(tmp_path / "in", 3)
     big = make("torus", tmp_path / "in" / "big.off", "--resolution", "400")
     listing = tmp_path / "meshes.txt"
     listing.write_text("# the collection\n" + "\n".join(
         os.path.relpath(p, tmp_path) for p in paths + [str(big)]) + "\n")
+    # On the running cluster of the fixture, through its scheduler's address.
     command = [sys.executable, "-m", "meromorph.collection", str(listing), str(tmp_path / "out"),
-               "--workers", "1", "--quiet"]
+               "--scheduler", client.scheduler.address, "--quiet"]
     result = subprocess.run(command + ["--time-limit", "60", "--memory-limit", "80"],
                             capture_output=True, text=True)
     assert result.returncode == 3, result.stderr

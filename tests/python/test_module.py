@@ -164,6 +164,13 @@ def test_forms_of_tori_give_their_exact_modulus(tmp_path):
         assert f.genus == 1
         errors.append(abs(descriptors.reduced_modulus(f.modulus) - exact))
     assert errors[1] < errors[0] / 3 and errors[1] < 0.01, errors  # second order
+    # The same torus moved and rescaled: the same reduced modulus.
+    V, F = meromorph.read(path)
+    R = np.linalg.qr(np.random.default_rng(5).normal(size=(3, 3)))[0]
+    R *= np.sign(np.linalg.det(R))
+    moved = meromorph.forms(V @ R.T * 0.01 + 7.0, F)
+    assert abs(descriptors.reduced_modulus(moved.modulus) -
+               descriptors.reduced_modulus(f.modulus)) < 1e-8
     f = meromorph.forms(DATA / "eight.off")
     assert f.genus == 2 and f.riemann_matrix.shape == (2, 2)
     # Riemann's bilinear relations: Omega symmetric with a positive definite imaginary part.

@@ -9,6 +9,7 @@
 #include <Eigen/Geometry>
 
 #include "common/parallel_for.h"
+#include "sphere/sphere_triangle_grid.h"
 
 namespace meromorph {
 namespace {
@@ -33,96 +34,24 @@ double point_triangle_distance(const Eigen::Vector3d &p, const Eigen::Vector3d &
   return nearest;
 }
 
-// The lifted faces' sphere triangles in a grid of cells of every size 2^-level (a triangle in the
-// cells of the level whose cell is between half its bounding box and all of it: at most 27), so
-// that tiny triangles at a limb's image and large ones elsewhere are both found in a few lookups.
-class SphereTriangleGrid {
-public:
-  SphereTriangleGrid(const LiftedSphere &lifted, const std::vector<int> &faces) : lifted_(lifted) {
-    for (int f : faces) {
-      const auto &face = lifted.faces[size_t(f)];
-      const Eigen::Vector3d &a = lifted.sphere[size_t(face[0])],
-                            &b = lifted.sphere[size_t(face[1])],
-                            &c = lifted.sphere[size_t(face[2])];
-      // The spherical triangle lies within 1 - h of the flat one (h: the plane's distance from
-      // the centre).
-      const Eigen::Vector3d normal = (b - a).cross(c - a);
-      const double norm = normal.norm();
-      const double bulge = norm > 0 ? 1.0 - std::abs(normal.dot(a)) / norm : 1.0;
-      const Eigen::Vector3d low = a.cwiseMin(b).cwiseMin(c).array() - bulge,
-                            high = a.cwiseMax(b).cwiseMax(c).array() + bulge;
-      if (!low.allFinite() || !high.allFinite()) continue; // a corner that did not lift
-      const double size = std::max((high - low).maxCoeff(), 1e-300);
-      const int level = std::clamp(int(std::floor(std::log2(1.0 / size))) + 1, 0, max_level);
-      used_[size_t(level)] = true;
-      const double cell = std::ldexp(1.0, -level);
-      const Cell from = cell_of(low, cell), to = cell_of(high, cell);
-      for (long long i = from.x(); i <= to.x(); ++i)
-        for (long long j = from.y(); j <= to.y(); ++j)
-          for (long long k = from.z(); k <= to.z(); ++k)
-            cells_[key(level, {i, j, k})].push_back(f);
+// The face whose sphere triangle holds `image` (of several lifted copies, the one whose lifted
+// triangle lies nearest `position`: the sheet the sample is on); -1 where none does.
+int face_holding(const SphereTriangleGrid &grid, const LiftedSphere &lifted,
+                 const Eigen::Vector3d &image, const Eigen::Vector3d &position) {
+  int best = -1;
+  double nearest = 0;
+  grid.for_each_holding(image, [&](int f) {
+    const auto &face = lifted.faces[size_t(f)];
+    const double distance = point_triangle_distance(position, lifted.positions[size_t(face[0])],
+                                                    lifted.positions[size_t(face[1])],
+                                                    lifted.positions[size_t(face[2])]);
+    if (best < 0 || distance < nearest) {
+      best = f;
+      nearest = distance;
     }
-  }
-
-  // The lifted face whose sphere triangle holds `image` (of several, the nearest to `position`); -1
-  // where none does.
-  int face_holding(const Eigen::Vector3d &image, const Eigen::Vector3d &position) const {
-    if (!image.allFinite()) return -1;
-    int best = -1;
-    double nearest = 0;
-    for (int level = 0; level <= max_level; ++level) {
-      if (!used_[size_t(level)]) continue;
-      const auto found = cells_.find(key(level, cell_of(image, std::ldexp(1.0, -level))));
-      if (found == cells_.end()) continue;
-      for (int f : found->second) {
-        if (!holds(f, image)) continue;
-        const auto &face = lifted_.faces[size_t(f)];
-        const double distance = point_triangle_distance(
-            position, lifted_.positions[size_t(face[0])], lifted_.positions[size_t(face[1])],
-            lifted_.positions[size_t(face[2])]);
-        if (best < 0 || distance < nearest) {
-          best = f;
-          nearest = distance;
-        }
-      }
-    }
-    return best;
-  }
-
-private:
-  static constexpr int max_level = 50;
-  using Cell = Eigen::Matrix<long long, 3, 1>;
-
-  static Cell cell_of(const Eigen::Vector3d &point, double cell) {
-    return {(long long)std::floor((point.x() + 2.0) / cell),
-            (long long)std::floor((point.y() + 2.0) / cell),
-            (long long)std::floor((point.z() + 2.0) / cell)};
-  }
-  // A cell of a level (counted from a corner of [-2, 2]^3) as one number for the hash map.
-  static unsigned long long key(int level, const Cell &cell) {
-    unsigned long long h = (unsigned long long)level;
-    for (int k = 0; k < 3; ++k)
-      h = h * 0x9E3779B97F4A7C15ULL + (unsigned long long)cell[k];
-    return h;
-  }
-
-  // Inside the cone of the face's sphere triangle, either orientation (a folded lift too).
-  bool holds(int f, const Eigen::Vector3d &p) const {
-    const auto &face = lifted_.faces[size_t(f)];
-    const Eigen::Vector3d &a = lifted_.sphere[size_t(face[0])],
-                          &b = lifted_.sphere[size_t(face[1])],
-                          &c = lifted_.sphere[size_t(face[2])];
-    if (p.dot(a + b + c) <= 0) return false;
-    // det(a, b, p) as p . ((a - p) x (b - p)): precise where the triangle is a hair across.
-    const Eigen::Vector3d pa = a - p, pb = b - p, pc = c - p;
-    const double ab = p.dot(pa.cross(pb)), bc = p.dot(pb.cross(pc)), ca = p.dot(pc.cross(pa));
-    return (ab >= 0 && bc >= 0 && ca >= 0) || (ab <= 0 && bc <= 0 && ca <= 0);
-  }
-
-  const LiftedSphere &lifted_;
-  std::array<bool, max_level + 1> used_{};
-  std::unordered_map<unsigned long long, std::vector<int>> cells_;
-};
+  });
+  return best;
+}
 
 } // namespace
 
@@ -173,10 +102,10 @@ std::vector<double> SampleLocator::covered_areas(const LiftedSphere &lifted) {
     else
       moved.push_back(int(s));
   }
-  const SphereTriangleGrid grid(lifted, fresh);
+  const SphereTriangleGrid grid(lifted.sphere, lifted.faces, fresh);
   parallel_for(moved.size(), [&](size_t m) {
     const size_t s = size_t(moved[m]);
-    holder[s] = grid.face_holding(samples_->image[s], samples_->position[s]);
+    holder[s] = face_holding(grid, lifted, samples_->image[s], samples_->position[s]);
   });
   std::vector<double> covered(lifted.faces.size(), 0.0);
   for (size_t s = 0; s < holder.size(); ++s) {

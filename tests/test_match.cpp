@@ -1,0 +1,299 @@
+// `meromorph match`, judged from the files it wrote with the tests' own code: the same surface
+// re-triangulated (flat subdivision, half of the new inner edges flipped: the same flat faces
+// cut otherwise), rigidly moved and rescaled, so the true point of each source vertex is known.
+// Distances relative to the target's bounding-box diagonal; turned-over faces against the true
+// normals; the round trip source -> target -> source re-derived from the two written matches.
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <random>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "test_support.h"
+#include "vector3.h"
+#include "written_map.h"
+
+namespace meromorph {
+namespace {
+
+using test::cross;
+using test::dot;
+using test::norm;
+using test::sub;
+using test::Vec3;
+
+struct Surface {
+  std::vector<Vec3> positions;
+  std::vector<std::array<int, 3>> triangles;
+};
+
+struct Motion {
+  double rotation[3][3];
+  double scale;
+  Vec3 shift;
+  Vec3 operator()(const Vec3 &p) const {
+    Vec3 q{};
+    for (int i = 0; i < 3; ++i)
+      q[size_t(i)] =
+          scale * (rotation[i][0] * p[0] + rotation[i][1] * p[1] + rotation[i][2] * p[2]) +
+          shift[size_t(i)];
+    return q;
+  }
+};
+
+Motion random_motion(unsigned seed, double scale) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> angle(0, 6.283185307179586), shift(-3, 3);
+  const double a = angle(random), b = angle(random) / 2, c = angle(random);
+  const double ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b),
+               cc = std::cos(c), sc = std::sin(c);
+  // z-y-z Euler angles
+  Motion m{{{ca * cb * cc - sa * sc, -ca * cb * sc - sa * cc, ca * sb},
+            {sa * cb * cc + ca * sc, -sa * cb * sc + ca * cc, sa * sb},
+            {-sb * cc, sb * sc, cb}},
+           scale,
+           {shift(random), shift(random), shift(random)}};
+  return m;
+}
+
+// Every triangle into four at its edge midpoints (the input's vertices first, keeping their
+// numbers); in every other triangle the inner edge between the first two midpoints is flipped.
+Surface retriangulated(const Surface &in, const Motion &motion) {
+  Surface out;
+  out.positions = in.positions;
+  std::map<std::pair<int, int>, int> midpoint;
+  const auto mid = [&](int a, int b) {
+    const auto key = std::minmax(a, b);
+    const auto found = midpoint.find(key);
+    if (found != midpoint.end()) return found->second;
+    const Vec3 &p = in.positions[size_t(a)], &q = in.positions[size_t(b)];
+    out.positions.push_back({(p[0] + q[0]) / 2, (p[1] + q[1]) / 2, (p[2] + q[2]) / 2});
+    return midpoint[key] = int(out.positions.size()) - 1;
+  };
+  for (size_t f = 0; f < in.triangles.size(); ++f) {
+    const auto [a, b, c] = in.triangles[f];
+    const int ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+    if (f % 2 == 0)
+      out.triangles.insert(out.triangles.end(),
+                           {{a, ab, ca}, {ab, b, bc}, {ca, bc, c}, {ab, bc, ca}});
+    else
+      out.triangles.insert(out.triangles.end(),
+                           {{a, ab, bc}, {a, bc, ca}, {ab, b, bc}, {ca, bc, c}});
+  }
+  for (Vec3 &p : out.positions)
+    p = motion(p);
+  return out;
+}
+
+Surface read_surface(const std::string &file) {
+  Surface s;
+  test::arrays_of(file, s.positions, s.triangles);
+  return s;
+}
+
+double diagonal(const std::vector<Vec3> &p) {
+  Vec3 low = p.front(), high = p.front();
+  for (const Vec3 &q : p)
+    for (size_t k = 0; k < 3; ++k)
+      low[k] = std::min(low[k], q[k]), high[k] = std::max(high[k], q[k]);
+  return norm(sub(high, low));
+}
+
+struct MatchFigures {
+  double mean = 0, max = 0; // distance of matched points to the true ones / diagonal
+  int turned_over = 0;      // matched triangles against the true (moved source) normal
+  double landmark_max = 0;
+};
+
+// The written match of `source` onto `target` against the truth: source vertex i's true point
+// is `truth[i]`; a matched triangle is turned over where its normal points against the moved
+// source triangle's.
+MatchFigures judged(const std::string &matched_ply, const Surface &source, const Surface &target,
+                    const std::vector<Vec3> &truth, const Motion &motion) {
+  const test::WrittenMesh written = test::read_written_mesh(matched_ply);
+  const auto &x = written.columns.at("x"), &y = written.columns.at("y"),
+             &z = written.columns.at("z"), &face = written.columns.at("target_face"),
+             &b1 = written.columns.at("target_b1"), &b2 = written.columns.at("target_b2");
+  EXPECT_EQ(x.size(), source.positions.size());
+  EXPECT_EQ(written.triangles, source.triangles); // the source's faces, in its order
+  const double d = diagonal(target.positions);
+  MatchFigures figures;
+  std::vector<Vec3> matched;
+  for (size_t v = 0; v < x.size(); ++v) {
+    matched.push_back({x[v], y[v], z[v]});
+    // The written point is the target's triangle at the written weights (float precision).
+    const auto &t = target.triangles.at(size_t(face[v]));
+    const double w1 = b1[v], w2 = b2[v], w0 = 1 - w1 - w2;
+    Vec3 at{};
+    for (size_t k = 0; k < 3; ++k)
+      at[k] = w0 * target.positions[size_t(t[0])][k] + w1 * target.positions[size_t(t[1])][k] +
+              w2 * target.positions[size_t(t[2])][k];
+    EXPECT_LT(norm(sub(at, matched.back())), 1e-5 * d) << "vertex " << v;
+    const double e = norm(sub(matched.back(), truth[v])) / d;
+    figures.mean += e / double(x.size());
+    figures.max = std::max(figures.max, e);
+  }
+  for (const auto &t : source.triangles) {
+    const Vec3 n = cross(sub(matched[size_t(t[1])], matched[size_t(t[0])]),
+                         sub(matched[size_t(t[2])], matched[size_t(t[0])]));
+    const Vec3 truth_normal =
+        cross(sub(motion(source.positions[size_t(t[1])]), motion(source.positions[size_t(t[0])])),
+              sub(motion(source.positions[size_t(t[2])]), motion(source.positions[size_t(t[0])])));
+    figures.turned_over += dot(n, truth_normal) < 0;
+  }
+  return figures;
+}
+
+// Source vertex i -> its point on the target (face, weights) -> back through the target's
+// vertices' written points on the source: how far from where it started / source diagonal.
+std::pair<double, double> round_trip(const std::string &forward_ply,
+                                     const std::string &backward_ply, const Surface &source,
+                                     const Surface &target) {
+  const test::WrittenMesh forward = test::read_written_mesh(forward_ply, false);
+  const test::WrittenMesh backward = test::read_written_mesh(backward_ply, false);
+  const double d = diagonal(source.positions);
+  double mean = 0, worst = 0;
+  const size_t n = source.positions.size();
+  for (size_t v = 0; v < n; ++v) {
+    const auto &t = target.triangles.at(size_t(forward.columns.at("target_face")[v]));
+    const double w1 = forward.columns.at("target_b1")[v], w2 = forward.columns.at("target_b2")[v];
+    const double w[3] = {1 - w1 - w2, w1, w2};
+    Vec3 p{};
+    for (int k = 0; k < 3; ++k)
+      for (size_t c = 0; c < 3; ++c)
+        p[c] += w[k] * backward.columns.at(c == 0 ? "x" : c == 1 ? "y" : "z")[size_t(t[size_t(k)])];
+    const double e = norm(sub(p, source.positions[v])) / d;
+    mean += e / double(n);
+    worst = std::max(worst, e);
+  }
+  return {mean, worst};
+}
+
+struct Case {
+  std::string name;
+  Surface source;
+};
+
+std::vector<Case> genus_zero_cases(const test::TempDir &dir) {
+  std::vector<Case> cases;
+  cases.push_back({"maxplanck", read_surface(test::data_path("maxplanck.nf25k.off"))});
+  EXPECT_EQ(test::run_cli({"make", "genus", "-g", "0", "-o", dir.path("g0.off")}).exit_code, 0);
+  cases.push_back({"generated genus 0", read_surface(dir.path("g0.off"))});
+  EXPECT_EQ(test::run_cli(
+                {"make", "blob", "--tentacles", "3", "--length", "1.5", "-o", dir.path("blob.off")})
+                .exit_code,
+            0);
+  cases.push_back({"blob, 3 short limbs", read_surface(dir.path("blob.off"))});
+  return cases;
+}
+
+TEST(Match, TheSameSurfaceRetriangulatedMovedAndRescaledIsFoundAutomatically) {
+  const test::TempDir dir;
+  unsigned seed = 11;
+  for (const Case &c : genus_zero_cases(dir)) {
+    const Motion motion = random_motion(seed++, 2.7);
+    const Surface target = retriangulated(c.source, motion);
+    const std::string source_file =
+        dir.write("source.off", test::off_text(c.source.positions, c.source.triangles));
+    const std::string target_file =
+        dir.write("target.off", test::off_text(target.positions, target.triangles));
+    const test::RunResult run =
+        test::run_cli({"match", source_file, target_file, "-o", dir.path("matched.ply"), "--both",
+                       dir.path("back.ply"), "--report", dir.path("report.json"), "--quiet"});
+    ASSERT_EQ(run.exit_code, 0) << c.name << ": " << run.err;
+    // Source vertex i is target vertex i (the subdivision keeps the input's vertices first).
+    const std::vector<Vec3> truth(target.positions.begin(),
+                                  target.positions.begin() + long(c.source.positions.size()));
+    const MatchFigures forward = judged(dir.path("matched.ply"), c.source, target, truth, motion);
+    EXPECT_LE(forward.mean, 0.005) << c.name;
+    EXPECT_LE(forward.max, 0.02) << c.name;
+    EXPECT_EQ(forward.turned_over, 0) << c.name;
+    const auto [trip_mean, trip_max] =
+        round_trip(dir.path("matched.ply"), dir.path("back.ply"), c.source, target);
+    EXPECT_LE(trip_mean, 0.01) << c.name;
+    std::cout << c.name << ": " << c.source.positions.size() << " -> " << target.positions.size()
+              << " vertices, matched within " << 100 * forward.mean << "% (mean), "
+              << 100 * forward.max << "% (max) of the diagonal, " << forward.turned_over
+              << " turned over; round trip " << 100 * trip_mean << "% (mean), " << 100 * trip_max
+              << "% (max)\n";
+  }
+}
+
+TEST(Match, ThreeLandmarksFixTheMapAndMoreAreFittedInLeastSquares) {
+  const test::TempDir dir;
+  const Surface source = read_surface(test::data_path("maxplanck.nf25k.off"));
+  const Motion motion = random_motion(5, 0.3);
+  const Surface target = retriangulated(source, motion);
+  const std::string source_file =
+      dir.write("source.off", test::off_text(source.positions, source.triangles));
+  const std::string target_file =
+      dir.write("target.off", test::off_text(target.positions, target.triangles));
+  const std::vector<Vec3> truth(target.positions.begin(),
+                                target.positions.begin() + long(source.positions.size()));
+  // The landmarks land on their vertices: exactly with three (float output), closely with four.
+  const std::pair<std::string, double> landmark_files[] = {
+      {"100 100\n5000 5000\n9000 9000\n", 1e-5},
+      {"# four pairs\n100 100\n5000 5000\n9000 9000\n12000 12000\n", 2e-3}};
+  for (const auto &[pairs, tolerance] : landmark_files) {
+    const std::string landmarks = dir.write("pairs.txt", pairs);
+    const test::RunResult run =
+        test::run_cli({"match", source_file, target_file, "-o", dir.path("matched.ply"),
+                       "--landmarks", landmarks, "--quiet"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const MatchFigures figures = judged(dir.path("matched.ply"), source, target, truth, motion);
+    EXPECT_LE(figures.mean, 0.005);
+    EXPECT_LE(figures.max, 0.02);
+    EXPECT_EQ(figures.turned_over, 0);
+    const test::WrittenMesh written = test::read_written_mesh(dir.path("matched.ply"), false);
+    for (int v : {100, 5000, 9000}) {
+      const Vec3 p{written.columns.at("x")[size_t(v)], written.columns.at("y")[size_t(v)],
+                   written.columns.at("z")[size_t(v)]};
+      EXPECT_LT(norm(sub(p, truth[size_t(v)])) / diagonal(target.positions), tolerance)
+          << "landmark " << v;
+    }
+  }
+}
+
+TEST(Match, WhatCannotBeMatchedIsRefusedWithTheReason) {
+  const test::TempDir dir;
+  const std::string sphere = dir.path("sphere.off"), torus = dir.path("torus.off");
+  ASSERT_EQ(test::run_cli({"make", "sphere", "-o", sphere}).exit_code, 0);
+  ASSERT_EQ(test::run_cli({"make", "torus", "-o", torus}).exit_code, 0);
+  test::RunResult run = test::run_cli({"match", sphere, torus, "-o", dir.path("m.ply")});
+  EXPECT_EQ(run.exit_code, 3);
+  EXPECT_NE(run.err.find("genus 1"), std::string::npos) << run.err;
+  run = test::run_cli({"match", sphere, sphere, "-o", dir.path("m.ply"), "--landmarks",
+                       dir.write("bad.txt", "1 2\n3\n")});
+  EXPECT_EQ(run.exit_code, 3);
+  EXPECT_NE(run.err.find("bad.txt:2"), std::string::npos) << run.err;
+  run = test::run_cli({"match", sphere, sphere, "-o", dir.path("m.ply"), "--landmarks",
+                       dir.write("far.txt", "1 2\n3 4\n5 99999\n")});
+  EXPECT_EQ(run.exit_code, 3);
+  EXPECT_NE(run.err.find("99999"), std::string::npos) << run.err;
+  run = test::run_cli({"match", sphere, sphere, "-o", dir.path("m.ply"), "--landmarks",
+                       dir.write("two.txt", "1 2\n3 4\n")});
+  EXPECT_EQ(run.exit_code, 3);
+  EXPECT_NE(run.err.find("three landmark pairs"), std::string::npos) << run.err;
+  // Never over an input; an output that cannot carry the per-vertex properties is refused.
+  const std::string before = test::file_bytes(sphere);
+  EXPECT_EQ(test::run_cli({"match", sphere, torus, "-o", sphere}).exit_code, 2);
+  EXPECT_EQ(test::run_cli({"match", sphere, sphere, "-o", dir.path("m.obj")}).exit_code, 2);
+  EXPECT_EQ(test::file_bytes(sphere), before);
+}
+
+TEST(Match, ARoundSphereReportsTheRotationsThatFitAsWell) {
+  const test::TempDir dir;
+  const std::string sphere = dir.path("sphere.off"), moved = dir.path("moved.off");
+  ASSERT_EQ(test::run_cli({"make", "sphere", "-o", sphere}).exit_code, 0);
+  ASSERT_EQ(test::run_cli({"make", "sphere", "--rigid-motion", "-o", moved}).exit_code, 0);
+  const test::RunResult run = test::run_cli(
+      {"match", sphere, moved, "-o", dir.path("m.ply"), "--report", dir.path("r.json")});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("other rotations fit almost as well"), std::string::npos) << run.out;
+}
+
+} // namespace
+} // namespace meromorph

@@ -1,0 +1,165 @@
+// `meromorph match SOURCE TARGET -o OUT.ply [--landmarks PAIRS.txt] [--report R.json]
+// [--both REVERSE.ply]`: every vertex of SOURCE on a point of TARGET, through their spheres.
+#include <chrono>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+#include "cli/exit_codes.h"
+#include "commands.h"
+#include "common/errors.h"
+#include "io/mesh_writer.h"
+#include "io/staged_outputs.h"
+#include "job_input.h"
+#include "match/surface_match.h"
+#include "mesh/mesh.h"
+#include "report/report_json.h"
+#include "terminal_progress.h"
+
+namespace meromorph::cli {
+namespace {
+
+struct MatchCommandOptions {
+  std::string source, target, output, landmarks, report, both;
+  bool quiet = false;
+};
+
+// Lines "i j" (a source vertex and a target vertex); "#" starts a comment.
+std::vector<std::pair<int, int>> read_landmarks(const std::string &path) {
+  std::ifstream file(path);
+  if (!file) throw ArgumentError(path + ": cannot read the landmarks file");
+  std::vector<std::pair<int, int>> pairs;
+  std::string line;
+  for (int number = 1; std::getline(file, line); ++number) {
+    line = line.substr(0, line.find('#'));
+    std::istringstream words(line);
+    long long i = 0, j = 0;
+    std::string extra;
+    if (!(words >> i)) continue; // blank or comment
+    if (!(words >> j) || (words >> extra) || i < 0 || j < 0 || i > INT32_MAX || j > INT32_MAX)
+      throw InputError(path + ":" + std::to_string(number) +
+                       ": a landmark line is two vertex indices, source then target (\"12 40\")");
+    pairs.emplace_back(int(i), int(j));
+  }
+  return pairs;
+}
+
+// SOURCE's triangles on the matched points, with the target's triangle and weights per vertex.
+void write_matched_mesh(const Mesh &source, const MatchedPoints &points, const std::string &file) {
+  Mesh matched;
+  vcg::tri::Append<Mesh, Mesh>::MeshCopy(matched, const_cast<Mesh &>(source));
+  WriteOptions options;
+  VertexProperty face{"target_face", {}, false};
+  FloatVertexProperty b1{"target_b1", {}}, b2{"target_b2", {}};
+  for (size_t v = 0; v < matched.vert.size(); ++v) {
+    if (points.target_face[v] >= 0)
+      for (int k = 0; k < 3; ++k)
+        matched.vert[v].P()[k] = points.position[v][k];
+    face.values.push_back(points.target_face[v]);
+    b1.values.push_back(float(points.weights[v][0]));
+    b2.values.push_back(float(points.weights[v][1]));
+  }
+  options.vertex_properties = {face};
+  options.float_vertex_properties = {b1, b2};
+  save_mesh(matched, MeshFormat::ply, file, options);
+}
+
+int run_match(const MatchCommandOptions &options) {
+  std::vector<std::string> inputs{options.source, options.target};
+  if (!options.landmarks.empty()) inputs.push_back(options.landmarks);
+  StagedOutputs outputs(inputs);
+  for (const std::string &path : {options.output, options.both})
+    if (!path.empty() && output_format(path) != MeshFormat::ply)
+      throw ArgumentError(path + ": a match is written as PLY (.ply), whose vertices can carry "
+                                 "target_face, target_b1 and target_b2");
+  const std::string output_file = outputs.add(options.output);
+  const std::string both_file = options.both.empty() ? "" : outputs.add(options.both);
+  const std::string report_file = options.report.empty() ? "" : outputs.add(options.report);
+  MatchOptions settings;
+  if (!options.landmarks.empty()) settings.landmarks = read_landmarks(options.landmarks);
+  settings.both = !options.both.empty();
+
+  const auto start = std::chrono::steady_clock::now();
+  Mesh source, target;
+  const JobInput source_input = read_job_input(options.source, false, source);
+  const JobInput target_input = read_job_input(options.target, false, target);
+  TerminalProgress bar(options.quiet);
+  const SurfaceMatch match = match_surfaces(source, target, settings, bar.progress());
+  bar.finish();
+
+  nlohmann::json timings = {{"read", source_input.read_ms + target_input.read_ms}};
+  for (const auto &[stage, ms] : match.timings_ms)
+    timings[stage] = ms;
+  nlohmann::json alternatives = nlohmann::json::array();
+  for (const auto &alternative : match.alignment.alternatives)
+    alternatives.push_back({{"angle_from_best_degrees", alternative.angle_from_best_degrees},
+                            {"cost", alternative.cost}});
+  nlohmann::json report = {
+      {"source", source_json(source_input.source)},
+      {"target", source_json(target_input.source)},
+      {"genus", match.genus},
+      {"method", match.alignment.method},
+      {"alignment",
+       {{"cost", match.alignment.cost},
+        {"alternatives", alternatives},
+        {"landmark_sphere_distance_max", match.alignment.landmark_distance_max}}},
+      {"landmarks",
+       {{"count", settings.landmarks.size()},
+        {"residual_mean", match.landmark_residual_mean},
+        {"residual_max", match.landmark_residual_max}}},
+      {"matched_mesh",
+       {{"angle_error_mean_degrees", match.angle_error_mean_degrees},
+        {"folded_faces", match.folded_faces},
+        {"unmatched_vertices", match.unmatched_vertices}}},
+      {"timings_ms", timings},
+      {"version", MEROMORPH_VERSION}};
+  if (settings.both)
+    report["round_trip"] = {{"mean", match.round_trip_mean}, {"max", match.round_trip_max}};
+  outputs.writing([&] {
+    write_matched_mesh(source, match.forward, output_file);
+    if (settings.both) write_matched_mesh(target, match.backward, both_file);
+    if (!options.report.empty()) write_text_file(report_file, json_text(report) + "\n");
+    outputs.commit();
+  });
+  const double total_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  if (!options.quiet) {
+    std::cout << options.source << " -> " << options.target << ": genus 0, "
+              << match.alignment.method << "; matched mesh: angle error "
+              << match.angle_error_mean_degrees << " deg, " << match.folded_faces
+              << " folded faces";
+    if (!settings.landmarks.empty())
+      std::cout << ", landmarks within " << 100 * match.landmark_residual_max
+                << "% of the diagonal";
+    if (!match.alignment.alternatives.empty())
+      std::cout << "; " << match.alignment.alternatives.size()
+                << " other rotations fit almost as well (a symmetric surface: give landmarks)";
+    if (settings.both) std::cout << "; round trip within " << 100 * match.round_trip_mean << "%";
+    std::cout << " (" << total_ms / 1000 << " s)\n";
+  }
+  return int(ExitCode::done);
+}
+
+} // namespace
+
+Command add_match_command(CLI::App &app) {
+  auto options = std::make_shared<MatchCommandOptions>();
+  CLI::App *match = app.add_subcommand(
+      "match", "Every vertex of SOURCE on a point of TARGET, through their conformal spheres "
+               "(closed surfaces of genus 0): OUT.ply is SOURCE's mesh on the matched points, with "
+               "per-vertex target_face, target_b1 and target_b2.");
+  match->add_option("SOURCE", options->source, "mesh file (.ply, .obj, .off, .stl)")->required();
+  match->add_option("TARGET", options->target, "mesh file (.ply, .obj, .off, .stl)")->required();
+  match->add_option("-o,--output", options->output, "the matched mesh (.ply)")->required();
+  match->add_option("--landmarks", options->landmarks,
+                    "text file of pairs \"i j\": SOURCE vertex i corresponds to TARGET vertex j "
+                    "(three or more; default: aligned automatically)");
+  match->add_option("--report", options->report, "write the JSON report here");
+  match->add_option("--both", options->both,
+                    "also match TARGET onto SOURCE, write it here (.ply) and report the round "
+                    "trip");
+  match->add_flag("--quiet", options->quiet, "no progress bar and no summary line");
+  return [options] { return run_match(*options); };
+}
+
+} // namespace meromorph::cli

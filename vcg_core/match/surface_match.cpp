@@ -1,0 +1,236 @@
+#include "match/surface_match.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include <Eigen/Geometry>
+
+#include "common/errors.h"
+#include "common/parallel_for.h"
+#include "job/surface_map.h"
+#include "maps/parameterization.h"
+#include "sphere/sphere_triangle_grid.h"
+
+namespace meromorph {
+namespace {
+
+// A surface as its genus-0 map was written: the input's vertices then any added, its faces
+// (pieces of the input's), and each vertex's sphere point.
+struct SphereOfSurface {
+  std::vector<Eigen::Vector3d> positions, sphere;
+  std::vector<std::array<int, 3>> faces, input_faces;
+  std::vector<int> face_source; // per written face, the input's face it is part of
+  double diagonal = 1;
+};
+
+SphereOfSurface genus0_sphere(Mesh &mesh, const char *which, const Progress &progress) {
+  const Parameterization map = parameterize_surface(mesh, ParameterizeOptions{}, progress);
+  const std::string name = which;
+  if (map.components.size() > 1)
+    throw InputError("the " + name + " has " + std::to_string(map.components.size()) +
+                     " parts: a match takes one closed surface; map its parts apart");
+  if (map.genus != 0)
+    throw InputError("the " + name + " has genus " + std::to_string(map.genus) +
+                     ": matching covers genus 0 so far (both surfaces closed, of genus 0)");
+  if (!map.valid)
+    throw InputError("no valid map of the " + name +
+                     " on its triangulation: " + join_phrases(map.invalid));
+  SphereOfSurface out;
+  for (const auto &vertex : mesh.vert)
+    out.positions.emplace_back(vertex.cP()[0], vertex.cP()[1], vertex.cP()[2]);
+  for (const auto &face : mesh.face)
+    out.input_faces.push_back({int(index_of(mesh, face.cV(0))), int(index_of(mesh, face.cV(1))),
+                               int(index_of(mesh, face.cV(2)))});
+  for (const AddedVertex &added : map.added_vertices)
+    out.positions.push_back(added.position);
+  out.faces = map.surface_faces.empty() ? out.input_faces : map.surface_faces;
+  out.face_source = map.surface_face_source;
+  if (out.face_source.empty())
+    for (size_t f = 0; f < out.faces.size(); ++f)
+      out.face_source.push_back(int(f));
+  out.sphere = map.sphere;
+  Eigen::Vector3d low = out.positions.front(), high = low;
+  for (const Eigen::Vector3d &p : out.positions)
+    low = low.cwiseMin(p), high = high.cwiseMax(p);
+  out.diagonal = std::max((high - low).norm(), 1e-300);
+  return out;
+}
+
+// b1, b2 of p in the (coplanar) triangle abc.
+Eigen::Vector2d barycentric(const Eigen::Vector3d &p, const Eigen::Vector3d &a,
+                            const Eigen::Vector3d &b, const Eigen::Vector3d &c) {
+  const Eigen::Vector3d u = b - a, v = c - a, w = p - a;
+  const double uu = u.dot(u), uv = u.dot(v), vv = v.dot(v), wu = w.dot(u), wv = w.dot(v);
+  const double det = uu * vv - uv * uv;
+  if (!(std::abs(det) > 0)) return {0, 0};
+  return {(vv * wu - uv * wv) / det, (uu * wv - uv * wu) / det};
+}
+
+// The points of `to` whose sphere points are `images`, with the written triangle each lies in and
+// its weights there.
+struct Located {
+  MatchedPoints points;
+  std::vector<int> written_face;
+  std::vector<Eigen::Vector3d> written_weights;
+};
+
+Located located(const SphereOfSurface &to, const SphereTriangleGrid &grid,
+                const std::vector<Eigen::Vector3d> &images) {
+  Located located;
+  located.written_face.assign(images.size(), -1);
+  located.written_weights.assign(images.size(), Eigen::Vector3d::Zero());
+  MatchedPoints &out = located.points;
+  out.target_face.assign(images.size(), -1);
+  out.weights.assign(images.size(), Eigen::Vector2d::Zero());
+  out.position.assign(images.size(), Eigen::Vector3d::Constant(std::nan("")));
+  parallel_for(images.size(), [&](size_t v) {
+    const SphereTriangleGrid::Hold hold = grid.holding_with_weights(images[v]);
+    if (hold.triangle < 0) return;
+    const auto &face = to.faces[size_t(hold.triangle)];
+    const Eigen::Vector3d p = hold.weights[0] * to.positions[size_t(face[0])] +
+                              hold.weights[1] * to.positions[size_t(face[1])] +
+                              hold.weights[2] * to.positions[size_t(face[2])];
+    located.written_face[v] = hold.triangle;
+    located.written_weights[v] = hold.weights;
+    const int input_face = to.face_source[size_t(hold.triangle)];
+    const auto &corners = to.input_faces[size_t(input_face)];
+    out.target_face[v] = input_face;
+    out.position[v] = p;
+    out.weights[v] =
+        barycentric(p, to.positions[size_t(corners[0])], to.positions[size_t(corners[1])],
+                    to.positions[size_t(corners[2])]);
+  });
+  return located;
+}
+
+double corner_angle(const Eigen::Vector3d &at, const Eigen::Vector3d &p, const Eigen::Vector3d &q) {
+  const Eigen::Vector3d u = p - at, v = q - at;
+  return std::atan2(u.cross(v).norm(), u.dot(v));
+}
+
+void check_landmarks(const std::vector<std::pair<int, int>> &landmarks, size_t source_vertices,
+                     size_t target_vertices) {
+  for (size_t k = 0; k < landmarks.size(); ++k) {
+    const auto [i, j] = landmarks[k];
+    if (i < 0 || size_t(i) >= source_vertices || j < 0 || size_t(j) >= target_vertices)
+      throw InputError("landmark pair " + std::to_string(k + 1) + " (" + std::to_string(i) + " " +
+                       std::to_string(j) + ") names a vertex that is not there: the source has " +
+                       std::to_string(source_vertices) + " vertices, the target " +
+                       std::to_string(target_vertices));
+  }
+}
+
+} // namespace
+
+SurfaceMatch match_surfaces(Mesh &source, Mesh &target, const MatchOptions &options,
+                            const Progress &progress) {
+  using Clock = std::chrono::steady_clock;
+  const auto since = [](Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  };
+  check_landmarks(options.landmarks, source.vert.size(), target.vert.size());
+  SurfaceMatch out;
+  auto start = Clock::now();
+  const SphereOfSurface from = genus0_sphere(source, "source", progress.range(0.0, 0.4));
+  out.timings_ms.emplace_back("map source", since(start));
+  start = Clock::now();
+  const SphereOfSurface to = genus0_sphere(target, "target", progress.range(0.4, 0.8));
+  out.timings_ms.emplace_back("map target", since(start));
+  progress.report(0.8, "aligning the spheres");
+
+  start = Clock::now();
+  const SphereTriangleGrid source_grid(from.sphere, from.faces), target_grid(to.sphere, to.faces);
+  if (!options.landmarks.empty()) {
+    out.alignment = align_by_landmarks(from.sphere, to.sphere, options.landmarks);
+  } else {
+    const std::vector<double> source_factor =
+        log_conformal_factor(from.positions, from.sphere, from.faces);
+    const std::vector<double> target_factor =
+        log_conformal_factor(to.positions, to.sphere, to.faces);
+    out.alignment = align_by_functions({from.faces, source_grid, source_factor},
+                                       {to.faces, target_grid, target_factor});
+  }
+  out.timings_ms.emplace_back("align", since(start));
+  progress.report(0.9, "matching the vertices");
+
+  start = Clock::now();
+  const size_t n = source.vert.size();
+  std::vector<Eigen::Vector3d> images(n);
+  parallel_for(n, [&](size_t v) { images[v] = out.alignment.apply(from.sphere[v]); });
+  const Located forward = located(to, target_grid, images);
+  out.forward = forward.points;
+  for (size_t v = 0; v < n; ++v)
+    out.unmatched_vertices += out.forward.target_face[v] < 0;
+
+  // Landmarks: where the source's landed against the target's own vertex.
+  for (const auto &[i, j] : options.landmarks) {
+    const double d =
+        (out.forward.position[size_t(i)] - to.positions[size_t(j)]).norm() / to.diagonal;
+    out.landmark_residual_max = std::max(out.landmark_residual_max, std::isnan(d) ? 1.0 : d);
+    out.landmark_residual_mean += (std::isnan(d) ? 1.0 : d) / double(options.landmarks.size());
+  }
+  // The matched mesh: the source's triangles on the matched points.
+  double angle_sum = 0;
+  long long corners = 0;
+  for (const auto &face : from.input_faces) {
+    const Eigen::Vector3d p[3] = {out.forward.position[size_t(face[0])],
+                                  out.forward.position[size_t(face[1])],
+                                  out.forward.position[size_t(face[2])]};
+    const Eigen::Vector3d s[3] = {from.positions[size_t(face[0])], from.positions[size_t(face[1])],
+                                  from.positions[size_t(face[2])]};
+    if (!(p[0].allFinite() && p[1].allFinite() && p[2].allFinite())) continue;
+    const Eigen::Vector3d normal = (p[1] - p[0]).cross(p[2] - p[0]);
+    if (normal.norm() <= 1e-14 * (p[1] - p[0]).squaredNorm()) continue; // flat: not turned over
+    // Turned over: against the target surface's normal where each of its corners lies (a chord
+    // across a crease may disagree with the face at one corner; a turned triangle with all).
+    bool against_all = true;
+    for (int k = 0; k < 3; ++k) {
+      const auto &t = to.input_faces[size_t(out.forward.target_face[size_t(face[size_t(k)])])];
+      const Eigen::Vector3d surface_normal =
+          (to.positions[size_t(t[1])] - to.positions[size_t(t[0])])
+              .cross(to.positions[size_t(t[2])] - to.positions[size_t(t[0])]);
+      against_all = against_all && normal.dot(surface_normal) < 0;
+    }
+    out.folded_faces += against_all;
+    for (int k = 0; k < 3; ++k) {
+      angle_sum += std::abs(corner_angle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]) -
+                            corner_angle(s[k], s[(k + 1) % 3], s[(k + 2) % 3]));
+      ++corners;
+    }
+  }
+  out.angle_error_mean_degrees = corners ? angle_sum / double(corners) * 180 / M_PI : 0;
+
+  if (options.both) {
+    // The target's vertices matched back (the alignment undone), and the round trip: a source
+    // vertex's point on the target, carried back by the target's written vertices' points.
+    std::vector<Eigen::Vector3d> back(to.sphere.size());
+    parallel_for(back.size(),
+                 [&](size_t v) { back[v] = out.alignment.apply_inverse(to.sphere[v]); });
+    Located backward = located(from, source_grid, back);
+    double sum = 0, worst = 0;
+    long long counted = 0;
+    for (size_t v = 0; v < n; ++v) {
+      const int face = forward.written_face[v];
+      if (face < 0) continue;
+      Eigen::Vector3d p = Eigen::Vector3d::Zero();
+      for (int k = 0; k < 3; ++k)
+        p += forward.written_weights[v][k] *
+             backward.points.position[size_t(to.faces[size_t(face)][size_t(k)])];
+      const double d = p.allFinite() ? (p - from.positions[v]).norm() / from.diagonal : 1.0;
+      sum += d, worst = std::max(worst, d), ++counted;
+    }
+    out.round_trip_mean = counted ? sum / double(counted) : -1;
+    out.round_trip_max = counted ? worst : -1;
+    MatchedPoints &points = backward.points;
+    points.target_face.resize(target.vert.size());
+    points.weights.resize(target.vert.size());
+    points.position.resize(target.vert.size());
+    out.backward = std::move(points);
+  }
+  out.timings_ms.emplace_back("match", since(start));
+  out.genus = 0;
+  return out;
+}
+
+} // namespace meromorph
