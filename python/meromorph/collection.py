@@ -1,7 +1,8 @@
 """Map a whole collection of meshes, on this machine or a Dask cluster.
 
     python3 -m meromorph.collection IN OUT [--scheduler ADDRESS] [--workers N]
-            [--time-limit S] [--memory-limit MB] [--retry-failed] [param options]
+            [--time-limit S] [--memory-limit MB] [--retry-failed] [--no-descriptors]
+            [param options]
 
 maps every mesh under IN (a folder, searched for .ply .obj .off .stl; or a text file listing one
 path per line) with `meromorph param` and the given options (for example --area-correct, --uv
@@ -98,8 +99,6 @@ def _write_atomically(path: Path, text: str) -> None:
     try:
         with os.fdopen(handle, "w") as stream:
             stream.write(text)
-            stream.flush()
-            os.fsync(stream.fileno())
         os.replace(temporary, path)
     except BaseException:
         if os.path.exists(temporary):
@@ -167,9 +166,10 @@ def _descriptor(genus: int, report: dict, uv_file: Path, sphere_file: Path) -> d
 
 def map_one(path: str, name: str, out: str, options: Sequence[str] = (),
             time_limit: Optional[float] = None, memory_limit: Optional[float] = None,
-            tool: Optional[str] = None) -> dict:
+            tool: Optional[str] = None, describe: bool = True) -> dict:
     """Maps one mesh with the command-line tool in a process of its own, writes its outputs and
-    then its row (rows/NAME.json), and returns the row. Never raises for a mesh that fails."""
+    then its row (rows/NAME.json), and returns the row. Never raises for a mesh that fails.
+    `describe`: the shape descriptor too (for genus 0 it reads the written files back)."""
     out_dir = Path(out)
     base = out_dir / "meshes" / name
     base.parent.mkdir(parents=True, exist_ok=True)
@@ -211,7 +211,8 @@ def map_one(path: str, name: str, out: str, options: Sequence[str] = (),
                    angle_error_away_from_branch_points=away.get("angle_error_mean_degrees"),
                    folded_faces=overall.get("folded_faces"),
                    peak_memory_mb=report.get("peak_memory_mb"))
-        descriptor = _descriptor(int(row["genus"]), report, uv_file, sphere_file)
+        descriptor = _descriptor(int(row["genus"]), report, uv_file, sphere_file) if describe \
+            else {}
         row["modulus"] = descriptor.get("modulus")
         row["riemann_matrix"] = descriptor.get("riemann_matrix")
         row["spharm"] = descriptor.get("spharm")
@@ -265,10 +266,11 @@ def _bar(done: int, total: int, started: float, stream=sys.stderr) -> None:
 def run(paths: Iterable[str], out: str, client=None, options: Sequence[str] = (),
         root: Optional[str] = None, time_limit: Optional[float] = None,
         memory_limit: Optional[float] = None, retry_failed: bool = False,
-        workers: int = 2, progress: bool = False) -> List[dict]:
+        workers: int = 2, progress: bool = False, describe: bool = True) -> List[dict]:
     """Maps every mesh of `paths` on `client` (a distributed.Client; default: a LocalCluster of
     `workers` processes made and closed here), writes outputs, rows and the table under `out`, and
-    returns the rows (one per mesh, sorted by name). `options`: `meromorph param` options."""
+    returns the rows (one per mesh, sorted by name). `options`: `meromorph param` options;
+    `describe`: the shape descriptors (modulus, Riemann matrix, spherical-harmonic energies)."""
     from distributed import Client, LocalCluster, as_completed
 
     paths = list(paths)
@@ -299,7 +301,7 @@ def run(paths: Iterable[str], out: str, client=None, options: Sequence[str] = ()
             # run's own, so a finished or failed task of an earlier run is never taken for it.
             token = uuid.uuid4().hex[:8]
             futures = {client.submit(map_one, path, name, str(Path(out).resolve()),
-                                     list(options), time_limit, memory_limit,
+                                     list(options), time_limit, memory_limit, None, describe,
                                      key=f"meromorph-{name}-{token}", pure=False, retries=2): (path, name)
                        for path, name in todo}
             done = len(rows)
@@ -346,6 +348,8 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     parser.add_argument("--memory-limit", type=float, help="megabytes per mesh")
     parser.add_argument("--retry-failed", action="store_true",
                         help="map again the meshes whose row has an error")
+    parser.add_argument("--no-descriptors", action="store_true",
+                        help="leave the shape descriptors out of the table")
     parser.add_argument("--quiet", action="store_true", help="no progress bar")
     arguments, param_options = parser.parse_known_args(argv)
     try:
@@ -366,6 +370,7 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         rows = run(paths, arguments.output, client=client, options=param_options, root=root,
                    time_limit=arguments.time_limit, memory_limit=arguments.memory_limit,
                    retry_failed=arguments.retry_failed, workers=arguments.workers,
+                   describe=not arguments.no_descriptors,
                    progress=not arguments.quiet)
     finally:
         if client is not None:

@@ -37,21 +37,31 @@ def reduced_modulus(tau: complex) -> complex:
     return tau
 
 
-def _normalized_legendre(lmax: int, x: np.ndarray) -> np.ndarray:
-    """Q[l, m, i] = sqrt((2l+1)/(4 pi) (l-m)!/(l+m)!) P_l^m(x_i) for 0 <= m <= l <= lmax, by the
-    stable three-term recurrences (the spherical harmonic is Q e^{i m phi})."""
+def _legendre_by_order(lmax: int, x: np.ndarray):
+    """For m = 0..lmax, yields (m, [Q[m, m], Q[m+1, m], ..., Q[lmax, m]]) where Q[l, m] =
+    sqrt((2l+1)/(4 pi) (l-m)!/(l+m)!) P_l^m(x), by the stable three-term recurrences (the
+    spherical harmonic is Q e^{i m phi}); one order at a time, so memory stays O(lmax n)."""
     sine = np.sqrt(np.clip(1 - x * x, 0, None))
-    Q = np.zeros((lmax + 1, lmax + 1, len(x)))
-    Q[0, 0] = math.sqrt(1 / (4 * math.pi))
-    for m in range(1, lmax + 1):
-        Q[m, m] = -math.sqrt((2 * m + 1) / (2 * m)) * sine * Q[m - 1, m - 1]
-    for m in range(0, lmax):
-        Q[m + 1, m] = math.sqrt(2 * m + 3) * x * Q[m, m]
+    diagonal = np.full(len(x), math.sqrt(1 / (4 * math.pi)))
     for m in range(0, lmax + 1):
+        if m > 0:
+            diagonal = -math.sqrt((2 * m + 1) / (2 * m)) * sine * diagonal
+        column = [diagonal]
+        if m < lmax:
+            column.append(math.sqrt(2 * m + 3) * x * diagonal)
         for l in range(m + 2, lmax + 1):
             a = math.sqrt((4 * l * l - 1) / (l * l - m * m))
             b = math.sqrt(((l - 1) ** 2 - m * m) / (4 * (l - 1) ** 2 - 1))
-            Q[l, m] = a * (x * Q[l - 1, m] - b * Q[l - 2, m])
+            column.append(a * (x * column[-1] - b * column[-2]))
+        yield m, column
+
+
+def _normalized_legendre(lmax: int, x: np.ndarray) -> np.ndarray:
+    """Q[l, m, i] for 0 <= m <= l <= lmax (all at once: for checks on small point sets)."""
+    Q = np.zeros((lmax + 1, lmax + 1, len(x)))
+    for m, column in _legendre_by_order(lmax, x):
+        for k, values in enumerate(column):
+            Q[m + k, m] = values
     return Q
 
 
@@ -63,10 +73,8 @@ def sphere_vertex_weights(sphere: np.ndarray, triangles: np.ndarray) -> np.ndarr
     denominator = 1 + np.einsum("ij,ij->i", a, b) + np.einsum("ij,ij->i", b, c) + \
         np.einsum("ij,ij->i", c, a)
     solid = 2 * np.arctan2(numerator, denominator)
-    weights = np.zeros(len(sphere))
-    for k in range(3):
-        np.add.at(weights, triangles[:, k], solid / 3)
-    return weights
+    return sum(np.bincount(triangles[:, k], weights=solid / 3, minlength=len(sphere))
+               for k in range(3))
 
 
 def spherical_harmonic_energies(vertices: np.ndarray, triangles: np.ndarray,
@@ -85,15 +93,16 @@ def spherical_harmonic_energies(vertices: np.ndarray, triangles: np.ndarray,
     centroid = ((p0 + p1 + p2) / 3 * face_area[:, None]).sum(axis=0) / area
     f = (vertices - centroid) / math.sqrt(area)
     w = sphere_vertex_weights(sphere, triangles)
-    Q = _normalized_legendre(degree, np.clip(sphere[:, 2], -1, 1))
     phi = np.arctan2(sphere[:, 1], sphere[:, 0])
     energies = np.zeros(degree + 1)
     weighted = f * w[:, None]  # (n, 3)
-    for m in range(0, degree + 1):
-        wave = np.exp(-1j * m * phi)
-        for l in range(m, degree + 1):
-            c = (Q[l, m] * wave) @ weighted  # three coefficients, one per coordinate
-            energies[l] += (1 if m == 0 else 2) * float(np.sum(np.abs(c) ** 2))
+    for m, column in _legendre_by_order(degree, np.clip(sphere[:, 2], -1, 1)):
+        # Real and imaginary parts of the coefficients, three per degree (one per coordinate).
+        cosine = weighted * np.cos(m * phi)[:, None]
+        sine = weighted * np.sin(m * phi)[:, None]
+        for k, values in enumerate(column):
+            real, imaginary = values @ cosine, values @ sine
+            energies[m + k] += (1 if m == 0 else 2) * float(np.sum(real**2 + imaginary**2))
     return energies
 
 

@@ -192,6 +192,20 @@ def test_remesh_gives_a_closed_surface_of_the_same_genus():
     assert np.count_nonzero(r.branch) > 0
 
 
+def test_the_spherical_harmonics_are_orthonormal():
+    # Gauss-Legendre in cos(theta) times the trapezoid rule in phi: exact for these degrees.
+    x, wx = np.polynomial.legendre.leggauss(40)
+    phi = np.linspace(0, 2 * np.pi, 80, endpoint=False)
+    X, P = np.meshgrid(x, phi, indexing="ij")
+    W = (wx[:, None] * np.full(80, 2 * np.pi / 80)[None, :]).ravel()
+    Q = descriptors._normalized_legendre(16, X.ravel())
+    Y = {(l, m): Q[l, m] * np.exp(1j * m * P.ravel()) for l in range(17) for m in range(l + 1)}
+    for (l, m), a in Y.items():
+        for (k, n), b in Y.items():
+            if m == n and k >= l:
+                assert abs(np.sum(W * a * np.conj(b)) - (l == k)) < 1e-10, (l, m, k, n)
+
+
 def test_descriptors_are_invariant_and_close_after_remeshing():
     V, F = meromorph.read(DATA / "maxplanck.nf25k.off")
     m = meromorph.param(V, F)
