@@ -25,3 +25,12 @@ def test_every_block_of_the_tutorial_runs(tmp_path, capsys):
     assert "valid" in printed and "cancelled" in printed and "vertices 7" in printed
     assert (tmp_path / "eight.uv.ply").is_file() and (tmp_path / "out" / "table.csv").is_file()
     assert "eight ok 2 2" in printed and "torus ok 1 2" in printed
+
+
+def test_the_set_up_makes_the_package_importable_for_debians_python(tmp_path):
+    import subprocess
+    environment = {k: v for k, v in os.environ.items() if k != "PYTHONPATH"}
+    found = subprocess.run(["/usr/bin/python3", "-c", "import meromorph; print(meromorph.__file__)"],
+                           capture_output=True, text=True, cwd=tmp_path, env=environment)
+    assert found.returncode == 0, found.stderr
+    assert found.stdout.strip().endswith("python/meromorph/__init__.py"), found.stdout
