@@ -32,7 +32,9 @@ struct meromorph_result {
   // The written surface's triangles (the input's, or with vertices added the cut ones), which
   // are the sphere's too when nothing was split.
   std::vector<std::array<int, 3>> surface_triangles;
-  meromorph::MeshArrays input; // the caller's mesh, for meromorph_write_map
+  // The caller's vertex positions, for meromorph_write_map (with the added vertices and
+  // surface_triangles: the surface as written).
+  std::vector<meromorph::Point3> input_positions;
 };
 
 struct meromorph_mesh {
@@ -217,7 +219,7 @@ std::unique_ptr<meromorph_result> map_result(meromorph::MeshArrays &arrays,
     causes.push_back(advice.cause);
   out->advice = join_phrases(causes);
   out->vertices = arrays.positions.size() + out->map.added_vertices.size();
-  out->input = arrays;
+  out->input_positions = std::move(arrays.positions); // (the map no longer reads them)
   if (!out->map.surface_faces.empty()) arrays.triangles = out->map.surface_faces;
   out->triangles = arrays.triangles.size();
   out->surface_triangles = std::move(arrays.triangles);
@@ -375,7 +377,7 @@ std::unique_ptr<meromorph_forms_result> forms_result(meromorph::MeshArrays &arra
   return out;
 }
 
-// The written surface of `result`: its input with the vertices the map added.
+// The files of `result` (meromorph_write_map).
 void write_map_files(const meromorph_result &result, const char *surface_path,
                      const char *sphere_path, const char *report_path,
                      const char *const *protected_paths, size_t protected_count) {
@@ -401,9 +403,14 @@ void write_map_files(const meromorph_result &result, const char *surface_path,
     sphere_file = outputs.add(sphere_path);
   }
   if (report_path) report_file = outputs.add(report_path);
+  // The surface as written (as add_written_vertices makes it from the input mesh).
+  MeshArrays written;
+  written.positions = result.input_positions;
+  for (const AddedVertex &added : result.map.added_vertices)
+    written.positions.emplace_back(added.position[0], added.position[1], added.position[2]);
+  written.triangles = result.surface_triangles;
   Mesh mesh;
-  mesh_from_arrays(result.input, mesh);
-  add_written_vertices(result.map, mesh);
+  mesh_from_arrays(written, mesh);
   outputs.writing([&] {
     if (surface_path) write_surface(mesh, result.map, surface_format, surface_file);
     if (sphere_path) write_layered_sphere(mesh, result.map, sphere_file);

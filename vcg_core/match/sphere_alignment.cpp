@@ -117,19 +117,19 @@ double mismatch(const Samples &samples, const Raster &target, const Eigen::Matri
   return samples.points.empty() ? 0 : sum / double(samples.points.size());
 }
 
-// Local search: small rotations about the three axes, the step halved when none helps.
-template <class Mismatch>
-Eigen::Matrix3d refined(Mismatch &&mismatch_of, Eigen::Matrix3d rotation, double first_step,
-                        double &cost) {
-  cost = mismatch_of(rotation);
-  for (double step = first_step; step > 0.001 * pi / 180;) {
+// Local search: small rotations about the three axes, the step halved from 8 degrees when none
+// helps, down to 0.001 degrees.
+Eigen::Matrix3d refined(const Samples &samples, const Raster &target, Eigen::Matrix3d rotation,
+                        double low, double high, double &cost) {
+  cost = mismatch(samples, target, rotation, low, high);
+  for (double step = 8.0 * pi / 180; step > 0.001 * pi / 180;) {
     bool better = false;
     for (int axis = 0; axis < 3 && !better; ++axis)
       for (double sign : {1.0, -1.0}) {
         Eigen::Vector3d turn = Eigen::Vector3d::Zero();
         turn[axis] = sign * step;
         const Eigen::Matrix3d candidate = rotation_by(turn) * rotation;
-        const double c = mismatch_of(candidate);
+        const double c = mismatch(samples, target, candidate, low, high);
         if (c < cost) {
           cost = c, rotation = candidate, better = true;
           break;
@@ -347,9 +347,7 @@ SphereAlignment align_by_functions(const SphereFunction &source, const SphereFun
       starts.push_back(c);
   }
   parallel_for(starts.size(), [&](size_t k) {
-    starts[k].rotation =
-        refined([&](const Eigen::Matrix3d &r) { return mismatch(fine, raster, r, low, high); },
-                starts[k].rotation, 8.0 * pi / 180, starts[k].cost);
+    starts[k].rotation = refined(fine, raster, starts[k].rotation, low, high, starts[k].cost);
   });
   std::sort(starts.begin(), starts.end(),
             [](const Candidate &x, const Candidate &y) { return x.cost < y.cost; });

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include <Eigen/Geometry>
 
@@ -10,6 +11,7 @@
 #include "common/parallel_for.h"
 #include "job/surface_map.h"
 #include "maps/parameterization.h"
+#include "mesh/face_vectors.h"
 #include "sphere/sphere_triangle_grid.h"
 
 namespace meromorph {
@@ -104,11 +106,6 @@ Located located(const SphereOfSurface &to, const SphereTriangleGrid &grid,
   return located;
 }
 
-double corner_angle(const Eigen::Vector3d &at, const Eigen::Vector3d &p, const Eigen::Vector3d &q) {
-  const Eigen::Vector3d u = p - at, v = q - at;
-  return std::atan2(u.cross(v).norm(), u.dot(v));
-}
-
 void check_landmarks(const std::vector<std::pair<int, int>> &landmarks, size_t source_vertices,
                      size_t target_vertices) {
   for (size_t k = 0; k < landmarks.size(); ++k) {
@@ -140,7 +137,10 @@ SurfaceMatch match_surfaces(Mesh &source, Mesh &target, const MatchOptions &opti
   progress.report(0.8, "aligning the spheres");
 
   start = Clock::now();
-  const SphereTriangleGrid source_grid(from.sphere, from.faces), target_grid(to.sphere, to.faces);
+  const SphereTriangleGrid target_grid(to.sphere, to.faces);
+  // The source's sphere triangles are searched by the automatic alignment and the match back only.
+  std::optional<SphereTriangleGrid> source_grid;
+  if (options.landmarks.empty() || options.both) source_grid.emplace(from.sphere, from.faces);
   if (!options.landmarks.empty()) {
     out.alignment = align_by_landmarks(from.sphere, to.sphere, options.landmarks);
   } else {
@@ -148,7 +148,7 @@ SurfaceMatch match_surfaces(Mesh &source, Mesh &target, const MatchOptions &opti
         log_conformal_factor(from.positions, from.sphere, from.faces);
     const std::vector<double> target_factor =
         log_conformal_factor(to.positions, to.sphere, to.faces);
-    out.alignment = align_by_functions({from.faces, source_grid, source_factor},
+    out.alignment = align_by_functions({from.faces, *source_grid, source_factor},
                                        {to.faces, target_grid, target_factor});
   }
   out.timings_ms.emplace_back("align", since(start));
@@ -207,7 +207,7 @@ SurfaceMatch match_surfaces(Mesh &source, Mesh &target, const MatchOptions &opti
     std::vector<Eigen::Vector3d> back(to.sphere.size());
     parallel_for(back.size(),
                  [&](size_t v) { back[v] = out.alignment.apply_inverse(to.sphere[v]); });
-    Located backward = located(from, source_grid, back);
+    Located backward = located(from, *source_grid, back);
     double sum = 0, worst = 0;
     long long counted = 0;
     for (size_t v = 0; v < n; ++v) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include "common/parallel_for.h"
 
 namespace meromorph {
@@ -94,6 +96,12 @@ FaceFrame FaceGeometry::frame(size_t f) const {
 double corner_angle(const MeshFace &face, int k) {
   const Point3 u = face.cP((k + 1) % 3) - face.cP(k), w = face.cP((k + 2) % 3) - face.cP(k);
   return std::atan2((u ^ w).Norm(), u * w);
+}
+
+double corner_angle(const Eigen::Vector3d &at, const Eigen::Vector3d &to,
+                    const Eigen::Vector3d &from) {
+  const Eigen::Vector3d u = to - at, v = from - at;
+  return std::atan2(u.cross(v).norm(), u.dot(v));
 }
 
 double smallest_angle(const MeshFace &face) {

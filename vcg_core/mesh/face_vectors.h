@@ -53,6 +53,9 @@ FaceGeometry face_geometry(const FaceCorners &faces);
 
 // The angle at corner k of a face, in radians.
 double corner_angle(const MeshFace &face, int k);
+// The corner angle at `at` between the sides to `to` and to `from` (radians).
+double corner_angle(const Eigen::Vector3d &at, const Eigen::Vector3d &to,
+                    const Eigen::Vector3d &from);
 
 // The smallest of a face's three corner angles, in radians.
 double smallest_angle(const MeshFace &face);

@@ -11,6 +11,7 @@
 #include <Eigen/Geometry>
 
 #include "common/errors.h"
+#include "mesh/face_vectors.h"
 
 namespace meromorph {
 namespace {
@@ -203,12 +204,6 @@ bool lifted_face_folds(const MappedSurface &surface, const LiftedSphere &lifted,
     reference += at_corner;
   }
   return normal.dot(reference) < 0;
-}
-
-double corner_angle(const Eigen::Vector3d &at, const Eigen::Vector3d &to,
-                    const Eigen::Vector3d &from) {
-  const Eigen::Vector3d u = to - at, v = from - at;
-  return std::atan2(u.cross(v).norm(), u.dot(v));
 }
 
 double smallest_corner_angle(const LiftedSphere &lifted, const std::array<int, 3> &face) {

@@ -53,9 +53,6 @@ LiftedSphere lift_sphere(const MappedSurface &surface, const std::vector<int> &f
 bool lifted_face_folds(const MappedSurface &surface, const LiftedSphere &lifted,
                        const std::array<int, 3> &face);
 
-// The corner angle at `at` between the sides to `to` and to `from` (radians).
-double corner_angle(const Eigen::Vector3d &at, const Eigen::Vector3d &to,
-                    const Eigen::Vector3d &from);
 // A lifted face's smallest corner angle on the surface (radians).
 double smallest_corner_angle(const LiftedSphere &lifted, const std::array<int, 3> &face);
 // Whether a lifted face is positively oriented on the sphere (its sphere values counter-clockwise

@@ -7,6 +7,8 @@
 
 #include <Eigen/Geometry>
 
+#include "mesh/face_vectors.h"
+
 namespace meromorph {
 namespace {
 
