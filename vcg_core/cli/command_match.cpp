@@ -64,6 +64,42 @@ void write_matched_mesh(const Mesh &source, const MatchedPoints &points, const s
   save_mesh(matched, MeshFormat::ply, file, options);
 }
 
+const std::string &match_method(const SurfaceMatch &match) {
+  return match.genus == 1 ? match.torus.method : match.alignment.method;
+}
+
+std::string modulus_words(std::complex<double> tau) {
+  std::ostringstream words;
+  words << tau.real() << (tau.imag() < 0 ? " - " : " + ") << std::abs(tau.imag()) << "i";
+  return words.str();
+}
+
+// How the source's image was put on the target's: the sphere's rotation or the tori's lattice map.
+nlohmann::json alignment_json(const SurfaceMatch &match) {
+  nlohmann::json alternatives = nlohmann::json::array();
+  if (match.genus == 1) {
+    const auto matrix = [](const Eigen::Matrix2i &m) {
+      return nlohmann::json{{m(0, 0), m(0, 1)}, {m(1, 0), m(1, 1)}};
+    };
+    for (const auto &alternative : match.torus.alternatives)
+      alternatives.push_back({{"lattice_map", matrix(alternative.lattice_map)},
+                              {"shift", {alternative.shift[0], alternative.shift[1]}},
+                              {"cost", alternative.cost}});
+    return {{"lattice_map", matrix(match.torus.lattice_map)},
+            {"shift", {match.torus.shift[0], match.torus.shift[1]}},
+            {"dilatation", match.torus.dilatation},
+            {"cost", match.torus.cost},
+            {"alternatives", alternatives},
+            {"landmark_flat_distance_max", match.torus.landmark_distance_max}};
+  }
+  for (const auto &alternative : match.alignment.alternatives)
+    alternatives.push_back({{"angle_from_best_degrees", alternative.angle_from_best_degrees},
+                            {"cost", alternative.cost}});
+  return {{"cost", match.alignment.cost},
+          {"alternatives", alternatives},
+          {"landmark_sphere_distance_max", match.alignment.landmark_distance_max}};
+}
+
 int run_match(const MatchCommandOptions &options) {
   std::vector<std::string> inputs{options.source, options.target};
   if (!options.landmarks.empty()) inputs.push_back(options.landmarks);
@@ -90,29 +126,24 @@ int run_match(const MatchCommandOptions &options) {
   nlohmann::json timings = {{"read", source_input.read_ms + target_input.read_ms}};
   for (const auto &[stage, ms] : match.timings_ms)
     timings[stage] = ms;
-  nlohmann::json alternatives = nlohmann::json::array();
-  for (const auto &alternative : match.alignment.alternatives)
-    alternatives.push_back({{"angle_from_best_degrees", alternative.angle_from_best_degrees},
-                            {"cost", alternative.cost}});
-  nlohmann::json report = {
-      {"source", source_json(source_input.source)},
-      {"target", source_json(target_input.source)},
-      {"genus", match.genus},
-      {"method", match.alignment.method},
-      {"alignment",
-       {{"cost", match.alignment.cost},
-        {"alternatives", alternatives},
-        {"landmark_sphere_distance_max", match.alignment.landmark_distance_max}}},
-      {"landmarks",
-       {{"count", settings.landmarks.size()},
-        {"residual_mean", match.landmark_residual_mean},
-        {"residual_max", match.landmark_residual_max}}},
-      {"matched_mesh",
-       {{"angle_error_mean_degrees", match.angle_error_mean_degrees},
-        {"folded_faces", match.folded_faces},
-        {"unmatched_vertices", match.unmatched_vertices}}},
-      {"timings_ms", timings},
-      {"version", MEROMORPH_VERSION}};
+  nlohmann::json report = {{"source", source_json(source_input.source)},
+                           {"target", source_json(target_input.source)},
+                           {"genus", match.genus},
+                           {"method", match_method(match)},
+                           {"alignment", alignment_json(match)},
+                           {"landmarks",
+                            {{"count", settings.landmarks.size()},
+                             {"residual_mean", match.landmark_residual_mean},
+                             {"residual_max", match.landmark_residual_max}}},
+                           {"matched_mesh",
+                            {{"angle_error_mean_degrees", match.angle_error_mean_degrees},
+                             {"folded_faces", match.folded_faces},
+                             {"unmatched_vertices", match.unmatched_vertices}}},
+                           {"timings_ms", timings},
+                           {"version", MEROMORPH_VERSION}};
+  if (match.genus == 1)
+    report["moduli"] = {{"source", {match.source_modulus.real(), match.source_modulus.imag()}},
+                        {"target", {match.target_modulus.real(), match.target_modulus.imag()}}};
   if (settings.both)
     report["round_trip"] = {{"mean", match.round_trip_mean}, {"max", match.round_trip_max}};
   outputs.writing([&] {
@@ -124,16 +155,22 @@ int run_match(const MatchCommandOptions &options) {
   const double total_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   if (!options.quiet) {
-    std::cout << options.source << " -> " << options.target << ": genus 0, "
-              << match.alignment.method << "; matched mesh: angle error "
-              << match.angle_error_mean_degrees << " deg, " << match.folded_faces
-              << " folded faces";
+    std::cout << options.source << " -> " << options.target << ": genus " << match.genus << ", "
+              << match_method(match);
+    if (match.genus == 1)
+      std::cout << " (moduli " << modulus_words(match.source_modulus) << " and "
+                << modulus_words(match.target_modulus) << ", dilatation " << match.torus.dilatation
+                << ")";
+    std::cout << "; matched mesh: angle error " << match.angle_error_mean_degrees << " deg, "
+              << match.folded_faces << " folded faces";
     if (!settings.landmarks.empty())
       std::cout << ", landmarks within " << 100 * match.landmark_residual_max
                 << "% of the diagonal";
-    if (!match.alignment.alternatives.empty())
-      std::cout << "; " << match.alignment.alternatives.size()
-                << " other rotations fit almost as well (a symmetric surface: give landmarks)";
+    const size_t alternatives =
+        match.genus == 1 ? match.torus.alternatives.size() : match.alignment.alternatives.size();
+    if (alternatives > 0)
+      std::cout << "; " << alternatives
+                << " other alignments fit almost as well (a symmetric surface: give landmarks)";
     if (settings.both) std::cout << "; round trip within " << 100 * match.round_trip_mean << "%";
     std::cout << " (" << total_ms / 1000 << " s)\n";
   }
@@ -146,14 +183,16 @@ Command add_match_command(CLI::App &app) {
   auto options = std::make_shared<MatchCommandOptions>();
   CLI::App *match = app.add_subcommand(
       "match", "Every vertex of SOURCE on a point of TARGET, through their conformal spheres "
-               "(closed surfaces of genus 0): OUT.ply is SOURCE's mesh on the matched points, with "
+               "or flat tori (closed surfaces of genus 0 or 1): OUT.ply is SOURCE's mesh on the "
+               "matched points, with "
                "per-vertex target_face, target_b1 and target_b2.");
   match->add_option("SOURCE", options->source, "mesh file (.ply, .obj, .off, .stl)")->required();
   match->add_option("TARGET", options->target, "mesh file (.ply, .obj, .off, .stl)")->required();
   match->add_option("-o,--output", options->output, "the matched mesh (.ply)")->required();
-  match->add_option("--landmarks", options->landmarks,
-                    "text file of pairs \"i j\": SOURCE vertex i corresponds to TARGET vertex j "
-                    "(three or more; default: aligned automatically)");
+  match->add_option(
+      "--landmarks", options->landmarks,
+      "text file of pairs \"i j\": SOURCE vertex i corresponds to TARGET vertex j "
+      "(genus 0: three or more; genus 1: one or more; default: aligned automatically)");
   match->add_option("--report", options->report, "write the JSON report here");
   match->add_option("--both", options->both,
                     "also match TARGET onto SOURCE, write it here (.ply) and report the round "

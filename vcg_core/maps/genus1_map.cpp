@@ -15,29 +15,6 @@ namespace meromorph {
 
 namespace {
 
-// z per vertex: psi integrated along a breadth-first tree from `root` (z = 0 there).
-std::vector<Complex> integrate_from(int root, const IndexLists &incident, const MeshEdges &edges,
-                                    const Eigen::VectorXcd &psi) {
-  std::vector<Complex> flat(incident.size(), Complex(0, 0));
-  std::vector<char> reached(incident.size(), 0);
-  std::queue<int> frontier;
-  frontier.push(root);
-  reached[size_t(root)] = 1;
-  while (!frontier.empty()) {
-    const int v = frontier.front();
-    frontier.pop();
-    for (int e : incident[size_t(v)]) {
-      const bool forward = edges.vertices[e][0] == v;
-      const int w = forward ? edges.vertices[e][1] : edges.vertices[e][0];
-      if (reached[size_t(w)]) continue;
-      reached[size_t(w)] = 1;
-      flat[size_t(w)] = flat[size_t(v)] + (forward ? psi[e] : -psi[e]);
-      frontier.push(w);
-    }
-  }
-  return flat;
-}
-
 // The automatic origin. The double pole doubles the corners there: they must be well below 90
 // degrees. The pole's neighbourhood covers a large part of the sphere: it goes where the flat
 // metric is large (on a long thin part, whose flat image is exponentially small, the rest of the
@@ -116,7 +93,7 @@ std::vector<int> origin_candidates(const PreparedMesh &prepared, const Eigen::Ve
 std::vector<int> genus1_origin_candidates(const PreparedMesh &prepared, const Eigen::VectorXcd &psi,
                                           const WeierstrassP &p_function) {
   return origin_candidates(
-      prepared, psi, integrate_from(0, prepared.edges_at_vertex, prepared.edges, psi), p_function);
+      prepared, psi, integrated_form(0, prepared.edges_at_vertex, prepared.edges, psi), p_function);
 }
 
 Genus1Map genus1_map(const PreparedMesh &prepared, const Eigen::VectorXcd &psi, Complex period_a,
@@ -130,9 +107,9 @@ Genus1Map genus1_map(const PreparedMesh &prepared, const Eigen::VectorXcd &psi, 
   const IndexLists &incident = prepared.edges_at_vertex;
   if (origin_vertex < 0)
     origin_vertex =
-        origin_candidates(prepared, psi, integrate_from(0, incident, edges, psi), out.p_function)
+        origin_candidates(prepared, psi, integrated_form(0, incident, edges, psi), out.p_function)
             .front();
-  out.flat = integrate_from(origin_vertex, incident, edges, psi);
+  out.flat = integrated_form(origin_vertex, incident, edges, psi);
 
   out.values.resize(size_t(vertex_count));
   parallel_for(out.flat.size(), [&](size_t v) {
@@ -146,6 +123,28 @@ Genus1Map genus1_map(const PreparedMesh &prepared, const Eigen::VectorXcd &psi, 
   out.origin_vertex = origin_vertex;
   out.branch_values[3] = {Complex(), true};
   return out;
+}
+
+std::vector<Complex> integrated_form(int root, const IndexLists &incident, const MeshEdges &edges,
+                                     const Eigen::VectorXcd &psi) {
+  std::vector<Complex> flat(incident.size(), Complex(0, 0));
+  std::vector<char> reached(incident.size(), 0);
+  std::queue<int> frontier;
+  frontier.push(root);
+  reached[size_t(root)] = 1;
+  while (!frontier.empty()) {
+    const int v = frontier.front();
+    frontier.pop();
+    for (int e : incident[size_t(v)]) {
+      const bool forward = edges.vertices[e][0] == v;
+      const int w = forward ? edges.vertices[e][1] : edges.vertices[e][0];
+      if (reached[size_t(w)]) continue;
+      reached[size_t(w)] = 1;
+      flat[size_t(w)] = flat[size_t(v)] + (forward ? psi[e] : -psi[e]);
+      frontier.push(w);
+    }
+  }
+  return flat;
 }
 
 } // namespace meromorph

@@ -38,6 +38,11 @@ struct Genus1Map {
 std::vector<int> genus1_origin_candidates(const PreparedMesh &prepared, const Eigen::VectorXcd &psi,
                                           const WeierstrassP &p_function);
 
+// z per vertex: the form psi integrated along a breadth-first tree from `root` (z = 0 there);
+// `incident`: the edges at each vertex.
+std::vector<Complex> integrated_form(int root, const IndexLists &incident, const MeshEdges &edges,
+                                     const Eigen::VectorXcd &psi);
+
 Genus1Map genus1_map(const PreparedMesh &prepared, const Eigen::VectorXcd &psi, Complex period_a,
                      Complex period_b, int origin_vertex);
 

@@ -199,17 +199,16 @@ Eigen::Vector3d SphereAlignment::apply_inverse(const Eigen::Vector3d &y) const {
 }
 
 std::vector<double> log_conformal_factor(const std::vector<Eigen::Vector3d> &positions,
-                                         const std::vector<Eigen::Vector3d> &sphere,
-                                         const std::vector<std::array<int, 3>> &triangles) {
+                                         const std::vector<std::array<int, 3>> &triangles,
+                                         const std::vector<double> &image_areas) {
   std::vector<double> surface(positions.size(), 0.0), image(positions.size(), 0.0);
   double surface_total = 0, image_total = 0;
-  for (const auto &t : triangles) {
+  for (size_t f = 0; f < triangles.size(); ++f) {
+    const auto &t = triangles[f];
     const double a = 0.5 * (positions[size_t(t[1])] - positions[size_t(t[0])])
                                .cross(positions[size_t(t[2])] - positions[size_t(t[0])])
                                .norm();
-    const double b = 0.5 * (sphere[size_t(t[1])] - sphere[size_t(t[0])])
-                               .cross(sphere[size_t(t[2])] - sphere[size_t(t[0])])
-                               .norm();
+    const double b = std::abs(image_areas[f]);
     for (int k = 0; k < 3; ++k) {
       surface[size_t(t[k])] += a / 3;
       image[size_t(t[k])] += b / 3;

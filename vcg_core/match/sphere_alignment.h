@@ -46,11 +46,12 @@ struct SphereAlignment {
   Eigen::Vector3d apply_inverse(const Eigen::Vector3d &y) const;
 };
 
-// Per vertex: log of (its share of the surface's area) / (its share of the sphere's), the
-// conformal factor in a form that rigid motion, scale and refinement leave alone.
+// Per vertex: log of (its share of the surface's area) / (its share of the image's: the sphere,
+// the flat torus; `image_areas` per triangle), the conformal factor in a form that rigid motion,
+// scale and refinement leave alone.
 std::vector<double> log_conformal_factor(const std::vector<Eigen::Vector3d> &positions,
-                                         const std::vector<Eigen::Vector3d> &sphere,
-                                         const std::vector<std::array<int, 3>> &triangles);
+                                         const std::vector<std::array<int, 3>> &triangles,
+                                         const std::vector<double> &image_areas);
 
 SphereAlignment align_by_landmarks(const std::vector<Eigen::Vector3d> &source_sphere,
                                    const std::vector<Eigen::Vector3d> &target_sphere,

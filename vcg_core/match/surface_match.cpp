@@ -9,24 +9,54 @@
 
 #include "common/errors.h"
 #include "common/parallel_for.h"
+#include "forms/holomorphic_pipeline.h"
 #include "job/surface_map.h"
 #include "maps/parameterization.h"
+#include "match/flat_torus.h"
 #include "mesh/face_vectors.h"
+#include "mesh/mesh_edges.h"
 #include "sphere/sphere_triangle_grid.h"
 
 namespace meromorph {
 namespace {
 
-// A surface as its genus-0 map was written: the input's vertices then any added, its faces
-// (pieces of the input's), and each vertex's sphere point.
-struct SphereOfSurface {
+// A surface as its map was written: the input's vertices then any added, its faces (pieces of
+// the input's), and (genus 0) each vertex's sphere point.
+struct MappedSurface {
   std::vector<Eigen::Vector3d> positions, sphere;
   std::vector<std::array<int, 3>> faces, input_faces;
   std::vector<int> face_source; // per written face, the input's face it is part of
   double diagonal = 1;
 };
 
-SphereOfSurface genus0_sphere(Mesh &mesh, const char *which, const Progress &progress) {
+std::vector<Eigen::Vector3d> positions_of(const Mesh &mesh) {
+  std::vector<Eigen::Vector3d> out;
+  for (const auto &vertex : mesh.vert)
+    out.emplace_back(vertex.cP()[0], vertex.cP()[1], vertex.cP()[2]);
+  return out;
+}
+
+std::vector<std::array<int, 3>> triangles_of(const Mesh &mesh) {
+  std::vector<std::array<int, 3>> out;
+  for (const auto &face : mesh.face)
+    out.push_back({int(index_of(mesh, face.cV(0))), int(index_of(mesh, face.cV(1))),
+                   int(index_of(mesh, face.cV(2)))});
+  return out;
+}
+
+double diagonal_of(const std::vector<Eigen::Vector3d> &positions) {
+  Eigen::Vector3d low = positions.front(), high = low;
+  for (const Eigen::Vector3d &p : positions)
+    low = low.cwiseMin(p), high = high.cwiseMax(p);
+  return std::max((high - low).norm(), 1e-300);
+}
+
+// V - E + F of a closed triangle mesh (each edge on two faces): 2 - 2 genus when it is one part.
+int closed_genus_estimate(const Mesh &mesh) {
+  return (2 - (int(mesh.vert.size()) - int(mesh.face.size()) / 2)) / 2;
+}
+
+MappedSurface genus0_sphere(Mesh &mesh, const char *which, const Progress &progress) {
   const Parameterization map = parameterize_surface(mesh, ParameterizeOptions{}, progress);
   const std::string name = which;
   if (map.components.size() > 1)
@@ -34,16 +64,14 @@ SphereOfSurface genus0_sphere(Mesh &mesh, const char *which, const Progress &pro
                      " parts: a match takes one closed surface; map its parts apart");
   if (map.genus != 0)
     throw InputError("the " + name + " has genus " + std::to_string(map.genus) +
-                     ": matching covers genus 0 so far (both surfaces closed, of genus 0)");
+                     ": matching covers genus 0 and 1 so far (both surfaces closed, of the same "
+                     "genus)");
   if (!map.valid)
     throw InputError("no valid map of the " + name +
                      " on its triangulation: " + join_phrases(map.invalid));
-  SphereOfSurface out;
-  for (const auto &vertex : mesh.vert)
-    out.positions.emplace_back(vertex.cP()[0], vertex.cP()[1], vertex.cP()[2]);
-  for (const auto &face : mesh.face)
-    out.input_faces.push_back({int(index_of(mesh, face.cV(0))), int(index_of(mesh, face.cV(1))),
-                               int(index_of(mesh, face.cV(2)))});
+  MappedSurface out;
+  out.positions = positions_of(mesh);
+  out.input_faces = triangles_of(mesh);
   for (const AddedVertex &added : map.added_vertices)
     out.positions.push_back(added.position);
   out.faces = map.surface_faces.empty() ? out.input_faces : map.surface_faces;
@@ -52,10 +80,46 @@ SphereOfSurface genus0_sphere(Mesh &mesh, const char *which, const Progress &pro
     for (size_t f = 0; f < out.faces.size(); ++f)
       out.face_source.push_back(int(f));
   out.sphere = map.sphere;
-  Eigen::Vector3d low = out.positions.front(), high = low;
-  for (const Eigen::Vector3d &p : out.positions)
-    low = low.cwiseMin(p), high = high.cwiseMax(p);
-  out.diagonal = std::max((high - low).norm(), 1e-300);
+  out.diagonal = diagonal_of(out.positions);
+  return out;
+}
+
+std::vector<double> sphere_face_areas(const MappedSurface &surface) {
+  std::vector<double> out;
+  for (const auto &t : surface.faces)
+    out.push_back(0.5 * (surface.sphere[size_t(t[1])] - surface.sphere[size_t(t[0])])
+                            .cross(surface.sphere[size_t(t[2])] - surface.sphere[size_t(t[0])])
+                            .norm());
+  return out;
+}
+
+// A genus-1 surface as a flat torus, on its own triangles.
+struct TorusOfSurface {
+  MappedSurface surface;
+  FlatTorus torus;
+  std::vector<int> face_corners; // 3 per face
+  std::vector<double> factor;    // log conformal factor per vertex
+};
+
+TorusOfSurface genus1_torus(const Mesh &mesh, const char *which, const Progress &progress) {
+  const std::string name = which;
+  const HolomorphicForms forms = compute_holomorphic_forms(mesh, SolverKind::cholmod, progress);
+  if (forms.genus != 1)
+    throw InputError("the " + name + " has genus " + std::to_string(forms.genus) +
+                     ": matching covers genus 0 and 1 so far");
+  TorusOfSurface out;
+  out.torus = flat_torus(mesh, build_mesh_edges(mesh), forms.normalized.front(),
+                         forms.riemann_matrix(0, 0));
+  MappedSurface &surface = out.surface;
+  surface.positions = positions_of(mesh);
+  surface.faces = surface.input_faces = triangles_of(mesh);
+  for (size_t f = 0; f < surface.faces.size(); ++f) {
+    surface.face_source.push_back(int(f));
+    for (int k = 0; k < 3; ++k)
+      out.face_corners.push_back(surface.faces[f][size_t(k)]);
+  }
+  surface.diagonal = diagonal_of(surface.positions);
+  out.factor = log_conformal_factor(surface.positions, surface.faces, out.torus.face_areas);
   return out;
 }
 
@@ -77,17 +141,23 @@ struct Located {
   std::vector<Eigen::Vector3d> written_weights;
 };
 
-Located located(const SphereOfSurface &to, const SphereTriangleGrid &grid,
-                const std::vector<Eigen::Vector3d> &images) {
+// `holding(v)`: the written triangle of `to` that holds image v, and the weights there.
+template <class Holding>
+Located located(const MappedSurface &to, size_t count, const Holding &holding) {
+  const size_t image_count = count;
   Located located;
-  located.written_face.assign(images.size(), -1);
-  located.written_weights.assign(images.size(), Eigen::Vector3d::Zero());
+  located.written_face.assign(image_count, -1);
+  located.written_weights.assign(image_count, Eigen::Vector3d::Zero());
   MatchedPoints &out = located.points;
-  out.target_face.assign(images.size(), -1);
-  out.weights.assign(images.size(), Eigen::Vector2d::Zero());
-  out.position.assign(images.size(), Eigen::Vector3d::Constant(std::nan("")));
-  parallel_for(images.size(), [&](size_t v) {
-    const SphereTriangleGrid::Hold hold = grid.holding_with_weights(images[v]);
+  out.target_face.assign(image_count, -1);
+  out.weights.assign(image_count, Eigen::Vector2d::Zero());
+  out.position.assign(image_count, Eigen::Vector3d::Constant(std::nan("")));
+  parallel_for(image_count, [&](size_t v) {
+    const std::pair<int, Eigen::Vector3d> found = holding(v);
+    const struct {
+      int triangle;
+      Eigen::Vector3d weights;
+    } hold{found.first, found.second};
     if (hold.triangle < 0) return;
     const auto &face = to.faces[size_t(hold.triangle)];
     const Eigen::Vector3d p = hold.weights[0] * to.positions[size_t(face[0])] +
@@ -118,59 +188,18 @@ void check_landmarks(const std::vector<std::pair<int, int>> &landmarks, size_t s
   }
 }
 
-} // namespace
-
-SurfaceMatch match_surfaces(Mesh &source, Mesh &target, const MatchOptions &options,
-                            const Progress &progress) {
-  using Clock = std::chrono::steady_clock;
-  const auto since = [](Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-  };
-  check_landmarks(options.landmarks, source.vert.size(), target.vert.size());
-  SurfaceMatch out;
-  auto start = Clock::now();
-  const SphereOfSurface from = genus0_sphere(source, "source", progress.range(0.0, 0.4));
-  out.timings_ms.emplace_back("map source", since(start));
-  start = Clock::now();
-  const SphereOfSurface to = genus0_sphere(target, "target", progress.range(0.4, 0.8));
-  out.timings_ms.emplace_back("map target", since(start));
-  progress.report(0.8, "aligning the spheres");
-
-  start = Clock::now();
-  const SphereTriangleGrid target_grid(to.sphere, to.faces);
-  // The source's sphere triangles are searched by the automatic alignment and the match back only.
-  std::optional<SphereTriangleGrid> source_grid;
-  if (options.landmarks.empty() || options.both) source_grid.emplace(from.sphere, from.faces);
-  if (!options.landmarks.empty()) {
-    out.alignment = align_by_landmarks(from.sphere, to.sphere, options.landmarks);
-  } else {
-    const std::vector<double> source_factor =
-        log_conformal_factor(from.positions, from.sphere, from.faces);
-    const std::vector<double> target_factor =
-        log_conformal_factor(to.positions, to.sphere, to.faces);
-    out.alignment = align_by_functions({from.faces, *source_grid, source_factor},
-                                       {to.faces, target_grid, target_factor});
-  }
-  out.timings_ms.emplace_back("align", since(start));
-  progress.report(0.9, "matching the vertices");
-
-  start = Clock::now();
-  const size_t n = source.vert.size();
-  std::vector<Eigen::Vector3d> images(n);
-  parallel_for(n, [&](size_t v) { images[v] = out.alignment.apply(from.sphere[v]); });
-  const Located forward = located(to, target_grid, images);
-  out.forward = forward.points;
-  for (size_t v = 0; v < n; ++v)
+// Landmarks, angle error and folds of the matched mesh (SOURCE's triangles on the points).
+void measure_matched_mesh(const MappedSurface &from, const MappedSurface &to,
+                          const std::vector<std::pair<int, int>> &landmarks, SurfaceMatch &out) {
+  for (size_t v = 0; v < out.forward.target_face.size(); ++v)
     out.unmatched_vertices += out.forward.target_face[v] < 0;
-
   // Landmarks: where the source's landed against the target's own vertex.
-  for (const auto &[i, j] : options.landmarks) {
+  for (const auto &[i, j] : landmarks) {
     const double d =
         (out.forward.position[size_t(i)] - to.positions[size_t(j)]).norm() / to.diagonal;
     out.landmark_residual_max = std::max(out.landmark_residual_max, std::isnan(d) ? 1.0 : d);
-    out.landmark_residual_mean += (std::isnan(d) ? 1.0 : d) / double(options.landmarks.size());
+    out.landmark_residual_mean += (std::isnan(d) ? 1.0 : d) / double(landmarks.size());
   }
-  // The matched mesh: the source's triangles on the matched points.
   double angle_sum = 0;
   long long corners = 0;
   for (const auto &face : from.input_faces) {
@@ -200,37 +229,145 @@ SurfaceMatch match_surfaces(Mesh &source, Mesh &target, const MatchOptions &opti
     }
   }
   out.angle_error_mean_degrees = corners ? angle_sum / double(corners) * 180 / M_PI : 0;
+}
 
+// The round trip: a source vertex's point on the target, carried back by the target's written
+// vertices' points on the source; the target's input vertices' points become `out.backward`.
+void measure_round_trip(const MappedSurface &from, const MappedSurface &to, const Located &forward,
+                        Located backward, size_t target_vertices, SurfaceMatch &out) {
+  double sum = 0, worst = 0;
+  long long counted = 0;
+  for (size_t v = 0; v < forward.written_face.size(); ++v) {
+    const int face = forward.written_face[v];
+    if (face < 0) continue;
+    Eigen::Vector3d p = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k)
+      p += forward.written_weights[v][k] *
+           backward.points.position[size_t(to.faces[size_t(face)][size_t(k)])];
+    const double d = p.allFinite() ? (p - from.positions[v]).norm() / from.diagonal : 1.0;
+    sum += d, worst = std::max(worst, d), ++counted;
+  }
+  out.round_trip_mean = counted ? sum / double(counted) : -1;
+  out.round_trip_max = counted ? worst : -1;
+  MatchedPoints &points = backward.points;
+  points.target_face.resize(target_vertices);
+  points.weights.resize(target_vertices);
+  points.position.resize(target_vertices);
+  out.backward = std::move(points);
+}
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+SurfaceMatch match_spheres(Mesh &source, Mesh &target, const MatchOptions &options,
+                           const Progress &progress) {
+  SurfaceMatch out;
+  auto start = Clock::now();
+  const MappedSurface from = genus0_sphere(source, "source", progress.range(0.0, 0.4));
+  out.timings_ms.emplace_back("map source", since(start));
+  start = Clock::now();
+  const MappedSurface to = genus0_sphere(target, "target", progress.range(0.4, 0.8));
+  out.timings_ms.emplace_back("map target", since(start));
+  progress.report(0.8, "aligning the spheres");
+
+  start = Clock::now();
+  const SphereTriangleGrid target_grid(to.sphere, to.faces);
+  // The source's sphere triangles are searched by the automatic alignment and the match back only.
+  std::optional<SphereTriangleGrid> source_grid;
+  if (options.landmarks.empty() || options.both) source_grid.emplace(from.sphere, from.faces);
+  if (!options.landmarks.empty()) {
+    out.alignment = align_by_landmarks(from.sphere, to.sphere, options.landmarks);
+  } else {
+    const std::vector<double> source_factor =
+        log_conformal_factor(from.positions, from.faces, sphere_face_areas(from));
+    const std::vector<double> target_factor =
+        log_conformal_factor(to.positions, to.faces, sphere_face_areas(to));
+    out.alignment = align_by_functions({from.faces, *source_grid, source_factor},
+                                       {to.faces, target_grid, target_factor});
+  }
+  out.timings_ms.emplace_back("align", since(start));
+  progress.report(0.9, "matching the vertices");
+
+  start = Clock::now();
+  const auto held = [](const SphereTriangleGrid &grid, const Eigen::Vector3d &p) {
+    const SphereTriangleGrid::Hold hold = grid.holding_with_weights(p);
+    return std::make_pair(hold.triangle, hold.weights);
+  };
+  const Located forward = located(to, source.vert.size(), [&](size_t v) {
+    return held(target_grid, out.alignment.apply(from.sphere[v]));
+  });
+  out.forward = forward.points;
+  measure_matched_mesh(from, to, options.landmarks, out);
   if (options.both) {
-    // The target's vertices matched back (the alignment undone), and the round trip: a source
-    // vertex's point on the target, carried back by the target's written vertices' points.
-    std::vector<Eigen::Vector3d> back(to.sphere.size());
-    parallel_for(back.size(),
-                 [&](size_t v) { back[v] = out.alignment.apply_inverse(to.sphere[v]); });
-    Located backward = located(from, *source_grid, back);
-    double sum = 0, worst = 0;
-    long long counted = 0;
-    for (size_t v = 0; v < n; ++v) {
-      const int face = forward.written_face[v];
-      if (face < 0) continue;
-      Eigen::Vector3d p = Eigen::Vector3d::Zero();
-      for (int k = 0; k < 3; ++k)
-        p += forward.written_weights[v][k] *
-             backward.points.position[size_t(to.faces[size_t(face)][size_t(k)])];
-      const double d = p.allFinite() ? (p - from.positions[v]).norm() / from.diagonal : 1.0;
-      sum += d, worst = std::max(worst, d), ++counted;
-    }
-    out.round_trip_mean = counted ? sum / double(counted) : -1;
-    out.round_trip_max = counted ? worst : -1;
-    MatchedPoints &points = backward.points;
-    points.target_face.resize(target.vert.size());
-    points.weights.resize(target.vert.size());
-    points.position.resize(target.vert.size());
-    out.backward = std::move(points);
+    // The target's written vertices matched back (the alignment undone).
+    Located backward = located(from, to.sphere.size(), [&](size_t v) {
+      return held(*source_grid, out.alignment.apply_inverse(to.sphere[v]));
+    });
+    measure_round_trip(from, to, forward, std::move(backward), target.vert.size(), out);
   }
   out.timings_ms.emplace_back("match", since(start));
   out.genus = 0;
   return out;
+}
+
+SurfaceMatch match_tori(const Mesh &source, const Mesh &target, const MatchOptions &options,
+                        const Progress &progress) {
+  SurfaceMatch out;
+  auto start = Clock::now();
+  const TorusOfSurface from = genus1_torus(source, "source", progress.range(0.0, 0.4));
+  out.timings_ms.emplace_back("map source", since(start));
+  start = Clock::now();
+  const TorusOfSurface to = genus1_torus(target, "target", progress.range(0.4, 0.8));
+  out.timings_ms.emplace_back("map target", since(start));
+  progress.report(0.8, "aligning the tori");
+
+  start = Clock::now();
+  const FlatTorusLocator source_locator(from.torus), target_locator(to.torus);
+  out.torus = align_tori({from.torus, source_locator, from.face_corners, from.factor},
+                         {to.torus, target_locator, to.face_corners, to.factor}, options.landmarks);
+  out.source_modulus = from.torus.tau;
+  out.target_modulus = to.torus.tau;
+  out.timings_ms.emplace_back("align", since(start));
+  progress.report(0.9, "matching the vertices");
+
+  start = Clock::now();
+  const auto held = [](const FlatTorusLocator &locator, const Eigen::Vector2d &p) {
+    const FlatTorusLocator::Hold hold = locator.holding(p);
+    return std::make_pair(hold.face, hold.weights);
+  };
+  const Located forward = located(to.surface, source.vert.size(), [&](size_t v) {
+    return held(target_locator, out.torus.apply(from.torus.vertex[v]));
+  });
+  out.forward = forward.points;
+  measure_matched_mesh(from.surface, to.surface, options.landmarks, out);
+  if (options.both) {
+    Located backward = located(from.surface, target.vert.size(), [&](size_t v) {
+      return held(source_locator, out.torus.apply_inverse(to.torus.vertex[v]));
+    });
+    measure_round_trip(from.surface, to.surface, forward, std::move(backward), target.vert.size(),
+                       out);
+  }
+  out.timings_ms.emplace_back("match", since(start));
+  out.genus = 1;
+  return out;
+}
+
+} // namespace
+
+SurfaceMatch match_surfaces(Mesh &source, Mesh &target, const MatchOptions &options,
+                            const Progress &progress) {
+  check_landmarks(options.landmarks, source.vert.size(), target.vert.size());
+  const int source_genus = closed_genus_estimate(source),
+            target_genus = closed_genus_estimate(target);
+  if (source_genus == 1 && target_genus == 1) return match_tori(source, target, options, progress);
+  if ((source_genus == 1) != (target_genus == 1))
+    throw InputError("the source looks like genus " + std::to_string(source_genus) +
+                     " and the target genus " + std::to_string(target_genus) +
+                     " (from their vertex and face counts): a match takes two closed surfaces of "
+                     "the same genus");
+  return match_spheres(source, target, options, progress);
 }
 
 } // namespace meromorph

@@ -1,9 +1,13 @@
-// A map from every vertex of one closed genus-0 surface to a point of another, through their
-// conformal spheres: both are mapped (Moebius-centred), the source's sphere is aligned with the
-// target's (match/sphere_alignment.h: by landmarks, or by their conformal factors), and each
-// source vertex goes to the point of the target whose sphere point meets its aligned one.
+// A map from every vertex of one closed surface to a point of another of the same genus, through
+// their conformal images. Genus 0: both are mapped to the sphere (Moebius-centred), the source's
+// sphere is aligned with the target's (match/sphere_alignment.h: by landmarks, or by their
+// conformal factors), and each source vertex goes to the point of the target whose sphere point
+// meets its aligned one. Genus 1: both as flat tori (match/flat_torus.h), the affine map between
+// their lattices and its translation (match/torus_alignment.h), and each source vertex goes to
+// the target's point at its image.
 //
-// In:  SOURCE and TARGET meshes (closed, one part, genus 0; mapped in place, put back exactly),
+// In:  SOURCE and TARGET meshes (closed, one part, genus 0 or 1; mapped in place, put back
+// exactly),
 //      landmark pairs (source vertex, target vertex; may be empty), whether to match back too.
 // Out: `SurfaceMatch`: per source vertex the target's triangle (in the target's numbering) and
 //      the barycentric weights b1, b2 of its second and third corners, and the point; what the
@@ -13,10 +17,13 @@
 //      target's vertices matched back onto SOURCE and how far the round trip source -> target ->
 //      source lands from where it started. Distances are relative to the diagonal of the surface
 //      they are measured on.
-// Errors: InputError when a surface is not of genus 0 or not one closed part, has no valid map,
+//      Genus 1 also: both reduced moduli and the alignment of the tori.
+// Errors: InputError when the genera differ or are above 1, a surface is not one closed part,
+//      has no valid map,
 //      or a landmark names a vertex that is not there.
 #pragma once
 
+#include <complex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,6 +32,7 @@
 
 #include "common/progress.h"
 #include "match/sphere_alignment.h"
+#include "match/torus_alignment.h"
 #include "mesh/mesh.h"
 
 namespace meromorph {
@@ -36,9 +44,11 @@ struct MatchedPoints {
 };
 
 struct SurfaceMatch {
-  MatchedPoints forward;  // source vertices on the target
-  MatchedPoints backward; // with `both`: target vertices on the source
-  SphereAlignment alignment;
+  MatchedPoints forward;     // source vertices on the target
+  MatchedPoints backward;    // with `both`: target vertices on the source
+  SphereAlignment alignment; // genus 0
+  TorusAlignment torus;      // genus 1
+  std::complex<double> source_modulus{}, target_modulus{}; // genus 1, reduced
   int genus = 0;
   int unmatched_vertices = 0;
   double landmark_residual_mean = 0, landmark_residual_max = 0; // / target diagonal
