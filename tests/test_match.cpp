@@ -349,6 +349,33 @@ TEST(Match, GenusOneTheSameSurfaceRetriangulatedIsFoundOnItsFlatTorus) {
   }
 }
 
+// Two triangulations of the kitten made apart (10,000 and 40,000 vertices, the second at ten times
+// the size): each source vertex lands on the other where the same point of the kitten is.
+TEST(Match, GenusOneTwoTriangulationsMadeApartMeetAtTheSamePoints) {
+  const test::TempDir dir;
+  const Surface source = read_surface(test::data_path("kitten.nf20k.off"));
+  const Surface target = read_surface(test::data_path("kitten.nv40k.off"));
+  const test::RunResult run = test::run_cli({"match", test::data_path("kitten.nf20k.off"),
+                                             test::data_path("kitten.nv40k.off"), "-o",
+                                             dir.path("matched.ply"), "--quiet"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const test::WrittenMesh written = test::read_written_mesh(dir.path("matched.ply"), false);
+  const double d = diagonal(target.positions);
+  double mean = 0, worst = 0;
+  for (size_t v = 0; v < source.positions.size(); ++v) {
+    const Vec3 p{written.columns.at("x")[v], written.columns.at("y")[v],
+                 written.columns.at("z")[v]};
+    const Vec3 &s = source.positions[v];
+    const double e = norm(sub(p, Vec3{10 * s[0], 10 * s[1], 10 * s[2]})) / d;
+    mean += e / double(source.positions.size());
+    worst = std::max(worst, e);
+  }
+  EXPECT_LE(mean, 0.002);
+  EXPECT_LE(worst, 0.01);
+  std::cout << "kitten.nf20k -> kitten.nv40k: " << 100 * mean << "% (mean), " << 100 * worst
+            << "% (max) of the diagonal from the same point\n";
+}
+
 // Two tori of revolution of different shape: the extremal map between them stretches by the
 // ratio of their exact moduli, i sqrt(R^2 - r^2) / r.
 TEST(Match, GenusOneBetweenDifferentToriTheDilatationIsTheRatioOfTheirModuli) {
