@@ -592,6 +592,48 @@ int main(void) {
     free(source);
   }
 
+  { /* a match: the torus onto itself turned a quarter about its axis and moved, fixed by two
+       landmarks (a torus of revolution turns onto itself): vertex v lands on its moved self */
+    meromorph_match_result *match = NULL;
+    double *moved = malloc(sizeof(double) * 3 * V), *weights = malloc(sizeof(double) * 3 * V);
+    double *points = malloc(sizeof(double) * 3 * V), worst = 0;
+    int32_t *on = malloc(sizeof(int32_t) * V);
+    const int32_t pairs[4] = {0, 0, 300, 300}, far[2] = {0, V + 5};
+    size_t v;
+    make_torus();
+    for (v = 0; v < (size_t)V; ++v) {
+      moved[3 * v] = -positions[3 * v + 1] + 5;
+      moved[3 * v + 1] = positions[3 * v];
+      moved[3 * v + 2] = positions[3 * v + 2] - 1;
+    }
+    CHECK(meromorph_match_d(positions, V, triangles, F, moved, V, triangles, F, pairs, 2, NULL,
+                            &match) == MEROMORPH_OK);
+    CHECK(meromorph_match_vertex_count(match) == V);
+    CHECK(meromorph_match_points(match, on, weights, points) == MEROMORPH_OK);
+    for (v = 0; v < (size_t)V; ++v) {
+      const double dx = points[3 * v] - moved[3 * v], dy = points[3 * v + 1] - moved[3 * v + 1],
+                   dz = points[3 * v + 2] - moved[3 * v + 2];
+      const double d = sqrt(dx * dx + dy * dy + dz * dz);
+      if (on[v] < 0 || on[v] >= F ||
+          fabs(weights[3 * v] + weights[3 * v + 1] + weights[3 * v + 2] - 1) > 1e-9)
+        break;
+      if (d > worst) worst = d;
+    }
+    CHECK(v == (size_t)V && worst < 1e-3);
+    CHECK(strstr(meromorph_match_report_json(match), "\"lattice_map\"") != NULL);
+    meromorph_match_free(match);
+    match = NULL;
+    CHECK(meromorph_match_d(positions, V, triangles, F, moved, V, triangles, F, far, 1, NULL,
+                            &match) == MEROMORPH_ERROR_INPUT);
+    CHECK(match == NULL && strstr(meromorph_last_error(), "not there") != NULL);
+    CHECK(meromorph_match_d(positions, V, triangles, F, moved, V, triangles, F, NULL, 1, NULL,
+                            &match) == MEROMORPH_ERROR_ARGUMENT);
+    meromorph_match_free(NULL);
+    free(moved);
+    free(weights);
+    free(points);
+    free(on);
+  }
   { /* forms, writing a map's files and reading them back */
     meromorph_forms_result *forms = NULL;
     meromorph_mesh *mesh = NULL;

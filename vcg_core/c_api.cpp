@@ -18,6 +18,7 @@
 #include "job/map_files.h"
 #include "job/surface_map.h"
 #include "maps/parameterization.h"
+#include "match/surface_match.h"
 #include "mesh/mesh_from_arrays.h"
 #include "mesh/repair.h"
 #include "remesh/surface_remesh.h"
@@ -44,6 +45,11 @@ struct meromorph_mesh {
 
 struct meromorph_forms_result {
   int genus = -1;
+  std::string report;
+};
+
+struct meromorph_match_result {
+  meromorph::MatchedPoints points;
   std::string report;
 };
 
@@ -804,6 +810,78 @@ int meromorph_forms_genus(const meromorph_forms_result *result) {
 
 const char *meromorph_forms_report_json(const meromorph_forms_result *result) {
   return result ? result->report.c_str() : "";
+}
+
+meromorph_status meromorph_match_d(const double *source_positions, size_t source_vertex_count,
+                                   const int32_t *source_triangles, size_t source_triangle_count,
+                                   const double *target_positions, size_t target_vertex_count,
+                                   const int32_t *target_triangles, size_t target_triangle_count,
+                                   const int32_t *landmark_pairs, size_t landmark_count,
+                                   const meromorph_options *options,
+                                   meromorph_match_result **result) {
+  using namespace meromorph;
+  meromorph_options settings;
+  if (const meromorph_status status =
+          check_call(source_positions, source_vertex_count, source_triangles, source_triangle_count,
+                     options, result, settings);
+      status != MEROMORPH_OK)
+    return status;
+  if (auto [status, problem] = check_arrays(target_positions, target_vertex_count, target_triangles,
+                                            target_triangle_count);
+      status != MEROMORPH_OK)
+    return fail(status, "target: " + problem);
+  if (landmark_count > 0 && !landmark_pairs)
+    return fail(MEROMORPH_ERROR_ARGUMENT, "landmark_pairs is NULL with landmark_count > 0");
+  return guarded([&] {
+    MatchOptions match_options;
+    for (size_t k = 0; k < landmark_count; ++k)
+      match_options.landmarks.emplace_back(landmark_pairs[2 * k], landmark_pairs[2 * k + 1]);
+    MeshArrays source_arrays =
+        mesh_arrays(source_positions, source_vertex_count, source_triangles, source_triangle_count);
+    MeshArrays target_arrays =
+        mesh_arrays(target_positions, target_vertex_count, target_triangles, target_triangle_count);
+    Mesh source, target;
+    mesh_from_arrays(source_arrays, source);
+    mesh_from_arrays(target_arrays, target);
+    const SurfaceMatch match =
+        match_surfaces(source, target, match_options, core_progress(settings));
+    auto out = std::make_unique<meromorph_match_result>();
+    out->points = match.forward;
+    nlohmann::json report = match_json(match, landmark_count);
+    report["version"] = MEROMORPH_VERSION;
+    out->report = json_text(report);
+    *result = out.release();
+  });
+}
+
+void meromorph_match_free(meromorph_match_result *result) {
+  delete result;
+}
+
+size_t meromorph_match_vertex_count(const meromorph_match_result *result) {
+  return result ? result->points.target_face.size() : 0;
+}
+
+const char *meromorph_match_report_json(const meromorph_match_result *result) {
+  return result ? result->report.c_str() : "";
+}
+
+meromorph_status meromorph_match_points(const meromorph_match_result *result,
+                                        int32_t *target_triangle, double *weights,
+                                        double *positions) {
+  if (!result) return fail(MEROMORPH_ERROR_ARGUMENT, "result is NULL");
+  const meromorph::MatchedPoints &points = result->points;
+  for (size_t v = 0; v < points.target_face.size(); ++v) {
+    if (target_triangle) target_triangle[v] = points.target_face[v];
+    if (weights) {
+      const Eigen::Vector2d &b = points.weights[v];
+      weights[3 * v] = 1 - b[0] - b[1], weights[3 * v + 1] = b[0], weights[3 * v + 2] = b[1];
+    }
+    if (positions)
+      for (int k = 0; k < 3; ++k)
+        positions[3 * v + size_t(k)] = points.position[v][k];
+  }
+  return MEROMORPH_OK;
 }
 
 } // extern "C"

@@ -398,6 +398,31 @@ MEROMORPH_API int meromorph_forms_genus(const meromorph_forms_result *result); /
 /* The JSON report, as `meromorph forms --report` writes it; NULL result: "". */
 MEROMORPH_API const char *meromorph_forms_report_json(const meromorph_forms_result *result);
 
+/* A match (a later addition to ABI version 5), as `meromorph match`: every vertex of SOURCE on a
+   point of TARGET, two closed surfaces of the same genus (0 or 1), through their conformal spheres
+   or flat tori. Inputs: both meshes as in meromorph_parameterize_d; landmark_pairs: 2 per pair
+   (SOURCE vertex, TARGET vertex), landmark_count pairs (NULL with 0: aligned automatically; genus
+   0 needs three or more); options: only options.progress and progress_user are read (may be NULL).
+   Outputs: *result, owned by the caller (meromorph_match_free); NULL on failure. Returns: as
+   meromorph_parameterize_d (MEROMORPH_ERROR_INPUT when the genera differ or are above 1, a surface
+   has no valid map, or a landmark names a vertex that is not there, naming it). */
+typedef struct meromorph_match_result meromorph_match_result;
+MEROMORPH_API meromorph_status meromorph_match_d(
+    const double *source_positions, size_t source_vertex_count, const int32_t *source_triangles,
+    size_t source_triangle_count, const double *target_positions, size_t target_vertex_count,
+    const int32_t *target_triangles, size_t target_triangle_count, const int32_t *landmark_pairs,
+    size_t landmark_count, const meromorph_options *options, meromorph_match_result **result);
+MEROMORPH_API void meromorph_match_free(meromorph_match_result *result); /* NULL is allowed */
+MEROMORPH_API size_t meromorph_match_vertex_count(const meromorph_match_result *result);
+/* Per SOURCE vertex: the TARGET triangle it lies on (its index in target_triangles; -1 where none
+   was found), the weights of that triangle's three corners (3 per vertex, summing to 1) and the
+   point (3 per vertex). Any pointer may be NULL (not written). */
+MEROMORPH_API meromorph_status meromorph_match_points(const meromorph_match_result *result,
+                                                      int32_t *target_triangle, double *weights,
+                                                      double *positions);
+/* The JSON report, as `meromorph match --report` writes it (without the inputs); NULL: "". */
+MEROMORPH_API const char *meromorph_match_report_json(const meromorph_match_result *result);
+
 #ifdef __cplusplus
 }
 #endif

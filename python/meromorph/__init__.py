@@ -28,7 +28,8 @@ from . import _native
 
 __version__ = _native.version
 __all__ = [
-    "read", "param", "forms", "remesh", "Map", "Forms", "Remesh", "Error", "InputError",
+    "read", "param", "forms", "remesh", "match", "Map", "Forms", "Remesh", "Match", "Error",
+    "InputError",
     "NoValidMap", "ArgumentError", "Cancelled", "WriteError", "InternalError",
 ]
 
@@ -264,6 +265,49 @@ def forms(V, F=None, *, progress: Optional[Progress] = None) -> Forms:
     >= 2) of a closed, connected surface (V, F) or a file path."""
     V, F, _path = _arrays(V, F)
     return Forms(json.loads(_call(_native.forms, V, F, progress)))
+
+
+class Match:
+    """Every vertex of a source surface on a point of a target (`match`): per source vertex the
+    target's triangle `target_face` (n,) (-1 where none), the `weights` (n, 3) of its corners and
+    the `points` (n, 3); `report` (dict: genus, method, alignment, landmark residuals, the matched
+    mesh's angle error and folds, genus 1 the moduli and the map's dilatation).
+    `transfer(values)` reads per-vertex values of the target (shape (m,) or (m, k)) at the source's
+    vertices."""
+
+    def __init__(self, arrays: dict, target_triangles: np.ndarray):
+        self.target_face = arrays["target_face"]
+        self.weights = arrays["weights"]
+        self.points = arrays["points"]
+        self.report = json.loads(arrays["report"])
+        self._target_triangles = target_triangles
+
+    def transfer(self, values) -> np.ndarray:
+        values = np.asarray(values)
+        corners = self._target_triangles[np.maximum(self.target_face, 0)]  # (n, 3)
+        w = self.weights.reshape(self.weights.shape + (1,) * (values.ndim - 1))
+        out = (w * values[corners]).sum(axis=1)
+        out[self.target_face < 0] = np.nan
+        return out
+
+    def __repr__(self) -> str:
+        return (f"<meromorph.Match genus {self.report['genus']}, {len(self.points)} vertices: "
+                f"{self.report['method']}>")
+
+
+def match(source, target, *, landmarks=None, progress: Optional[Progress] = None) -> Match:
+    """Every vertex of `source` on a point of `target` (each (V, F) or a file path; closed, both
+    genus 0 or both genus 1), through their conformal spheres or flat tori, as `meromorph match`:
+    aligned by `landmarks` (pairs (source vertex, target vertex); genus 0 needs three or more) or
+    automatically."""
+    source_V, source_F, _ = _arrays(source)
+    target_V, target_F, _ = _arrays(target)
+    pairs = np.zeros((0, 2), dtype=np.int32) if landmarks is None else np.asarray(landmarks)
+    if pairs.size and (pairs.ndim != 2 or pairs.shape[1] != 2 or pairs.dtype.kind not in "iu"):
+        raise ArgumentError(f"landmarks must be integer pairs of shape (k, 2); got {pairs.shape}")
+    arrays = _call(_native.match, source_V, source_F, target_V, target_F,
+                   pairs.astype(np.int32).reshape(-1), progress)
+    return Match(arrays, np.asarray(target_F, dtype=np.int64))
 
 
 class Remesh:

@@ -69,6 +69,16 @@ class Forms:
 def forms(V: Mesh, F: Optional[npt.ArrayLike] = ..., *,
           progress: Optional[Progress] = ...) -> Forms: ...
 
+class Match:
+    target_face: npt.NDArray[np.int32]
+    weights: npt.NDArray[np.float64]
+    points: npt.NDArray[np.float64]
+    report: dict
+    def transfer(self, values: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
+
+def match(source: Mesh, target: Mesh, *, landmarks: Optional[npt.ArrayLike] = ...,
+          progress: Optional[Progress] = ...) -> Match: ...
+
 class Remesh:
     vertices: np.ndarray
     triangles: np.ndarray

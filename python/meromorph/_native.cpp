@@ -305,6 +305,39 @@ std::string forms(const py::array &V, const py::array &F, const py::object &prog
   return meromorph_forms_report_json(result);
 }
 
+py::dict match(const py::array &source_V, const py::array &source_F, const py::array &target_V,
+               const py::array &target_F, const py::array_t<int32_t> &pairs,
+               const py::object &progress) {
+  InputArrays source(source_V, source_F), target(target_V, target_F);
+  const Positions source_positions = Positions::ensure(source.positions);
+  const Positions target_positions = Positions::ensure(target.positions);
+  const py::array_t<int32_t, py::array::c_style | py::array::forcecast> landmarks(pairs);
+  ProgressRelay relay{progress, nullptr};
+  const meromorph_options settings = options_from(py::dict(), relay);
+  meromorph_match_result *result = nullptr;
+  meromorph_status status;
+  {
+    py::gil_scoped_release release;
+    status = meromorph_match_d(source_positions.data(), source.vertices, source.triangles.data(),
+                               source.faces, target_positions.data(), target.vertices,
+                               target.triangles.data(), target.faces,
+                               landmarks.size() ? landmarks.data() : nullptr,
+                               size_t(landmarks.size() / 2), &settings, &result);
+  }
+  std::unique_ptr<meromorph_match_result, void (*)(meromorph_match_result *)> owned(
+      result, meromorph_match_free);
+  relay.check(status);
+  const auto n = py::ssize_t(meromorph_match_vertex_count(result));
+  auto face = filled<int32_t>({n});
+  auto weights = filled<double>({n, 3}), points = filled<double>({n, 3});
+  meromorph_match_points(result, face.mutable_data(), weights.mutable_data(),
+                         points.mutable_data());
+  py::dict out;
+  out["target_face"] = face, out["weights"] = weights, out["points"] = points;
+  out["report"] = std::string(meromorph_match_report_json(result));
+  return out;
+}
+
 py::dict remesh(const py::array &V, const py::array &F, const py::dict &options,
                 long long target_vertices, bool area_correct, const py::object &progress) {
   InputArrays arrays(V, F);
@@ -355,6 +388,8 @@ PYBIND11_MODULE(_native, module) {
              py::arg("report"), py::arg("protected_paths"));
   module.def("read", &read_mesh, py::arg("path"));
   module.def("forms", &forms, py::arg("V"), py::arg("F"), py::arg("progress"));
+  module.def("match", &match, py::arg("source_V"), py::arg("source_F"), py::arg("target_V"),
+             py::arg("target_F"), py::arg("pairs"), py::arg("progress"));
   module.def("remesh", &remesh, py::arg("V"), py::arg("F"), py::arg("options"),
              py::arg("target_vertices"), py::arg("area_correct"), py::arg("progress"));
 }

@@ -231,3 +231,29 @@ def test_descriptors_are_invariant_and_close_after_remeshing():
     assert descriptors.reduced_modulus(-1 / (0.2 + 1.5j)) == pytest.approx(0.2 + 1.5j)
     # 3.3 + 0.9i -> 0.3 + 0.9i (|tau| < 1) -> -1 / tau = -1/3 + i, in the fundamental domain.
     assert descriptors.reduced_modulus(3.3 + 0.9j) == pytest.approx(-1 / 3 + 1j)
+
+
+def test_match_is_the_tools_and_carries_values_from_the_target(tmp_path):
+    # Two triangulations of the kitten made apart, the second at ten times the size: the source's
+    # vertices land where the same point of the kitten is, and the matched points are what
+    # `meromorph match` writes.
+    source, target = DATA / "kitten.nf20k.off", DATA / "kitten.nv40k.off"
+    m = meromorph.match(source, target)
+    V, _ = meromorph.read(source)
+    W, G = meromorph.read(target)
+    diagonal = np.linalg.norm(W.max(axis=0) - W.min(axis=0))
+    assert m.report["genus"] == 1 and (m.target_face >= 0).all()
+    assert np.allclose(m.weights.sum(axis=1), 1.0)
+    assert np.linalg.norm(m.points - 10 * V, axis=1).mean() < 0.002 * diagonal
+    # transfer() reads the target's values at the matched points: its positions are the points.
+    assert np.allclose(m.transfer(W), m.points, atol=1e-9 * diagonal)
+    assert m.transfer(W[:, 0]).shape == (len(V),)
+    subprocess.run([tool(), "match", str(source), str(target), "-o", str(tmp_path / "m.ply"),
+                    "--quiet"], check=True)
+    cli = read_ply_vertices(tmp_path / "m.ply")
+    assert np.array_equal(cli["target_face"], m.target_face)
+    assert np.allclose(np.c_[cli["x"], cli["y"], cli["z"]], m.points, atol=1e-4 * diagonal)
+    with pytest.raises(meromorph.ArgumentError):
+        meromorph.match(source, target, landmarks=[1, 2, 3])
+    with pytest.raises(meromorph.InputError, match="99999"):
+        meromorph.match(source, target, landmarks=[[0, 99999]])

@@ -64,40 +64,10 @@ void write_matched_mesh(const Mesh &source, const MatchedPoints &points, const s
   save_mesh(matched, MeshFormat::ply, file, options);
 }
 
-const std::string &match_method(const SurfaceMatch &match) {
-  return match.genus == 1 ? match.torus.method : match.alignment.method;
-}
-
 std::string modulus_words(std::complex<double> tau) {
   std::ostringstream words;
   words << tau.real() << (tau.imag() < 0 ? " - " : " + ") << std::abs(tau.imag()) << "i";
   return words.str();
-}
-
-// How the source's image was put on the target's: the sphere's rotation or the tori's lattice map.
-nlohmann::json alignment_json(const SurfaceMatch &match) {
-  nlohmann::json alternatives = nlohmann::json::array();
-  if (match.genus == 1) {
-    const auto matrix = [](const Eigen::Matrix2i &m) {
-      return nlohmann::json{{m(0, 0), m(0, 1)}, {m(1, 0), m(1, 1)}};
-    };
-    for (const auto &alternative : match.torus.alternatives)
-      alternatives.push_back({{"lattice_map", matrix(alternative.lattice_map)},
-                              {"shift", {alternative.shift[0], alternative.shift[1]}},
-                              {"cost", alternative.cost}});
-    return {{"lattice_map", matrix(match.torus.lattice_map)},
-            {"shift", {match.torus.shift[0], match.torus.shift[1]}},
-            {"dilatation", match.torus.dilatation},
-            {"cost", match.torus.cost},
-            {"alternatives", alternatives},
-            {"landmark_flat_distance_max", match.torus.landmark_distance_max}};
-  }
-  for (const auto &alternative : match.alignment.alternatives)
-    alternatives.push_back({{"angle_from_best_degrees", alternative.angle_from_best_degrees},
-                            {"cost", alternative.cost}});
-  return {{"cost", match.alignment.cost},
-          {"alternatives", alternatives},
-          {"landmark_sphere_distance_max", match.alignment.landmark_distance_max}};
 }
 
 int run_match(const MatchCommandOptions &options) {
@@ -123,29 +93,11 @@ int run_match(const MatchCommandOptions &options) {
   const SurfaceMatch match = match_surfaces(source, target, settings, bar.progress());
   bar.finish();
 
-  nlohmann::json timings = {{"read", source_input.read_ms + target_input.read_ms}};
-  for (const auto &[stage, ms] : match.timings_ms)
-    timings[stage] = ms;
-  nlohmann::json report = {{"source", source_json(source_input.source)},
-                           {"target", source_json(target_input.source)},
-                           {"genus", match.genus},
-                           {"method", match_method(match)},
-                           {"alignment", alignment_json(match)},
-                           {"landmarks",
-                            {{"count", settings.landmarks.size()},
-                             {"residual_mean", match.landmark_residual_mean},
-                             {"residual_max", match.landmark_residual_max}}},
-                           {"matched_mesh",
-                            {{"angle_error_mean_degrees", match.angle_error_mean_degrees},
-                             {"folded_faces", match.folded_faces},
-                             {"unmatched_vertices", match.unmatched_vertices}}},
-                           {"timings_ms", timings},
-                           {"version", MEROMORPH_VERSION}};
-  if (match.genus == 1)
-    report["moduli"] = {{"source", {match.source_modulus.real(), match.source_modulus.imag()}},
-                        {"target", {match.target_modulus.real(), match.target_modulus.imag()}}};
-  if (settings.both)
-    report["round_trip"] = {{"mean", match.round_trip_mean}, {"max", match.round_trip_max}};
+  nlohmann::json report = match_json(match, settings.landmarks.size());
+  report["source"] = source_json(source_input.source);
+  report["target"] = source_json(target_input.source);
+  report["timings_ms"]["read"] = source_input.read_ms + target_input.read_ms;
+  report["version"] = MEROMORPH_VERSION;
   outputs.writing([&] {
     write_matched_mesh(source, match.forward, output_file);
     if (settings.both) write_matched_mesh(target, match.backward, both_file);

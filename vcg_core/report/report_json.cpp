@@ -295,4 +295,58 @@ nlohmann::json holomorphic_forms_json(const HolomorphicForms &forms, SolverKind 
   return report;
 }
 
+const std::string &match_method(const SurfaceMatch &match) {
+  return match.genus == 1 ? match.torus.method : match.alignment.method;
+}
+
+// How the source's image was put on the target's: the sphere's rotation or the tori's lattice map.
+nlohmann::json match_alignment_json(const SurfaceMatch &match) {
+  nlohmann::json alternatives = nlohmann::json::array();
+  if (match.genus == 1) {
+    const auto matrix = [](const Eigen::Matrix2i &m) {
+      return nlohmann::json{{m(0, 0), m(0, 1)}, {m(1, 0), m(1, 1)}};
+    };
+    for (const auto &alternative : match.torus.alternatives)
+      alternatives.push_back({{"lattice_map", matrix(alternative.lattice_map)},
+                              {"shift", {alternative.shift[0], alternative.shift[1]}},
+                              {"cost", alternative.cost}});
+    return {{"lattice_map", matrix(match.torus.lattice_map)},
+            {"shift", {match.torus.shift[0], match.torus.shift[1]}},
+            {"dilatation", match.torus.dilatation},
+            {"cost", match.torus.cost},
+            {"alternatives", alternatives},
+            {"landmark_flat_distance_max", match.torus.landmark_distance_max}};
+  }
+  for (const auto &alternative : match.alignment.alternatives)
+    alternatives.push_back({{"angle_from_best_degrees", alternative.angle_from_best_degrees},
+                            {"cost", alternative.cost}});
+  return {{"cost", match.alignment.cost},
+          {"alternatives", alternatives},
+          {"landmark_sphere_distance_max", match.alignment.landmark_distance_max}};
+}
+
+nlohmann::json match_json(const SurfaceMatch &match, size_t landmark_count) {
+  nlohmann::json timings = nlohmann::json::object();
+  for (const auto &[stage, ms] : match.timings_ms)
+    timings[stage] = ms;
+  nlohmann::json report = {{"genus", match.genus},
+                           {"method", match_method(match)},
+                           {"alignment", match_alignment_json(match)},
+                           {"landmarks",
+                            {{"count", landmark_count},
+                             {"residual_mean", match.landmark_residual_mean},
+                             {"residual_max", match.landmark_residual_max}}},
+                           {"matched_mesh",
+                            {{"angle_error_mean_degrees", match.angle_error_mean_degrees},
+                             {"folded_faces", match.folded_faces},
+                             {"unmatched_vertices", match.unmatched_vertices}}},
+                           {"timings_ms", timings}};
+  if (match.genus == 1)
+    report["moduli"] = {{"source", {match.source_modulus.real(), match.source_modulus.imag()}},
+                        {"target", {match.target_modulus.real(), match.target_modulus.imag()}}};
+  if (match.round_trip_mean >= 0)
+    report["round_trip"] = {{"mean", match.round_trip_mean}, {"max", match.round_trip_max}};
+  return report;
+}
+
 } // namespace meromorph
