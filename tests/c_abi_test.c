@@ -620,6 +620,32 @@ int main(void) {
       if (d > worst) worst = d;
     }
     CHECK(v == (size_t)V && worst < 1e-3);
+    { /* per triangle: one target triangle, each corner's point in its weights (projected on its
+         plane: within a small fraction of the grid's spacing) */
+      int32_t *centre_on = malloc(sizeof(int32_t) * F);
+      double *corner_weights = malloc(sizeof(double) * 9 * F), off = 0;
+      size_t f;
+      int k, j, c;
+      CHECK(meromorph_match_triangle_count(match) == F);
+      CHECK(meromorph_match_triangles(match, centre_on, corner_weights) == MEROMORPH_OK);
+      for (f = 0; f < (size_t)F; ++f) {
+        if (centre_on[f] < 0 || centre_on[f] >= F) break;
+        for (k = 0; k < 3; ++k) {
+          const double *w = corner_weights + 9 * f + 3 * k;
+          const int32_t corner = triangles[3 * f + k];
+          if (fabs(w[0] + w[1] + w[2] - 1) > 1e-9) off = 1e9;
+          for (c = 0; c < 3; ++c) {
+            double at = 0;
+            for (j = 0; j < 3; ++j)
+              at += w[j] * moved[3 * triangles[3 * centre_on[f] + j] + c];
+            if (fabs(at - points[3 * corner + c]) > off) off = fabs(at - points[3 * corner + c]);
+          }
+        }
+      }
+      CHECK(f == (size_t)F && off < 0.05);
+      free(centre_on);
+      free(corner_weights);
+    }
     CHECK(strstr(meromorph_match_report_json(match), "\"lattice_map\"") != NULL);
     meromorph_match_free(match);
     match = NULL;

@@ -50,6 +50,7 @@ struct meromorph_forms_result {
 
 struct meromorph_match_result {
   meromorph::MatchedPoints points;
+  std::vector<meromorph::FaceMatch> faces;
   std::string report;
 };
 
@@ -847,6 +848,7 @@ meromorph_status meromorph_match_d(const double *source_positions, size_t source
         match_surfaces(source, target, match_options, core_progress(settings));
     auto out = std::make_unique<meromorph_match_result>();
     out->points = match.forward;
+    out->faces = match.faces;
     nlohmann::json report = match_json(match, landmark_count);
     report["version"] = MEROMORPH_VERSION;
     out->report = json_text(report);
@@ -860,6 +862,24 @@ void meromorph_match_free(meromorph_match_result *result) {
 
 size_t meromorph_match_vertex_count(const meromorph_match_result *result) {
   return result ? result->points.target_face.size() : 0;
+}
+
+size_t meromorph_match_triangle_count(const meromorph_match_result *result) {
+  return result ? result->faces.size() : 0;
+}
+
+meromorph_status meromorph_match_triangles(const meromorph_match_result *result,
+                                           int32_t *target_triangle, double *weights) {
+  if (!result) return fail(MEROMORPH_ERROR_ARGUMENT, "result is NULL");
+  for (size_t f = 0; f < result->faces.size(); ++f) {
+    const meromorph::FaceMatch &face = result->faces[f];
+    if (target_triangle) target_triangle[f] = face.target_face;
+    if (weights)
+      for (size_t k = 0; k < 3; ++k)
+        for (int j = 0; j < 3; ++j)
+          weights[9 * f + 3 * k + size_t(j)] = face.weights[k][j];
+  }
+  return MEROMORPH_OK;
 }
 
 const char *meromorph_match_report_json(const meromorph_match_result *result) {

@@ -420,6 +420,15 @@ MEROMORPH_API size_t meromorph_match_vertex_count(const meromorph_match_result *
 MEROMORPH_API meromorph_status meromorph_match_points(const meromorph_match_result *result,
                                                       int32_t *target_triangle, double *weights,
                                                       double *positions);
+/* Per SOURCE triangle (source_triangle_count of them): the TARGET triangle that holds the image of
+   its centre (-1 where none was found) and, per corner, the weights of that triangle's three
+   corners that give the corner's matched point (9 per triangle; outside [0, 1] where the corner
+   lies on another TARGET triangle). For values given per TARGET triangle corner, such as texture
+   coordinates with seams: each SOURCE triangle reads them from one side of a seam. Any pointer
+   may be NULL. */
+MEROMORPH_API size_t meromorph_match_triangle_count(const meromorph_match_result *result);
+MEROMORPH_API meromorph_status meromorph_match_triangles(const meromorph_match_result *result,
+                                                         int32_t *target_triangle, double *weights);
 /* The JSON report, as `meromorph match --report` writes it (without the inputs); NULL: "". */
 MEROMORPH_API const char *meromorph_match_report_json(const meromorph_match_result *result);
 

@@ -271,14 +271,20 @@ class Match:
     """Every vertex of a source surface on a point of a target (`match`): per source vertex the
     target's triangle `target_face` (n,) (-1 where none), the `weights` (n, 3) of its corners and
     the `points` (n, 3); `report` (dict: genus, method, alignment, landmark residuals, the matched
-    mesh's angle error and folds, genus 1 the moduli and the map's dilatation).
+    mesh's angle error and folds, genus 1 the moduli and the map's dilatation). Per source triangle,
+    `triangle_face` (t,): the target triangle holding the image of its centre, and
+    `triangle_weights` (t, 3, 3): per corner, the weights of that triangle's corners.
     `transfer(values)` reads per-vertex values of the target (shape (m,) or (m, k)) at the source's
-    vertices."""
+    vertices; `transfer_corners(values)` reads values per target triangle corner (shape (f, 3) or
+    (f, 3, k), such as texture coordinates with seams) at the source's triangle corners, each
+    source triangle from one side of a seam."""
 
     def __init__(self, arrays: dict, target_triangles: np.ndarray):
         self.target_face = arrays["target_face"]
         self.weights = arrays["weights"]
         self.points = arrays["points"]
+        self.triangle_face = arrays["triangle_face"]
+        self.triangle_weights = arrays["triangle_weights"]
         self.report = json.loads(arrays["report"])
         self._target_triangles = target_triangles
 
@@ -288,6 +294,13 @@ class Match:
         w = self.weights.reshape(self.weights.shape + (1,) * (values.ndim - 1))
         out = (w * values[corners]).sum(axis=1)
         out[self.target_face < 0] = np.nan
+        return out
+
+    def transfer_corners(self, values) -> np.ndarray:
+        values = np.asarray(values)
+        picked = values[np.maximum(self.triangle_face, 0)]  # (t, 3, ...)
+        out = np.einsum("tkj,tj...->tk...", self.triangle_weights, picked)
+        out[self.triangle_face < 0] = np.nan
         return out
 
     def __repr__(self) -> str:

@@ -73,8 +73,11 @@ class Match:
     target_face: npt.NDArray[np.int32]
     weights: npt.NDArray[np.float64]
     points: npt.NDArray[np.float64]
+    triangle_face: npt.NDArray[np.int32]
+    triangle_weights: npt.NDArray[np.float64]
     report: dict
     def transfer(self, values: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
+    def transfer_corners(self, values: npt.ArrayLike) -> npt.NDArray[np.float64]: ...
 
 def match(source: Mesh, target: Mesh, *, landmarks: Optional[npt.ArrayLike] = ...,
           progress: Optional[Progress] = ...) -> Match: ...

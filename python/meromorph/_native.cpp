@@ -332,7 +332,12 @@ py::dict match(const py::array &source_V, const py::array &source_F, const py::a
   auto weights = filled<double>({n, 3}), points = filled<double>({n, 3});
   meromorph_match_points(result, face.mutable_data(), weights.mutable_data(),
                          points.mutable_data());
+  const auto m = py::ssize_t(meromorph_match_triangle_count(result));
+  auto triangle_face = filled<int32_t>({m});
+  auto triangle_weights = filled<double>({m, 3, 3});
+  meromorph_match_triangles(result, triangle_face.mutable_data(), triangle_weights.mutable_data());
   py::dict out;
+  out["triangle_face"] = triangle_face, out["triangle_weights"] = triangle_weights;
   out["target_face"] = face, out["weights"] = weights, out["points"] = points;
   out["report"] = std::string(meromorph_match_report_json(result));
   return out;

@@ -248,6 +248,12 @@ def test_match_is_the_tools_and_carries_values_from_the_target(tmp_path):
     # transfer() reads the target's values at the matched points: its positions are the points.
     assert np.allclose(m.transfer(W), m.points, atol=1e-9 * diagonal)
     assert m.transfer(W[:, 0]).shape == (len(V),)
+    # Per source triangle corner from one target triangle: each corner's point, up to its distance
+    # from that triangle's plane.
+    F = meromorph.read(source)[1]
+    corners = m.transfer_corners(W[G])  # (t, 3, 3): the target's corner positions
+    assert corners.shape == (len(F), 3, 3) and (m.triangle_face >= 0).all()
+    assert np.linalg.norm(corners - m.points[F], axis=2).max() < 0.01 * diagonal
     subprocess.run([tool(), "match", str(source), str(target), "-o", str(tmp_path / "m.ply"),
                     "--quiet"], check=True)
     cli = read_ply_vertices(tmp_path / "m.ply")

@@ -231,6 +231,30 @@ void measure_matched_mesh(const MappedSurface &from, const MappedSurface &to,
   out.angle_error_mean_degrees = corners ? angle_sum / double(corners) * 180 / M_PI : 0;
 }
 
+// Each source triangle on the target triangle that `centre_hold(f)` finds for the image of its
+// centre (a written triangle of `to` and weights), with its corners' matched points in that
+// triangle's weights.
+template <class CentreHold>
+void match_faces(const MappedSurface &from, const MappedSurface &to, const CentreHold &centre_hold,
+                 SurfaceMatch &out) {
+  out.faces.assign(from.input_faces.size(), FaceMatch{});
+  parallel_for(from.input_faces.size(), [&](size_t f) {
+    const int written = centre_hold(f).first;
+    if (written < 0) return;
+    const int face = to.face_source[size_t(written)];
+    const auto &t = to.input_faces[size_t(face)];
+    FaceMatch match{face, {}};
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d &p = out.forward.position[size_t(from.input_faces[f][size_t(k)])];
+      const Eigen::Vector2d b = barycentric(p, to.positions[size_t(t[0])],
+                                            to.positions[size_t(t[1])], to.positions[size_t(t[2])]);
+      match.weights[size_t(k)] = Eigen::Vector3d(1 - b[0] - b[1], b[0], b[1]);
+      if (!match.weights[size_t(k)].allFinite()) return;
+    }
+    out.faces[f] = match;
+  });
+}
+
 // The round trip: a source vertex's point on the target, carried back by the target's written
 // vertices' points on the source; the target's input vertices' points become `out.backward`.
 void measure_round_trip(const MappedSurface &from, const MappedSurface &to, const Located &forward,
@@ -299,6 +323,16 @@ SurfaceMatch match_spheres(Mesh &source, Mesh &target, const MatchOptions &optio
     return held(target_grid, out.alignment.apply(from.sphere[v]));
   });
   out.forward = forward.points;
+  match_faces(
+      from, to,
+      [&](size_t f) {
+        const auto &t = from.input_faces[f];
+        const Eigen::Vector3d centre =
+            (from.sphere[size_t(t[0])] + from.sphere[size_t(t[1])] + from.sphere[size_t(t[2])])
+                .normalized();
+        return held(target_grid, out.alignment.apply(centre));
+      },
+      out);
   measure_matched_mesh(from, to, options.landmarks, out);
   if (options.both) {
     // The target's written vertices matched back (the alignment undone).
@@ -341,6 +375,13 @@ SurfaceMatch match_tori(const Mesh &source, const Mesh &target, const MatchOptio
     return held(target_locator, out.torus.apply(from.torus.vertex[v]));
   });
   out.forward = forward.points;
+  match_faces(
+      from.surface, to.surface,
+      [&](size_t f) {
+        const auto &corners = from.torus.faces[f];
+        return held(target_locator, out.torus.apply((corners[0] + corners[1] + corners[2]) / 3));
+      },
+      out);
   measure_matched_mesh(from.surface, to.surface, options.landmarks, out);
   if (options.both) {
     Located backward = located(from.surface, target.vert.size(), [&](size_t v) {

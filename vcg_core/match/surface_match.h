@@ -17,12 +17,14 @@
 //      target's vertices matched back onto SOURCE and how far the round trip source -> target ->
 //      source lands from where it started. Distances are relative to the diagonal of the surface
 //      they are measured on.
-//      Genus 1 also: both reduced moduli and the alignment of the tori.
+//      Per source triangle, `FaceMatch` (below). Genus 1 also: both reduced moduli and the
+//      alignment of the tori.
 // Errors: InputError when the genera differ or are above 1, a surface is not one closed part,
 //      has no valid map,
 //      or a landmark names a vertex that is not there.
 #pragma once
 
+#include <array>
 #include <complex>
 #include <string>
 #include <utility>
@@ -43,11 +45,22 @@ struct MatchedPoints {
   std::vector<Eigen::Vector3d> position; // the point on the target
 };
 
+// A source triangle on the target: the target's triangle that holds the image of its centre, and
+// per corner the weights of that triangle's corners that give the corner's matched point (projected
+// onto its plane; outside [0, 1] where the corner lies on another target triangle). Values given
+// per target corner (texture coordinates with seams) are read from one side of a seam for the
+// whole triangle.
+struct FaceMatch {
+  int target_face = -1; // -1: none
+  std::array<Eigen::Vector3d, 3> weights{};
+};
+
 struct SurfaceMatch {
-  MatchedPoints forward;     // source vertices on the target
-  MatchedPoints backward;    // with `both`: target vertices on the source
-  SphereAlignment alignment; // genus 0
-  TorusAlignment torus;      // genus 1
+  std::vector<FaceMatch> faces; // per source triangle (the input's)
+  MatchedPoints forward;        // source vertices on the target
+  MatchedPoints backward;       // with `both`: target vertices on the source
+  SphereAlignment alignment;    // genus 0
+  TorusAlignment torus;         // genus 1
   std::complex<double> source_modulus{}, target_modulus{}; // genus 1, reduced
   int genus = 0;
   int unmatched_vertices = 0;
