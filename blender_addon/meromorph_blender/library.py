@@ -114,6 +114,19 @@ def load():
         lib.meromorph_remesh_report_json.restype = ctypes.c_char_p
         lib.meromorph_remesh_report_json.argtypes = [ctypes.c_void_p]
         lib.meromorph_remesh_free.argtypes = [ctypes.c_void_p]
+        lib.meromorph_match_d.argtypes = [
+            ctypes.c_void_p, ctypes.c_size_t, ctypes.c_void_p, ctypes.c_size_t,
+            ctypes.c_void_p, ctypes.c_size_t, ctypes.c_void_p, ctypes.c_size_t,
+            ctypes.c_void_p, ctypes.c_size_t, ctypes.POINTER(Options),
+            ctypes.POINTER(ctypes.c_void_p)]
+        for name in ("match_vertex_count", "match_triangle_count"):
+            getattr(lib, "meromorph_" + name).restype = ctypes.c_size_t
+            getattr(lib, "meromorph_" + name).argtypes = [ctypes.c_void_p]
+        lib.meromorph_match_points.argtypes = [ctypes.c_void_p] * 4
+        lib.meromorph_match_triangles.argtypes = [ctypes.c_void_p] * 3
+        lib.meromorph_match_report_json.restype = ctypes.c_char_p
+        lib.meromorph_match_report_json.argtypes = [ctypes.c_void_p]
+        lib.meromorph_match_free.argtypes = [ctypes.c_void_p]
         if lib.meromorph_abi_version() != ABI_VERSION:
             raise MeromorphError(1, "libmeromorph has ABI %d, this add-on needs %d"
                                  % (lib.meromorph_abi_version(), ABI_VERSION))
@@ -177,6 +190,41 @@ def remesh(positions, triangles, target_vertices=0, area_correct=True, close_hol
         return out
     finally:
         lib.meromorph_remesh_free(result)
+
+
+def match(source_positions, source_triangles, target_positions, target_triangles, progress=None):
+    """Every source vertex on a point of the target (both closed, genus 0 or both genus 1),
+    aligned automatically: per source vertex the target triangle and the weights of its corners;
+    per source triangle the target triangle holding its centre's image and, per corner, the
+    weights of that triangle's corners (for values given per corner: UVs with seams); the
+    report."""
+    lib = load()
+    arrays = [np.ascontiguousarray(a, dtype=t).reshape(-1) for a, t in (
+        (source_positions, np.float64), (source_triangles, np.int32),
+        (target_positions, np.float64), (target_triangles, np.int32))]
+    options, callback = options_with(lib, True, True, progress)  # noqa: F841
+    result = ctypes.c_void_p()
+    status = lib.meromorph_match_d(
+        arrays[0].ctypes.data, arrays[0].size // 3, arrays[1].ctypes.data, arrays[1].size // 3,
+        arrays[2].ctypes.data, arrays[2].size // 3, arrays[3].ctypes.data, arrays[3].size // 3,
+        None, 0, ctypes.byref(options), ctypes.byref(result))
+    if status != 0:
+        raise last_error(lib, status)
+    try:
+        n = lib.meromorph_match_vertex_count(result)
+        t = lib.meromorph_match_triangle_count(result)
+        out = {"vertex_face": np.empty(n, dtype=np.int32), "vertex_weights": np.empty((n, 3)),
+               "triangle_face": np.empty(t, dtype=np.int32),
+               "triangle_weights": np.empty((t, 3, 3))}
+        if (lib.meromorph_match_points(result, out["vertex_face"].ctypes.data,
+                                       out["vertex_weights"].ctypes.data, None) or
+                lib.meromorph_match_triangles(result, out["triangle_face"].ctypes.data,
+                                              out["triangle_weights"].ctypes.data)):
+            raise last_error(lib, 1)
+        out["report"] = json.loads(lib.meromorph_match_report_json(result).decode("utf-8"))
+        return out
+    finally:
+        lib.meromorph_match_free(result)
 
 
 def parameterize(positions, triangles, uv_kind=0, mobius=True, origin_vertex=-1, pole_face=-1,

@@ -336,4 +336,127 @@ on_sphere = co.reshape(-1, 3) / np.linalg.norm(co.reshape(-1, 3), axis=1)[:, Non
 a, b, c = (on_sphere[corners.reshape(-1, 3)[:, k]] for k in range(3))
 check((np.einsum("ij,ij->i", a, np.cross(b - a, c - a)) > 0).all(), "no triangle turned over")
 
+# Object > Link/Transfer Data > Transfer Through the Sphere: a head with a UV map that has a
+# seam (cylindrical: u turns once around the z axis) and a colour per vertex is copied onto the
+# same head re-triangulated (every triangle into four, half the new inner edges flipped), turned,
+# shrunk and moved in its mesh data, as two scans of one object come. The true values at every
+# receiving vertex and face corner are known from where it came from; beside it, Blender's own
+# Transfer Mesh Data (nearest face, interpolated) on a copy of the same receiver.
+clear_scene()
+head = add_off(os.path.join(DATA, "maxplanck.nf25k.off"), "Painted Head")
+hv = np.empty(3 * len(head.data.vertices))
+head.data.vertices.foreach_get("co", hv)
+hv = hv.reshape(-1, 3)
+centre, low, high = hv.mean(axis=0), hv.min(axis=0), hv.max(axis=0)
+
+
+def cylinder_uv(points):
+    d = points - centre
+    return np.c_[np.arctan2(d[:, 1], d[:, 0]) / (2 * np.pi) + 0.5,
+                 (points[:, 2] - low[2]) / (high[2] - low[2])]
+
+
+def corner_truth(mesh, positions):
+    """Per loop: the cylindrical UV of its vertex's true position, u taken on one side of the seam
+    per polygon; and whether the polygon is near the axis (u means nothing there)."""
+    loop_vertex = np.empty(len(mesh.loops), dtype=np.int64)
+    mesh.loops.foreach_get("vertex_index", loop_vertex)
+    uv = cylinder_uv(positions)[loop_vertex]
+    radius = np.linalg.norm((positions - centre)[:, :2], axis=1)[loop_vertex]
+    near_axis = np.zeros(len(mesh.loops), dtype=bool)
+    for polygon in mesh.polygons:
+        span = slice(polygon.loop_start, polygon.loop_start + polygon.loop_total)
+        if uv[span, 0].max() - uv[span, 0].min() > 0.5:
+            uv[span, 0] = np.where(uv[span, 0] < 0.5, uv[span, 0] + 1, uv[span, 0])
+        near_axis[span] = radius[span].min() < 0.15 * radius.max()
+    return uv, near_axis
+
+
+uv_layer = head.data.uv_layers.new(name="Cylinder")
+uv_layer.data.foreach_set("uv", corner_truth(head.data, hv)[0].ravel())
+paint = head.data.color_attributes.new("Paint", "FLOAT_COLOR", "POINT")
+paint.data.foreach_set("color", np.c_[(hv - low) / (high - low), np.ones(len(hv))].ravel())
+
+faces = [tuple(p.vertices) for p in head.data.polygons]
+points, midpoint, fine = [tuple(p) for p in hv], {}, []
+
+
+def middle(a, b):
+    key = (min(a, b), max(a, b))
+    if key not in midpoint:
+        points.append(tuple((hv[a] + hv[b]) / 2))
+        midpoint[key] = len(points) - 1
+    return midpoint[key]
+
+
+for f, (a, b, c) in enumerate(faces):
+    ab, bc, ca = middle(a, b), middle(b, c), middle(c, a)
+    fine += ([(a, ab, ca), (ab, b, bc), (ca, bc, c), (ab, bc, ca)] if f % 2 == 0 else
+             [(a, ab, bc), (a, bc, ca), (ab, b, bc), (ca, bc, c)])
+true_positions = np.array(points)
+turn = np.array([[0.36, 0.48, -0.8], [-0.8, 0.6, 0.0], [0.48, 0.64, 0.6]])  # a rotation
+moved = 0.5 * true_positions @ turn.T + np.array([3.0, -1.0, 2.0])
+receivers = []
+for name in ("Scan", "Scan (Blender's transfer)"):
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata(moved.tolist(), [], fine)
+    obj = bpy.data.objects.new(name, mesh)
+    bpy.context.collection.objects.link(obj)
+    receivers.append(obj)
+ours, blenders = receivers
+
+for menu in (bpy.types.VIEW3D_MT_make_links,):
+    names = [getattr(f, "__module__", "") for f in menu._dyn_ui_initialize()]
+    check(any(n.startswith("meromorph_blender") for n in names), "entry in %s" % menu.__name__)
+activate(ours)
+check(not bpy.ops.object.meromorph_conformal_transfer.poll(), "nothing to copy from: greyed")
+head.select_set(True)
+bpy.context.view_layer.objects.active = head
+check(bpy.ops.object.meromorph_conformal_transfer() == {"FINISHED"}, "transferred")
+activate(blenders)
+head.select_set(True)
+bpy.context.view_layer.objects.active = head
+bpy.ops.object.data_transfer(use_reverse_transfer=False, data_type="UV",
+                             loop_mapping="POLYINTERP_NEAREST", layers_select_src="ALL",
+                             layers_select_dst="NAME")
+bpy.ops.object.data_transfer(data_type="VCOL", loop_mapping="POLYINTERP_NEAREST",
+                             layers_select_src="ALL", layers_select_dst="NAME")
+
+truth_uv, near_axis = corner_truth(ours.data, true_positions)
+truth_color = (true_positions - low) / (high - low)
+figures = {}
+for obj in (ours, blenders):
+    uv = np.empty(2 * len(obj.data.loops))
+    obj.data.uv_layers["Cylinder"].data.foreach_get("uv", uv)
+    uv = uv.reshape(-1, 2)
+    du = np.abs(uv[:, 0] - truth_uv[:, 0]) % 1.0
+    error = np.hypot(np.minimum(du, 1 - du), uv[:, 1] - truth_uv[:, 1])[~near_axis]
+    straddling = 0
+    for polygon in obj.data.polygons:
+        span = slice(polygon.loop_start, polygon.loop_start + polygon.loop_total)
+        straddling += not near_axis[span].any() and uv[span, 0].max() - uv[span, 0].min() > 0.5
+    paint = obj.data.color_attributes.get("Paint")  # Blender's may carry it per corner, or not
+    color = np.empty(4 * len(paint.data) if paint else 0)
+    if paint:
+        paint.data.foreach_get("color", color)
+    if paint and paint.domain == "CORNER":
+        loop_vertex = np.empty(len(obj.data.loops), dtype=np.int64)
+        obj.data.loops.foreach_get("vertex_index", loop_vertex)
+        color_error = np.abs(color.reshape(-1, 4)[:, :3] - truth_color[loop_vertex]).max(axis=1)
+    else:
+        color_error = (np.abs(color.reshape(-1, 4)[:, :3] - truth_color).max(axis=1) if paint
+                       else np.array([np.nan]))
+    figures[obj.name] = (error.mean(), np.percentile(error, 99), straddling, color_error.mean())
+    print("%s: UV error mean %.4f, 99th percentile %.4f, %d triangles across the seam; colour "
+          "error mean %.4f" % ((obj.name,) + figures[obj.name]))
+mean, p99, straddling, color_mean = figures["Scan"]
+check(mean < 0.003 and p99 < 0.02, "UVs where they belong: %g, %g" % (mean, p99))
+check(straddling == 0, "%d triangles straddle the seam" % straddling)
+check(color_mean < 0.003, "colours where they belong: %g" % color_mean)
+check(mean < 0.1 * figures["Scan (Blender's transfer)"][0],
+      "closer than Blender's nearest-face transfer on a moved scan")
+hv_after = np.empty(3 * len(head.data.vertices))
+head.data.vertices.foreach_get("co", hv_after)
+check(np.array_equal(hv_after.reshape(-1, 3), hv), "the head copied from is unchanged")
+
 print(summary())

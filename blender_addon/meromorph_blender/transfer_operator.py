@@ -1,0 +1,190 @@
+# The operator "Transfer Through the Sphere": the active mesh's UV maps, colour attributes and
+# float attributes carried onto every other selected mesh, each receiving vertex and face corner
+# reading the active mesh at its corresponding point, found by libmeromorph through the two
+# surfaces' conformal spheres (genus 0) or flat tori (genus 1): whatever their placement, size,
+# pose or triangulation. (Blender's Transfer Mesh Data reads the nearest point in space instead.)
+# Values per face corner (UVs with seams) are read per receiving triangle from the one active
+# triangle that holds its centre, so a triangle never straddles a seam.
+import time
+
+import bpy
+import numpy as np
+from bpy.props import BoolProperty
+
+from . import library, remedies
+from .operator import mesh_arrays
+
+FLOAT_TYPES = {"FLOAT": ("value", 1), "FLOAT2": ("vector", 2), "FLOAT_VECTOR": ("vector", 3)}
+COLOR_TYPES = ("FLOAT_COLOR", "BYTE_COLOR")
+
+
+class Carrier:
+    """One receiving mesh's match onto the active one: reads values of the active mesh (per vertex
+    or per face corner) at the receiver's vertices or face corners."""
+
+    def __init__(self, receiver, active, match):
+        _, active_vertices, active_loops = mesh_arrays(active)
+        self.active_vertices = active_vertices.reshape(-1, 3)
+        self.active_loops = active_loops.reshape(-1, 3)
+        _, _, receiver_loops = mesh_arrays(receiver)
+        self.receiver_loops = receiver_loops.reshape(-1, 3)
+        self.receiver_loop_count = len(receiver.loops)
+        self.receiver_vertex_count = len(receiver.vertices)
+        self.match = match
+
+    def per_active_corner(self, values, domain):
+        """(t, 3, width): the values at the active mesh's loop triangle corners."""
+        return values[self.active_loops] if domain == "CORNER" else values[self.active_vertices]
+
+    def read(self, values, domain):
+        """The active mesh's values (per vertex or per loop, (n, width)) at the receiver's vertices
+        (domain POINT) or loops (domain CORNER)."""
+        corners = self.per_active_corner(values, domain)
+        if domain == "POINT":
+            face = self.match["vertex_face"]
+            out = np.einsum("vj,vjw->vw", self.match["vertex_weights"],
+                            corners[np.maximum(face, 0)])
+            out[face < 0] = 0
+            return out
+        face = self.match["triangle_face"]
+        at_corners = np.einsum("tkj,tjw->tkw", self.match["triangle_weights"],
+                               corners[np.maximum(face, 0)])
+        at_corners[face < 0] = 0
+        out = np.zeros((self.receiver_loop_count, values.shape[1]))
+        out[self.receiver_loops.reshape(-1)] = at_corners.reshape(-1, values.shape[1])
+        return out
+
+
+def attribute_values(attribute, key, width, count):
+    values = np.empty(count * width, dtype=np.float64)
+    attribute.data.foreach_get(key, values)
+    return values.reshape(count, width)
+
+
+def domain_size(mesh, domain):
+    return len(mesh.loops) if domain == "CORNER" else len(mesh.vertices)
+
+
+class OBJECT_OT_conformal_transfer(bpy.types.Operator):
+    """Copy the active mesh's UV maps, colors and attributes to the other selected meshes, each
+    point reading its corresponding point through the conformal sphere (closed meshes of genus 0,
+    or of genus 1), whatever their placement, size, pose or triangulation"""
+    bl_idname = "object.meromorph_conformal_transfer"
+    bl_label = "Transfer Through the Sphere"
+    bl_options = {"REGISTER", "UNDO"}
+
+    uvs: BoolProperty(name="UV Maps", default=True, description="Every UV map of the active mesh")
+    colors: BoolProperty(name="Color Attributes", default=True,
+                         description="Every color attribute of the active mesh (per vertex or "
+                                     "per face corner)")
+    attributes: BoolProperty(name="Float Attributes", default=True,
+                             description="The active mesh's other float, 2D and 3D vector "
+                                         "attributes per vertex or per face corner")
+
+    @classmethod
+    def poll(cls, context):
+        active = context.active_object
+        if active is None or active.type != "MESH":
+            cls.poll_message_set("Make the mesh to copy from active")
+            return False
+        if not any(o.type == "MESH" and o != active for o in context.selected_objects):
+            cls.poll_message_set("Select the meshes to copy to, then the one to copy from")
+            return False
+        return True
+
+    def execute(self, context):
+        active = context.active_object
+        receivers = [o for o in context.selected_objects if o.type == "MESH" and o != active]
+        if active is None or active.type != "MESH" or not receivers:
+            self.report({"ERROR"}, "Select the meshes to copy to, then the mesh to copy from "
+                                   "(active)")
+            return {"CANCELLED"}
+        if context.mode != "OBJECT":
+            bpy.ops.object.mode_set(mode="OBJECT")
+        started = time.time()
+        window_manager = context.window_manager
+        window_manager.progress_begin(0, 100)
+        lines, done = [], 0
+        try:
+            active_positions, active_triangles, _ = mesh_arrays(active.data)
+            for number, receiver in enumerate(receivers):
+                def progress(fraction, number=number):
+                    window_manager.progress_update(int(100 * (number + fraction) / len(receivers)))
+                    return 1
+                positions, triangles, _ = mesh_arrays(receiver.data)
+                try:
+                    match = library.match(positions, triangles, active_positions,
+                                          active_triangles, progress=progress)
+                except library.MeromorphError as error:
+                    lines.append("'%s' cannot be matched with '%s': %s" % (
+                        receiver.name, active.name,
+                        remedies.with_remedies(str(error), error.remedies)))
+                    continue
+                copied = self.carry(active.data, receiver.data,
+                                    Carrier(receiver.data, active.data, match))
+                report = match["report"]
+                alternatives = report["alignment"]["alternatives"]
+                lines.append("'%s': %s from '%s' (genus %d; matched mesh angle error %.2f deg, %d "
+                             "folded faces)%s" % (
+                                 receiver.name, ", ".join(copied) or "nothing to copy",
+                                 active.name, report["genus"],
+                                 report["matched_mesh"]["angle_error_mean_degrees"],
+                                 report["matched_mesh"]["folded_faces"],
+                                 "; WARNING: %d other alignments fit almost as well (a symmetric "
+                                 "surface); landmarks fix it in the command-line tool and Python"
+                                 % len(alternatives) if alternatives else ""))
+                done += 1
+        finally:
+            window_manager.progress_end()
+        message = "; ".join(lines) + " (%.2f s)" % (time.time() - started)
+        if done == 0:
+            self.report({"ERROR"}, message)
+            return {"CANCELLED"}
+        self.report({"WARNING"} if done < len(receivers) else {"INFO"}, message)
+        return {"FINISHED"}
+
+    def carry(self, source, receiver, carrier):
+        """Copies what the options ask from mesh `source` to mesh `receiver`; returns what."""
+        copied = []
+        if self.uvs:
+            for layer in source.uv_layers:
+                values = np.empty(2 * len(source.loops))
+                layer.data.foreach_get("uv", values)
+                out = receiver.uv_layers.get(layer.name) or receiver.uv_layers.new(name=layer.name)
+                out.data.foreach_set("uv", carrier.read(values.reshape(-1, 2), "CORNER").ravel())
+                copied.append("UV map '%s'" % layer.name)
+        if self.colors:
+            for attribute in source.color_attributes:
+                if attribute.domain not in ("POINT", "CORNER"):
+                    continue
+                values = attribute_values(attribute, "color", 4,
+                                          domain_size(source, attribute.domain))
+                out = self.receiving(receiver, attribute.name, attribute.data_type,
+                                     attribute.domain, colors=True)
+                out.data.foreach_set("color", carrier.read(values, attribute.domain).ravel())
+                copied.append("color '%s'" % attribute.name)
+        if self.attributes:
+            for attribute in source.attributes:
+                if (attribute.name.startswith(".") or attribute.name == "position" or
+                        attribute.data_type not in FLOAT_TYPES or
+                        attribute.domain not in ("POINT", "CORNER")):
+                    continue
+                key, width = FLOAT_TYPES[attribute.data_type]
+                values = attribute_values(attribute, key, width,
+                                          domain_size(source, attribute.domain))
+                out = self.receiving(receiver, attribute.name, attribute.data_type,
+                                     attribute.domain)
+                out.data.foreach_set(key, carrier.read(values, attribute.domain).ravel())
+                copied.append("attribute '%s'" % attribute.name)
+        receiver.update()
+        return copied
+
+    @staticmethod
+    def receiving(mesh, name, data_type, domain, colors=False):
+        """The receiver's attribute `name` of this type and domain (replaced if it differs)."""
+        collection = mesh.color_attributes if colors else mesh.attributes
+        existing = collection.get(name)
+        if existing is not None and (existing.data_type != data_type or existing.domain != domain):
+            collection.remove(existing)
+            existing = None
+        return existing or collection.new(name, data_type, domain)
