@@ -6,11 +6,13 @@
 #include <QJsonValue>
 #include <vector>
 
+#include "live_mesh.h"
 #include "meromorph.h"
 #include "remedy_words.h"
 
 FilterMeromorphPlugin::FilterMeromorphPlugin() {
-  typeList << FP_CONFORMAL_SPHERICAL_PARAMETERIZATION << FP_REMESH_THROUGH_CONFORMAL_SPHERE;
+  typeList << FP_CONFORMAL_SPHERICAL_PARAMETERIZATION << FP_REMESH_THROUGH_CONFORMAL_SPHERE
+           << FP_TRANSFER_THROUGH_CONFORMAL_SPHERE;
   for (FilterIDType type : types())
     actionList << new QAction(filterName(type), this);
 }
@@ -21,10 +23,19 @@ QString FilterMeromorphPlugin::pluginName() const {
 
 QString FilterMeromorphPlugin::filterName(FilterIDType filter) const {
   if (filter == FP_REMESH_THROUGH_CONFORMAL_SPHERE) return "Remesh through the Conformal Sphere";
+  if (filter == FP_TRANSFER_THROUGH_CONFORMAL_SPHERE)
+    return "Transfer Attributes through the Conformal Sphere";
   return "Conformal Spherical Parameterization";
 }
 
 QString FilterMeromorphPlugin::filterInfo(FilterIDType filter) const {
+  if (filter == FP_TRANSFER_THROUGH_CONFORMAL_SPHERE)
+    return "Copies vertex colors, texture coordinates (per vertex and per wedge, with the texture "
+           "files) and vertex quality from one closed mesh to another of the same genus (0 or "
+           "1), each vertex and face corner reading its corresponding point, found through the "
+           "two surfaces' conformal maps (meromorph): the meshes need not be aligned, of the same "
+           "size, pose or triangulation. A symmetric surface may be matched turned (the log "
+           "warns).";
   if (filter == FP_REMESH_THROUGH_CONFORMAL_SPHERE)
     return "A new triangulation of a closed surface of any genus, sampled through its conformal "
            "map onto the (layered) sphere (meromorph): a geodesic sphere with the branch values "
@@ -42,6 +53,8 @@ QString FilterMeromorphPlugin::filterInfo(FilterIDType filter) const {
 }
 
 MeshFilterInterface::FilterClass FilterMeromorphPlugin::getClass(QAction *action) {
+  if (ID(action) == FP_TRANSFER_THROUGH_CONFORMAL_SPHERE)
+    return FilterClass(MeshFilterInterface::Sampling | MeshFilterInterface::Texture);
   if (ID(action) == FP_REMESH_THROUGH_CONFORMAL_SPHERE) return MeshFilterInterface::Remeshing;
   return FilterClass(MeshFilterInterface::Texture | MeshFilterInterface::Selection);
 }
@@ -51,16 +64,40 @@ int FilterMeromorphPlugin::getPreConditions(QAction *) const {
 }
 
 int FilterMeromorphPlugin::getRequirements(QAction *action) {
-  if (ID(action) == FP_REMESH_THROUGH_CONFORMAL_SPHERE) return MeshModel::MM_NONE;
+  if (ID(action) != FP_CONFORMAL_SPHERICAL_PARAMETERIZATION) return MeshModel::MM_NONE;
   return MeshModel::MM_VERTTEXCOORD | MeshModel::MM_WEDGTEXCOORD | MeshModel::MM_VERTQUALITY;
 }
 
 int FilterMeromorphPlugin::postCondition(QAction *action) const {
   if (ID(action) == FP_REMESH_THROUGH_CONFORMAL_SPHERE) return MeshModel::MM_NONE;
+  if (ID(action) == FP_TRANSFER_THROUGH_CONFORMAL_SPHERE)
+    return MeshModel::MM_VERTCOLOR | MeshModel::MM_VERTTEXCOORD | MeshModel::MM_WEDGTEXCOORD |
+           MeshModel::MM_VERTQUALITY;
   // With vertices added where the map needs them, the faces change too.
   return MeshModel::MM_VERTTEXCOORD | MeshModel::MM_WEDGTEXCOORD | MeshModel::MM_VERTQUALITY |
          MeshModel::MM_VERTFLAGSELECT | MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNUMBER |
          MeshModel::MM_FACENUMBER | MeshModel::MM_FACEVERT;
+}
+
+void FilterMeromorphPlugin::initParameterSet(QAction *action, MeshDocument &document,
+                                             RichParameterList &parameters) {
+  if (ID(action) != FP_TRANSFER_THROUGH_CONFORMAL_SPHERE) {
+    if (document.mm()) initParameterSet(action, *document.mm(), parameters);
+    return;
+  }
+  // As MeshLab's Vertex Attribute Transfer: from the current layer to another one.
+  MeshModel *other = document.mm();
+  for (MeshModel *model : document.meshList)
+    if (model != document.mm()) other = model;
+  parameters.addParam(RichMesh("sourceMesh", document.mm(), &document, "Copy from",
+                               "The mesh whose colors, texture coordinates and quality are read"));
+  parameters.addParam(RichMesh("targetMesh", other, &document, "Copy to",
+                               "The mesh whose vertices and face corners receive them"));
+  parameters.addParam(RichBool("colors", true, "Vertex colors", "Copy the vertex colors"));
+  parameters.addParam(RichBool("texCoords", true, "Texture coordinates",
+                               "Copy the texture coordinates, per vertex and per wedge (each face "
+                               "from one side of a seam), and the texture file names"));
+  parameters.addParam(RichBool("quality", true, "Vertex quality", "Copy the vertex quality"));
 }
 
 void FilterMeromorphPlugin::initParameterSet(QAction *action, MeshModel &model,
@@ -155,45 +192,6 @@ bool FilterMeromorphPlugin::fail(const QString &filter, const QString &message) 
 }
 
 namespace {
-
-struct ProgressBridge {
-  vcg::CallBackPos *callback;
-};
-
-int report_progress(double fraction, const char *stage, void *user) {
-  ProgressBridge *bridge = static_cast<ProgressBridge *>(user);
-  // MeshLab's callback returns false to stop (MeshLab 2020.09's own never does).
-  return !bridge->callback || bridge->callback(int(100 * fraction), stage) ? 1 : 0;
-}
-
-// MeshLab's mesh may hold deleted elements: the live ones, numbered densely.
-struct LiveMesh {
-  std::vector<int> dense; // per vertex of the mesh: its live number, -1 when deleted
-  std::vector<int> live_of_dense;
-  std::vector<float> positions;
-  std::vector<int32_t> triangles;
-  std::vector<CFaceO *> faces;
-  size_t vertex_count() const { return positions.size() / 3; }
-};
-
-LiveMesh live_mesh(CMeshO &mesh) {
-  LiveMesh live;
-  live.dense.assign(mesh.vert.size(), -1);
-  for (size_t v = 0; v < mesh.vert.size(); ++v) {
-    if (mesh.vert[v].IsD()) continue;
-    live.dense[v] = int(live.live_of_dense.size());
-    live.live_of_dense.push_back(int(v));
-    for (int k = 0; k < 3; ++k)
-      live.positions.push_back(float(mesh.vert[v].P()[k]));
-  }
-  for (CFaceO &face : mesh.face) {
-    if (face.IsD()) continue;
-    for (int k = 0; k < 3; ++k)
-      live.triangles.push_back(live.dense[vcg::tri::Index(mesh, face.V(k))]);
-    live.faces.push_back(&face);
-  }
-  return live;
-}
 
 meromorph_options filter_options(const RichParameterList &parameters, ProgressBridge &bridge) {
   meromorph_options options;
@@ -364,6 +362,7 @@ bool FilterMeromorphPlugin::applyFilter(QAction *action, MeshDocument &document,
                                         vcg::CallBackPos *callback) {
   if (ID(action) == FP_REMESH_THROUGH_CONFORMAL_SPHERE)
     return remesh(document, parameters, callback);
+  if (ID(action) == FP_TRANSFER_THROUGH_CONFORMAL_SPHERE) return transfer(parameters, callback);
   MeshModel *model = document.mm();
   if (!model)
     return fail(filterName(FP_CONFORMAL_SPHERICAL_PARAMETERIZATION), "there is no current mesh");

@@ -13,6 +13,7 @@
 
 #include "io/mesh_reader.h"
 #include "test_support.h"
+#include "written_map.h"
 
 namespace meromorph {
 namespace {
@@ -289,6 +290,111 @@ TEST(MeshLabPlugin, RemeshWithinAMaxSurfaceDistance) {
   EXPECT_GT(to, 0.0) << log;
   EXPECT_LE(to, 0.5) << log;
   EXPECT_LE(from, 0.5) << log;
+}
+
+// Filters > Sampling > Transfer Attributes through the Conformal Sphere: a head with colours,
+// texture coordinates and quality per vertex (functions of the position) copied onto the same head
+// subdivided (every face into four), turned, shrunk and moved, as a second scan comes. Each of the
+// subdivision's first vertices is a vertex of the head, so its true values are the head's.
+// Beside it, MeshLab's own Vertex Attribute Transfer (closest point) on the same pair.
+TEST(MeshLabPlugin, TransferAttributesThroughTheConformalSphereOntoAMovedRetriangulation) {
+  const MeshLab meshlab;
+  Mesh head;
+  read_mesh(test::data_path("maxplanck.nf25k.off"), head);
+  const size_t n = head.vert.size();
+  vcg::Box3d box;
+  for (const auto &v : head.vert)
+    box.Add(v.cP());
+  const auto unit = [&](const MeshVertex &v, int k) {
+    return (v.cP()[k] - box.min[k]) / (box.max[k] - box.min[k]);
+  };
+  {
+    std::ofstream ply(meshlab.path("painted.ply"));
+    ply << "ply\nformat ascii 1.0\nelement vertex " << n
+        << "\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\n"
+           "property uchar green\nproperty uchar blue\nproperty uchar alpha\nproperty float "
+           "quality\nproperty float texture_u\nproperty float texture_v\nelement face "
+        << head.face.size() << "\nproperty list uchar int vertex_indices\nend_header\n";
+    for (const auto &v : head.vert)
+      ply << v.cP()[0] << " " << v.cP()[1] << " " << v.cP()[2] << " "
+          << std::lround(255 * unit(v, 0)) << " " << std::lround(255 * unit(v, 1)) << " "
+          << std::lround(255 * unit(v, 2)) << " 255 " << unit(v, 2) << " " << unit(v, 0) << " "
+          << unit(v, 1) << "\n";
+    for (const auto &f : head.face)
+      ply << "3 " << vcg::tri::Index(head, f.cV(0)) << " " << vcg::tri::Index(head, f.cV(1)) << " "
+          << vcg::tri::Index(head, f.cV(2)) << "\n";
+  }
+  ASSERT_EQ(
+      test::run_cli({"make", "subdivide", test::data_path("maxplanck.nf25k.off"), "-o",
+                     meshlab.path("scan.ply"), "--rigid-motion", "--seed", "3", "--scale", "0.5"})
+          .exit_code,
+      0);
+  const auto run_filter = [&](const std::string &filter, const std::string &parameters,
+                              const std::string &output) {
+    std::ofstream(meshlab.path("transfer.mlx"))
+        << "<!DOCTYPE FilterScript>\n<FilterScript>\n <filter name=\"" << filter << "\">\n"
+        << parameters << " </filter>\n</FilterScript>\n";
+    std::string log;
+    EXPECT_EQ(meshlab.run("-i " + meshlab.path("painted.ply") + " -i " + meshlab.path("scan.ply") +
+                              " -o " + meshlab.path(output) + " -m vc vq vt -s " +
+                              meshlab.path("transfer.mlx"),
+                          log),
+              0)
+        << log;
+    return log;
+  };
+  const std::string log =
+      run_filter("Transfer Attributes through the Conformal Sphere",
+                 "  <Param type=\"RichMesh\" value=\"0\" name=\"sourceMesh\"/>\n"
+                 "  <Param type=\"RichMesh\" value=\"1\" name=\"targetMesh\"/>\n"
+                 "  <Param type=\"RichBool\" value=\"true\" name=\"colors\"/>\n"
+                 "  <Param type=\"RichBool\" value=\"true\" name=\"texCoords\"/>\n"
+                 "  <Param type=\"RichBool\" value=\"true\" name=\"quality\"/>\n",
+                 "ours.ply");
+  EXPECT_NE(log.find("vertex colors, vertex texture coordinates, vertex quality"),
+            std::string::npos)
+      << log;
+  run_filter("Vertex Attribute Transfer",
+             "  <Param type=\"RichMesh\" value=\"0\" name=\"SourceMesh\"/>\n"
+             "  <Param type=\"RichMesh\" value=\"1\" name=\"TargetMesh\"/>\n"
+             "  <Param type=\"RichBool\" value=\"false\" name=\"GeomTransfer\"/>\n"
+             "  <Param type=\"RichBool\" value=\"false\" name=\"NormalTransfer\"/>\n"
+             "  <Param type=\"RichBool\" value=\"true\" name=\"ColorTransfer\"/>\n"
+             "  <Param type=\"RichBool\" value=\"true\" name=\"QualityTransfer\"/>\n"
+             "  <Param type=\"RichBool\" value=\"false\" name=\"SelectionTransfer\"/>\n"
+             "  <Param type=\"RichBool\" value=\"false\" name=\"QualityDistance\"/>\n"
+             "  <Param type=\"RichAbsPerc\" value=\"1000\" min=\"0\" max=\"1000\" "
+             "name=\"UpperBound\"/>\n"
+             "  <Param type=\"RichBool\" value=\"false\" name=\"onSelected\"/>\n",
+             "meshlabs.ply");
+  double figures[2][3] = {};
+  const char *files[2] = {"ours.ply", "meshlabs.ply"};
+  for (int which = 0; which < 2; ++which) {
+    const auto columns = test::read_written_mesh(meshlab.path(files[which]), false).columns;
+    ASSERT_EQ(columns.at("x").size(), n + head.face.size() * 3 / 2) << "the scan's vertices";
+    for (size_t v = 0; v < n; ++v) {
+      const MeshVertex &truth = head.vert[v];
+      for (int k = 0; k < 3; ++k)
+        figures[which][0] += std::abs(columns.at(k == 0   ? "red"
+                                                 : k == 1 ? "green"
+                                                          : "blue")[v] -
+                                      255 * unit(truth, k)) /
+                             (3.0 * n);
+      figures[which][1] += std::abs(columns.at("quality")[v] - unit(truth, 2)) / double(n);
+      if (which == 0)
+        figures[which][2] += std::hypot(columns.at("texture_u")[v] - unit(truth, 0),
+                                        columns.at("texture_v")[v] - unit(truth, 1)) /
+                             double(n);
+    }
+    std::cout << files[which] << ": colour error mean " << figures[which][0]
+              << " of 255, quality error mean " << figures[which][1]
+              << (which == 0 ? ", texture coordinate error mean " : "")
+              << (which == 0 ? std::to_string(figures[which][2]) : "") << "\n";
+  }
+  EXPECT_LT(figures[0][0], 1.5);
+  EXPECT_LT(figures[0][1], 0.005);
+  EXPECT_LT(figures[0][2], 0.005);
+  EXPECT_LT(figures[0][0], 0.1 * figures[1][0]) << "closer than MeshLab's closest-point transfer";
 }
 
 } // namespace
