@@ -18,7 +18,7 @@ namespace {
 meromorph::MeshArrays read(const std::string &bytes, std::vector<std::string> &notes) {
   const std::string path = "fuzz." MEROMORPH_FUZZ_FORMAT;
   const std::string format = MEROMORPH_FUZZ_FORMAT;
-  if (format == "ply") return meromorph::read_ply(path, bytes, notes);
+  if (format == "ply") return meromorph::read_ply(path, bytes, notes, true); // values kept too
   if (format == "off") return meromorph::read_off(path, bytes, notes);
   if (format == "obj") return meromorph::read_obj(path, bytes, notes);
   return meromorph::read_stl(path, bytes, notes);

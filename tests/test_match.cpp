@@ -400,5 +400,81 @@ TEST(Match, GenusOneBetweenDifferentToriTheDilatationIsTheRatioOfTheirModuli) {
   std::cout << "dilatation " << number_after("dilatation") << ", exact " << exact << "\n";
 }
 
+// `meromorph transfer`: a head's colours, quality, texture coordinates and a label per vertex
+// (functions of the position; the label splits the head at its median height) carried onto the
+// same head subdivided, turned, shrunk and moved. The subdivision's first vertices are the head's,
+// so their true values are known; labels are taken whole, never mixed.
+TEST(Transfer, AHeadsValuesOntoItsMovedSubdivision) {
+  const test::TempDir dir;
+  const Surface head = read_surface(test::data_path("maxplanck.nf25k.off"));
+  const size_t n = head.positions.size();
+  Vec3 low = head.positions.front(), high = low;
+  for (const Vec3 &p : head.positions)
+    for (size_t k = 0; k < 3; ++k)
+      low[k] = std::min(low[k], p[k]), high[k] = std::max(high[k], p[k]);
+  const auto unit = [&](const Vec3 &p, size_t k) { return (p[k] - low[k]) / (high[k] - low[k]); };
+  std::ostringstream ply;
+  ply << "ply\nformat ascii 1.0\nelement vertex " << n
+      << "\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\nproperty "
+         "uchar green\nproperty uchar blue\nproperty float quality\nproperty float texture_u\n"
+         "property float texture_v\nproperty int part\nelement face "
+      << head.triangles.size() << "\nproperty list uchar int vertex_indices\nend_header\n";
+  ply.precision(9);
+  for (const Vec3 &p : head.positions)
+    ply << p[0] << " " << p[1] << " " << p[2] << " " << std::lround(255 * unit(p, 0)) << " "
+        << std::lround(255 * unit(p, 1)) << " " << std::lround(255 * unit(p, 2)) << " "
+        << unit(p, 2) << " " << unit(p, 0) << " " << unit(p, 1) << " " << (unit(p, 2) > 0.5)
+        << "\n";
+  for (const auto &t : head.triangles)
+    ply << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+  const std::string painted = dir.write("painted.ply", ply.str());
+  ASSERT_EQ(test::run_cli({"make", "subdivide", test::data_path("maxplanck.nf25k.off"), "-o",
+                           dir.path("scan.off"), "--rigid-motion", "--seed", "3", "--scale", "0.5"})
+                .exit_code,
+            0);
+  const test::RunResult run =
+      test::run_cli({"transfer", dir.path("scan.off"), painted, "-o", dir.path("scan.ply"),
+                     "--report", dir.path("report.json")});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("carried red, green, blue, quality, texture_u, texture_v, part"),
+            std::string::npos)
+      << run.out;
+  const test::WrittenMesh written = test::read_written_mesh(dir.path("scan.ply"));
+  const auto &c = written.columns;
+  ASSERT_EQ(c.at("x").size(), n + head.triangles.size() * 3 / 2);
+  double colour = 0, quality = 0, uv = 0;
+  int labels_right = 0;
+  for (size_t v = 0; v < n; ++v) {
+    const Vec3 &p = head.positions[v];
+    colour += (std::abs(c.at("red")[v] - 255 * unit(p, 0)) +
+               std::abs(c.at("green")[v] - 255 * unit(p, 1)) +
+               std::abs(c.at("blue")[v] - 255 * unit(p, 2))) /
+              (3.0 * double(n));
+    quality += std::abs(c.at("quality")[v] - unit(p, 2)) / double(n);
+    uv += std::hypot(c.at("texture_u")[v] - unit(p, 0), c.at("texture_v")[v] - unit(p, 1)) /
+          double(n);
+    labels_right += c.at("part")[v] == double(unit(p, 2) > 0.5);
+  }
+  for (double label : c.at("part"))
+    ASSERT_TRUE(label == 0 || label == 1) << "a label is taken whole: " << label;
+  EXPECT_LT(colour, 1.5);
+  EXPECT_LT(quality, 0.005);
+  EXPECT_LT(uv, 0.005);
+  EXPECT_GE(labels_right, int(0.99 * double(n)));
+  std::cout << "colour error " << colour << " of 255, quality " << quality << ", texture " << uv
+            << ", labels right " << labels_right << " of " << n << "\n";
+  // Nothing to carry, an output that cannot carry values, and the input never written over.
+  test::RunResult refused =
+      test::run_cli({"transfer", painted, dir.path("scan.off"), "-o", dir.path("x.ply")});
+  EXPECT_EQ(refused.exit_code, 3);
+  EXPECT_NE(refused.err.find("no per-vertex values"), std::string::npos) << refused.err;
+  EXPECT_EQ(
+      test::run_cli({"transfer", dir.path("scan.off"), painted, "-o", dir.path("x.obj")}).exit_code,
+      2);
+  const std::string before = test::file_bytes(painted);
+  EXPECT_EQ(test::run_cli({"transfer", dir.path("scan.off"), painted, "-o", painted}).exit_code, 2);
+  EXPECT_EQ(test::file_bytes(painted), before);
+}
+
 } // namespace
 } // namespace meromorph

@@ -107,6 +107,42 @@ TEST(PlyReader, ReadsEveryEncodingAndSkipsWhatItDoesNotUse) {
               "faces_first.ply");
 }
 
+// Asked for, the vertex element's other scalar properties come back by name and type, in both
+// byte orders (the binary cube has a uchar `red` of 200 per vertex); not asked for, none.
+TEST(PlyReader, KeepsTheVerticesOtherValuesWhenAsked) {
+  for (bool big_endian : {false, true}) {
+    TempDir dir;
+    const std::string path = dir.write("values.ply", binary_cube(big_endian));
+    Mesh mesh;
+    const MeshSource source = read_mesh(path, mesh, {}, true);
+    ASSERT_EQ(source.vertex_values.size(), 1u);
+    const VertexValues &red = source.vertex_values.front();
+    EXPECT_EQ(red.name, "red");
+    EXPECT_TRUE(red.integer && red.byte);
+    EXPECT_EQ(red.values, std::vector<double>(8, 200.0));
+    EXPECT_TRUE(read_mesh(path, mesh).vertex_values.empty());
+  }
+  TempDir dir;
+  Mesh mesh;
+  const MeshSource source = read_mesh(
+      dir.write("ascii.ply", "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\n"
+                             "property float quality\nproperty float y\nproperty float z\n"
+                             "property int label\nelement face 6\n"
+                             "property list uchar int vertex_indices\nend_header\n"
+                             "0 0.5 0 0 3\n1 1.5 0 0 3\n1 2.5 1 0 3\n0 3.5 1 0 3\n"
+                             "0 4.5 0 1 4\n1 5.5 0 1 4\n1 6.5 1 1 4\n0 7.5 1 1 4\n" +
+                                 cube_faces),
+      mesh, {}, true);
+  ASSERT_EQ(source.vertex_values.size(), 2u);
+  EXPECT_EQ(source.vertex_values[0].name, "quality");
+  EXPECT_FALSE(source.vertex_values[0].integer);
+  EXPECT_EQ(source.vertex_values[0].values[7], 7.5);
+  EXPECT_EQ(source.vertex_values[1].name, "label");
+  EXPECT_TRUE(source.vertex_values[1].integer && !source.vertex_values[1].byte);
+  EXPECT_EQ(source.vertex_values[1].values[4], 4.0);
+  EXPECT_EQ(mesh.vert[6].cP(), Point3(1, 1, 1));
+}
+
 TEST(PlyReader, RefusesLyingCountsAndIndices) {
   expect_refused("ply\nformat ascii 1.0\nelement vertex\nproperty float x\nend_header\n",
                  "bad.ply:3: expected 'element NAME COUNT'");

@@ -11,6 +11,7 @@
 #include "io/mesh_writer.h"
 #include "io/staged_outputs.h"
 #include "job_input.h"
+#include "landmarks_file.h"
 #include "match/surface_match.h"
 #include "mesh/mesh.h"
 #include "report/report_json.h"
@@ -23,26 +24,6 @@ struct MatchCommandOptions {
   std::string source, target, output, landmarks, report, both;
   bool quiet = false;
 };
-
-// Lines "i j" (a source vertex and a target vertex); "#" starts a comment.
-std::vector<std::pair<int, int>> read_landmarks(const std::string &path) {
-  std::ifstream file(path);
-  if (!file) throw ArgumentError(path + ": cannot read the landmarks file");
-  std::vector<std::pair<int, int>> pairs;
-  std::string line;
-  for (int number = 1; std::getline(file, line); ++number) {
-    line = line.substr(0, line.find('#'));
-    std::istringstream words(line);
-    long long i = 0, j = 0;
-    std::string extra;
-    if (!(words >> i)) continue; // blank or comment
-    if (!(words >> j) || (words >> extra) || i < 0 || j < 0 || i > INT32_MAX || j > INT32_MAX)
-      throw InputError(path + ":" + std::to_string(number) +
-                       ": a landmark line is two vertex indices, source then target (\"12 40\")");
-    pairs.emplace_back(int(i), int(j));
-  }
-  return pairs;
-}
 
 // SOURCE's triangles on the matched points, with the target's triangle and weights per vertex.
 void write_matched_mesh(const Mesh &source, const MatchedPoints &points, const std::string &file) {

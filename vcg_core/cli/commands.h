@@ -20,5 +20,6 @@ Command add_forms_command(CLI::App &app);
 Command add_param_command(CLI::App &app);
 Command add_remesh_command(CLI::App &app);
 Command add_match_command(CLI::App &app);
+Command add_transfer_command(CLI::App &app);
 
 } // namespace meromorph::cli

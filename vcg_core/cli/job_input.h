@@ -23,11 +23,13 @@ struct JobInput {
   double read_ms = 0;
 };
 
-inline JobInput read_job_input(const std::string &path, bool repair, Mesh &mesh) {
+// `vertex_values`: keep the values a PLY file carries per vertex (MeshSource::vertex_values).
+inline JobInput read_job_input(const std::string &path, bool repair, Mesh &mesh,
+                               bool vertex_values = false) {
   const auto start = std::chrono::steady_clock::now();
   JobInput input;
   // (reading is serial: the other core's thread is started meanwhile, common/parallel_for.h)
-  while_threads_start([&] { input.source = read_mesh(path, mesh); });
+  while_threads_start([&] { input.source = read_mesh(path, mesh, {}, vertex_values); });
   if (repair) input.repairs = repair_mesh(mesh);
   if (!input.repairs.empty()) input.source.triangle_face.clear(); // renumbered
   tune_blas_for_job(long(mesh.vert.size()));                      // cli/process_settings.h

@@ -24,7 +24,8 @@ int main(int argc, char **argv) {
 
   std::map<CLI::App *, cli::Command> commands;
   for (auto add : {cli::add_info_command, cli::add_make_command, cli::add_forms_command,
-                   cli::add_param_command, cli::add_remesh_command, cli::add_match_command}) {
+                   cli::add_param_command, cli::add_remesh_command, cli::add_match_command,
+                   cli::add_transfer_command}) {
     cli::Command run = add(app);
     commands[app.get_subcommands({}).back()] = run;
   }

@@ -31,9 +31,11 @@ MeshArrays read_stl(const std::string &path, const std::string &bytes,
 
 // PLY, ASCII and binary (little and big endian): the `vertex` element's x, y, z and the `face`
 // element's `vertex_indices` list (any integer count and index types; polygons triangulated);
-// every other element and property is read past by its declared type. Every count, list length
-// and index is checked; errors name the header or data line (ASCII) or the byte offset (binary).
+// every other element and property is read past by its declared type (with `vertex_values`, the
+// vertex element's other scalar properties are kept in MeshArrays::vertex_values). Every count,
+// list length and index is checked; errors name the header or data line (ASCII) or the byte
+// offset (binary).
 MeshArrays read_ply(const std::string &path, const std::string &bytes,
-                    std::vector<std::string> &notes);
+                    std::vector<std::string> &notes, bool vertex_values = false);
 
 } // namespace meromorph

@@ -22,7 +22,8 @@ std::string read_whole_file(const std::string &path) {
 
 } // namespace
 
-MeshSource read_mesh(const std::string &path, Mesh &mesh, const Progress &progress) {
+MeshSource read_mesh(const std::string &path, Mesh &mesh, const Progress &progress,
+                     bool vertex_values) {
   MeshSource source;
   source.path = path;
   source.format = detect_format(path);
@@ -41,11 +42,12 @@ MeshSource read_mesh(const std::string &path, Mesh &mesh, const Progress &progre
       arrays = read_stl(path, content, source.notes);
       break;
     case MeshFormat::ply:
-      arrays = read_ply(path, content, source.notes);
+      arrays = read_ply(path, content, source.notes, vertex_values);
       break;
     }
     mesh_from_arrays(arrays, mesh);
     source.triangle_face = std::move(arrays.triangle_face);
+    source.vertex_values = std::move(arrays.vertex_values);
   }
   vcg::tri::UpdateBounding<Mesh>::Box(mesh);
   progress.report(1.0, "reading " + path);

@@ -432,15 +432,19 @@ MeshLayout mesh_layout(const std::string &path, const std::string &bytes, const 
 }
 
 // One instance of `element`: a vertex's position, a face's corners, or values passed over.
+// `scalars`: when not null, a vertex's scalar values in the order of its properties.
 void read_instance(ValueReader &reader, const MeshLayout &layout, const Element &element,
-                   const std::string &what, Point3 &position, std::vector<int> &polygon) {
+                   const std::string &what, Point3 &position, std::vector<int> &polygon,
+                   std::vector<double> *scalars) {
   const uint64_t vertex_count = layout.vertices->count;
   for (const Property &property : element.properties) {
     if (!property.list) {
       const double number = reader.value(property.type, what);
-      if (&element == layout.vertices)
+      if (&element == layout.vertices) {
         for (int k = 0; k < 3; ++k)
           if (&property == layout.coordinates[k]) position[k] = number;
+        if (scalars) scalars->push_back(number);
+      }
       continue;
     }
     // A list can hold no more values than bytes are left in the file.
@@ -487,7 +491,7 @@ void strips_to_triangles(const std::vector<int> &strips, std::vector<std::array<
 } // namespace
 
 MeshArrays read_ply(const std::string &path, const std::string &bytes,
-                    std::vector<std::string> &notes) {
+                    std::vector<std::string> &notes, bool vertex_values) {
   if (bytes.empty()) throw InputError(path + ": the file is empty");
   const Header header = HeaderParser(path, bytes).parse();
   const MeshLayout layout = mesh_layout(path, bytes, header, notes);
@@ -504,14 +508,35 @@ MeshArrays read_ply(const std::string &path, const std::string &bytes,
   }
   std::vector<int> polygon;
   std::vector<std::array<int, 3>> strip_triangles;
+  // The vertex element's scalar properties other than the coordinates, by their place in it.
+  std::vector<std::pair<size_t, size_t>> kept; // (place among the scalars, values index)
+  if (vertex_values) {
+    size_t place = 0;
+    for (const Property &property : layout.vertices->properties) {
+      if (property.list) continue;
+      if (&property != layout.coordinates[0] && &property != layout.coordinates[1] &&
+          &property != layout.coordinates[2]) {
+        kept.emplace_back(place, arrays.vertex_values.size());
+        arrays.vertex_values.push_back(
+            {property.name, is_integer(property.type), size_of(property.type) == 1, {}});
+        arrays.vertex_values.back().values.reserve(size_t(layout.vertices->count));
+      }
+      ++place;
+    }
+  }
+  std::vector<double> scalars;
   for (const Element &element : header.elements) {
     if (element.properties.empty()) continue; // its instances take no bytes: nothing to read
     for (uint64_t i = 0; i < element.count; ++i) {
       Point3 position(0, 0, 0);
       polygon.clear();
+      scalars.clear();
       read_instance(reader, layout, element, element.name + " " + std::to_string(i), position,
-                    polygon);
+                    polygon, kept.empty() ? nullptr : &scalars);
       if (&element == layout.vertices) arrays.positions.push_back(position);
+      if (&element == layout.vertices)
+        for (const auto &[place, index] : kept)
+          arrays.vertex_values[index].values.push_back(scalars[place]);
       if (&element == layout.faces) polygon_list.push_back(polygon);
       if (&element == layout.strips) strips_to_triangles(polygon, strip_triangles);
     }

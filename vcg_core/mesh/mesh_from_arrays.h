@@ -7,14 +7,25 @@
 #pragma once
 
 #include <array>
+#include <string>
 #include <vector>
 
 #include "mesh/mesh.h"
 
 namespace meromorph {
 
+// A per-vertex value a file carries beside the position (PLY: a scalar property of the vertex
+// element), read only when asked for.
+struct VertexValues {
+  std::string name;
+  bool integer = false; // an integer type in the file
+  bool byte = false;    // a one-byte type (char, uchar: colours)
+  std::vector<double> values;
+};
+
 struct MeshArrays {
   std::vector<Point3> positions;
+  std::vector<VertexValues> vertex_values; // PLY, when asked for: every scalar but x, y, z
   std::vector<std::array<int, 3>> triangles;
   // Readers: per triangle, the file's face it was split from (empty when no face was split).
   std::vector<int> triangle_face;
