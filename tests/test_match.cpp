@@ -476,5 +476,63 @@ TEST(Transfer, AHeadsValuesOntoItsMovedSubdivision) {
   EXPECT_EQ(test::file_bytes(painted), before);
 }
 
+// `remesh --like TEMPLATE`: a collection remeshed like one template. Each output has the
+// template's triangles, its vertex i on the input where the template's vertex i is: the head's
+// subdivisions moved two ways (their first vertices are the head's, moved), and the kitten
+// remeshed apart at ten times the size (genus 1).
+TEST(Remesh, LikeATemplateGivesACollectionOneConnectivity) {
+  const test::TempDir dir;
+  const std::string head = test::data_path("maxplanck.nf25k.off");
+  const Surface like = read_surface(head);
+  for (const char *seed : {"3", "4"}) {
+    const std::string scan = dir.path(std::string("scan") + seed + ".off");
+    ASSERT_EQ(test::run_cli({"make", "subdivide", head, "-o", scan, "--rigid-motion", "--seed",
+                             seed, "--scale", "0.5"})
+                  .exit_code,
+              0);
+    const test::RunResult run =
+        test::run_cli({"remesh", scan, "-o", dir.path("like.off"), "--like", head, "--quiet"});
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const Surface input = read_surface(scan), out = read_surface(dir.path("like.off"));
+    EXPECT_EQ(out.triangles, like.triangles) << "the template's triangles";
+    ASSERT_EQ(out.positions.size(), like.positions.size());
+    const double d = diagonal(input.positions);
+    double mean = 0, worst = 0;
+    for (size_t v = 0; v < out.positions.size(); ++v) {
+      const double e = norm(sub(out.positions[v], input.positions[v])) / d;
+      mean += e / double(out.positions.size());
+      worst = std::max(worst, e);
+    }
+    EXPECT_LE(mean, 0.005);
+    EXPECT_LE(worst, 0.02);
+    std::cout << "head like the head, seed " << seed << ": vertex i within " << 100 * mean
+              << "% (mean), " << 100 * worst << "% (max) of the diagonal\n";
+  }
+  const Surface kitten = read_surface(test::data_path("kitten.nf20k.off"));
+  ASSERT_EQ(
+      test::run_cli({"remesh", test::data_path("kitten.nv40k.off"), "-o", dir.path("kitten.off"),
+                     "--like", test::data_path("kitten.nf20k.off"), "--quiet"})
+          .exit_code,
+      0);
+  const Surface out = read_surface(dir.path("kitten.off"));
+  EXPECT_EQ(out.triangles, kitten.triangles);
+  double mean = 0;
+  for (size_t v = 0; v < out.positions.size(); ++v) {
+    const Vec3 &p = kitten.positions[v];
+    mean += norm(sub(out.positions[v], Vec3{10 * p[0], 10 * p[1], 10 * p[2]})) /
+            diagonal(out.positions) / double(out.positions.size());
+  }
+  EXPECT_LE(mean, 0.002);
+  // The template sets the size: no size option with it; landmarks only with it.
+  EXPECT_EQ(
+      test::run_cli({"remesh", head, "-o", dir.path("x.off"), "--like", head, "--vertices", "100"})
+          .exit_code,
+      2);
+  EXPECT_EQ(test::run_cli({"remesh", head, "-o", dir.path("x.off"), "--landmarks",
+                           dir.write("pairs.txt", "1 1\n")})
+                .exit_code,
+            2);
+}
+
 } // namespace
 } // namespace meromorph

@@ -1,6 +1,7 @@
 // `meromorph remesh INPUT -o OUT [--resolution N | --vertices K | --edge-length L |
-// --max-error E] [--report R.json] ...`: a new
-// triangulation of the surface sampled through its layered sphere (surface_remesh.h).
+// --max-error E | --like TEMPLATE [--landmarks PAIRS.txt]] [--report R.json] ...`: a new
+// triangulation of the surface sampled through its layered sphere (surface_remesh.h), or the
+// template's triangulation put on it through the match (surface_match.h).
 #include <chrono>
 #include <iomanip>
 #include <iostream>
@@ -15,6 +16,8 @@
 #include "io/staged_outputs.h"
 #include "job/surface_map.h"
 #include "job_input.h"
+#include "landmarks_file.h"
+#include "match/surface_match.h"
 #include "remesh/surface_remesh.h"
 #include "report/remesh_summary.h"
 #include "report/report_json.h"
@@ -24,7 +27,7 @@ namespace meromorph::cli {
 namespace {
 
 struct RemeshCommandOptions {
-  std::string input, output, report;
+  std::string input, output, report, like, landmarks;
   int resolution = -1;
   long long vertices = -1;
   double edge_length = -1, max_error_percent = -1;
@@ -58,11 +61,65 @@ void warn_sparse_regions(const SurfaceRemesh &remesh) {
               << "% of its fair share of samples: its triangles are larger there\n";
 }
 
+// --like TEMPLATE: the template's triangles on INPUT, its vertex i at the point of INPUT that
+// corresponds to it through their conformal spheres or flat tori (match/surface_match.h): a
+// collection remeshed like one template has one connectivity, vertex i at corresponding points.
+int remesh_like(const RemeshCommandOptions &options, StagedOutputs &outputs, MeshFormat format,
+                const std::string &output_file, const std::string &report_file) {
+  MatchOptions settings;
+  if (!options.landmarks.empty()) settings.landmarks = read_landmarks(options.landmarks);
+  Mesh input, like;
+  const JobInput input_read = read_job_input(options.input, true, input);
+  const JobInput like_read = read_job_input(options.like, false, like);
+  TerminalProgress bar(options.quiet);
+  const SurfaceMatch match = match_surfaces(like, input, settings, bar.progress());
+  bar.finish();
+  if (match.unmatched_vertices > 0)
+    throw InputError(options.input + ": " + std::to_string(match.unmatched_vertices) + " of " +
+                     std::to_string(like.vert.size()) + " vertices of " + options.like +
+                     " found no corresponding point on it");
+  Mesh remeshed;
+  vcg::tri::Append<Mesh, Mesh>::MeshCopy(remeshed, like);
+  for (size_t v = 0; v < remeshed.vert.size(); ++v)
+    for (int k = 0; k < 3; ++k)
+      remeshed.vert[v].P()[k] = match.forward.position[v][k];
+  nlohmann::json report = {{"input", source_json(input_read.source)},
+                           {"repairs", input_read.repairs},
+                           {"like", source_json(like_read.source)},
+                           {"match", match_json(match, settings.landmarks.size())},
+                           {"version", MEROMORPH_VERSION}};
+  outputs.writing([&] {
+    save_mesh(remeshed, format, output_file);
+    if (!report_file.empty()) write_text_file(report_file, json_text(report) + "\n");
+    outputs.commit();
+  });
+  if (!options.quiet)
+    std::cout << options.input << " remeshed like " << options.like << ": " << remeshed.vert.size()
+              << " vertices, " << remeshed.face.size() << " faces, genus " << match.genus << " ("
+              << match_method(match) << "); the remesh's angles differ from the template's by "
+              << match.angle_error_mean_degrees << " deg on average, " << match.folded_faces
+              << " folded faces\n";
+  return int(ExitCode::done);
+}
+
 int run_remesh(const RemeshCommandOptions &options) {
-  StagedOutputs outputs({options.input});
+  std::vector<std::string> inputs{options.input};
+  for (const std::string &path : {options.like, options.landmarks})
+    if (!path.empty()) inputs.push_back(path);
+  StagedOutputs outputs(inputs);
   const MeshFormat remesh_format = output_format(options.output);
   const std::string output_file = outputs.add(options.output);
   const std::string report_file = options.report.empty() ? "" : outputs.add(options.report);
+  if (!options.landmarks.empty() && options.like.empty())
+    throw ArgumentError("--landmarks pairs a template's vertices with the input's: give --like");
+  if (!options.like.empty()) {
+    if ((options.resolution >= 0) || (options.vertices > 0) || (options.edge_length > 0) ||
+        (options.max_error_percent > 0) || options.uniform)
+      throw ArgumentError("--like gives the remesh the template's vertices and triangles: no "
+                          "size option (--resolution, --vertices, --edge-length, --max-error, "
+                          "--semi-regular) goes with it");
+    return remesh_like(options, outputs, remesh_format, output_file, report_file);
+  }
   if ((options.resolution >= 0) + (options.vertices > 0) + (options.edge_length > 0) +
           (options.max_error_percent > 0) >
       1)
@@ -168,6 +225,14 @@ Command add_remesh_command(CLI::App &app) {
                    "close every hole for the map only (the remesh keeps a hole there)");
   remesh->add_flag("--split-nonmanifold", options->split_nonmanifold,
                    "take non-manifold vertices and edges apart for the map");
+  remesh->add_option("--like", options->like,
+                     "TEMPLATE mesh (closed, the input's genus, 0 or 1): the remesh gets its "
+                     "triangles, its vertex i at the input's point corresponding to the "
+                     "template's vertex i (a collection remeshed like one template: one "
+                     "connectivity, corresponding vertices)");
+  remesh->add_option("--landmarks", options->landmarks,
+                     "with --like: text file of pairs \"i j\", template vertex i corresponds to "
+                     "input vertex j (genus 0: three or more; default: automatic)");
   remesh->add_flag("--quiet", options->quiet, "no progress bar and no summary line");
   return [options] { return run_remesh(*options); };
 }
