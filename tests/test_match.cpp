@@ -376,6 +376,38 @@ TEST(Match, GenusOneTwoTriangulationsMadeApartMeetAtTheSamePoints) {
             << "% (max) of the diagonal from the same point\n";
 }
 
+// A genus-1 source as users bring it, with a vertex on no face and two faces written twice (one
+// the other way round): matched on its own vertices as the clean kitten is, the vertex on no face
+// left unmatched (its target face -1).
+TEST(Match, GenusOneDefectsAreSetAsideAndEveryVertexKeepsItsPlace) {
+  const test::TempDir dir;
+  const std::string target = test::data_path("kitten.nv40k.off");
+  Surface kitten = read_surface(test::data_path("kitten.nf20k.off"));
+  const size_t n = kitten.positions.size();
+  ASSERT_EQ(test::run_cli({"match", test::data_path("kitten.nf20k.off"), target, "-o",
+                           dir.path("clean.ply"), "--quiet"})
+                .exit_code,
+            0);
+  kitten.positions.push_back({5, 5, 5});
+  kitten.triangles.push_back(kitten.triangles[100]);
+  kitten.triangles.push_back(
+      {kitten.triangles[7][0], kitten.triangles[7][2], kitten.triangles[7][1]});
+  const std::string source =
+      dir.write("defects.off", test::off_text(kitten.positions, kitten.triangles));
+  const test::RunResult run =
+      test::run_cli({"match", source, target, "-o", dir.path("defects.ply"), "--quiet"});
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto clean = test::read_written_mesh(dir.path("clean.ply"), false).columns;
+  const auto defects = test::read_written_mesh(dir.path("defects.ply"), false).columns;
+  ASSERT_EQ(defects.at("x").size(), n + 1);
+  double worst = 0;
+  for (size_t v = 0; v < n; ++v)
+    for (const char *axis : {"x", "y", "z"})
+      worst = std::max(worst, std::abs(defects.at(axis)[v] - clean.at(axis)[v]));
+  EXPECT_LT(worst, 1e-3 * diagonal(read_surface(target).positions));
+  EXPECT_EQ(defects.at("target_face")[n], -1) << "the vertex on no face has no match";
+}
+
 // Two tori of revolution of different shape: the extremal map between them stretches by the
 // ratio of their exact moduli, i sqrt(R^2 - r^2) / r.
 TEST(Match, GenusOneBetweenDifferentToriTheDilatationIsTheRatioOfTheirModuli) {

@@ -10,11 +10,13 @@
 #include "common/errors.h"
 #include "common/parallel_for.h"
 #include "forms/holomorphic_pipeline.h"
+#include "job/set_aside.h"
 #include "job/surface_map.h"
 #include "maps/parameterization.h"
 #include "match/flat_torus.h"
 #include "mesh/face_vectors.h"
 #include "mesh/mesh_edges.h"
+#include "mesh/validation.h"
 #include "sphere/sphere_triangle_grid.h"
 
 namespace meromorph {
@@ -51,9 +53,15 @@ double diagonal_of(const std::vector<Eigen::Vector3d> &positions) {
   return std::max((high - low).norm(), 1e-300);
 }
 
-// V - E + F of a closed triangle mesh (each edge on two faces): 2 - 2 genus when it is one part.
+// V - E + F of a closed triangle mesh (each edge on two faces) is 2 - 2 genus when it is one part;
+// counted on the mesh with its defects set aside (job/set_aside.h).
 int closed_genus_estimate(const Mesh &mesh) {
-  return (2 - (int(mesh.vert.size()) - int(mesh.face.size()) / 2)) / 2;
+  const Validation validation = validate_mesh(mesh);
+  if (!has_defects_to_set_aside(validation))
+    return (2 - (int(mesh.vert.size()) - int(mesh.face.size()) / 2)) / 2;
+  SetAside aside;
+  set_aside_defects(mesh, validation, aside);
+  return (2 - (int(aside.work.vert.size()) - int(aside.work.face.size()) / 2)) / 2;
 }
 
 MappedSurface genus0_sphere(Mesh &mesh, const char *which, const Progress &progress) {
@@ -101,15 +109,36 @@ struct TorusOfSurface {
   std::vector<double> factor;    // log conformal factor per vertex
 };
 
+// The flat torus is computed on the mesh with its defects set aside (job/set_aside.h: seam
+// duplicates welded, doubled faces and vertices on no face left out) and read back on the input's
+// own vertices and faces; those left out get no flat point (no match, and found by nothing).
 TorusOfSurface genus1_torus(const Mesh &mesh, const char *which, const Progress &progress) {
   const std::string name = which;
-  const HolomorphicForms forms = compute_holomorphic_forms(mesh, SolverKind::cholmod, progress);
+  const Validation validation = validate_mesh(mesh);
+  SetAside aside;
+  const bool set_aside = has_defects_to_set_aside(validation);
+  if (set_aside) set_aside_defects(mesh, validation, aside);
+  const Mesh &work = set_aside ? aside.work : mesh;
+  const HolomorphicForms forms = compute_holomorphic_forms(work, SolverKind::cholmod, progress);
   if (forms.genus != 1)
     throw InputError("the " + name + " has genus " + std::to_string(forms.genus) +
                      ": matching covers genus 0 and 1 so far");
   TorusOfSurface out;
-  out.torus = flat_torus(mesh, build_mesh_edges(mesh), forms.normalized.front(),
-                         forms.riemann_matrix(0, 0));
+  FlatTorus flat = flat_torus(work, build_mesh_edges(work), forms.normalized.front(),
+                              forms.riemann_matrix(0, 0));
+  if (set_aside) { // back on the input's vertices and faces
+    const Eigen::Vector2d none = Eigen::Vector2d::Constant(std::nan(""));
+    FlatTorus on_input{flat.tau, {}, {}, {}};
+    for (int w : aside.vertex_in_work)
+      on_input.vertex.push_back(w >= 0 ? flat.vertex[size_t(w)] : none);
+    for (int w : aside.face_in_work) {
+      on_input.faces.push_back(w >= 0 ? flat.faces[size_t(w)]
+                                      : std::array<Eigen::Vector2d, 3>{none, none, none});
+      on_input.face_areas.push_back(w >= 0 ? flat.face_areas[size_t(w)] : 0.0);
+    }
+    flat = std::move(on_input);
+  }
+  out.torus = std::move(flat);
   MappedSurface &surface = out.surface;
   surface.positions = positions_of(mesh);
   surface.faces = surface.input_faces = triangles_of(mesh);
