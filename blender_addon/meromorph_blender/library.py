@@ -192,22 +192,25 @@ def remesh(positions, triangles, target_vertices=0, area_correct=True, close_hol
         lib.meromorph_remesh_free(result)
 
 
-def match(source_positions, source_triangles, target_positions, target_triangles, progress=None):
+def match(source_positions, source_triangles, target_positions, target_triangles, landmarks=(),
+          progress=None):
     """Every source vertex on a point of the target (both closed, genus 0 or both genus 1),
     aligned automatically: per source vertex the target triangle and the weights of its corners;
     per source triangle the target triangle holding its centre's image and, per corner, the
     weights of that triangle's corners (for values given per corner: UVs with seams); the
-    report."""
+    report. landmarks: pairs (source vertex, target vertex) that fix the alignment."""
     lib = load()
     arrays = [np.ascontiguousarray(a, dtype=t).reshape(-1) for a, t in (
         (source_positions, np.float64), (source_triangles, np.int32),
         (target_positions, np.float64), (target_triangles, np.int32))]
+    pairs = np.ascontiguousarray(np.asarray(landmarks, dtype=np.int32).reshape(-1))
     options, callback = options_with(lib, True, True, progress)  # noqa: F841
     result = ctypes.c_void_p()
     status = lib.meromorph_match_d(
         arrays[0].ctypes.data, arrays[0].size // 3, arrays[1].ctypes.data, arrays[1].size // 3,
         arrays[2].ctypes.data, arrays[2].size // 3, arrays[3].ctypes.data, arrays[3].size // 3,
-        None, 0, ctypes.byref(options), ctypes.byref(result))
+        pairs.ctypes.data if pairs.size else None, pairs.size // 2, ctypes.byref(options),
+        ctypes.byref(result))
     if status != 0:
         raise last_error(lib, status)
     try:

@@ -55,6 +55,23 @@ class Carrier:
         return out
 
 
+def landmark_pairs(receiver, active):
+    """(receiver vertex, active vertex) for each vertex group of the same name on both objects
+    that holds one vertex on each."""
+    def members(obj, index):
+        return [v.index for v in obj.data.vertices
+                if any(g.group == index and g.weight > 0 for g in v.groups)]
+    pairs = []
+    for group in receiver.vertex_groups:
+        other = active.vertex_groups.get(group.name)
+        if other is None:
+            continue
+        mine, theirs = members(receiver, group.index), members(active, other.index)
+        if len(mine) == 1 and len(theirs) == 1:
+            pairs.append((mine[0], theirs[0]))
+    return pairs
+
+
 def attribute_values(attribute, key, width, count):
     values = np.empty(count * width, dtype=np.float64)
     attribute.data.foreach_get(key, values)
@@ -80,6 +97,11 @@ class OBJECT_OT_conformal_transfer(bpy.types.Operator):
     attributes: BoolProperty(name="Float Attributes", default=True,
                              description="The active mesh's other float, 2D and 3D vector "
                                          "attributes per vertex or per face corner")
+    landmarks: BoolProperty(name="Landmarks from Vertex Groups", default=True,
+                            description="Vertex groups of the same name on both meshes that hold "
+                                        "one vertex each pair those vertices (a sphere-like mesh "
+                                        "needs three pairs, a torus-like one one or more): for "
+                                        "symmetric shapes, which otherwise may be matched turned")
 
     @classmethod
     def poll(cls, context):
@@ -112,9 +134,10 @@ class OBJECT_OT_conformal_transfer(bpy.types.Operator):
                     window_manager.progress_update(int(100 * (number + fraction) / len(receivers)))
                     return 1
                 positions, triangles, _ = mesh_arrays(receiver.data)
+                pairs = landmark_pairs(receiver, active) if self.landmarks else []
                 try:
                     match = library.match(positions, triangles, active_positions,
-                                          active_triangles, progress=progress)
+                                          active_triangles, landmarks=pairs, progress=progress)
                 except library.MeromorphError as error:
                     lines.append("'%s' cannot be matched with '%s': %s" % (
                         receiver.name, active.name,
@@ -124,15 +147,17 @@ class OBJECT_OT_conformal_transfer(bpy.types.Operator):
                                     Carrier(receiver.data, active.data, match))
                 report = match["report"]
                 alternatives = report["alignment"]["alternatives"]
-                lines.append("'%s': %s from '%s' (genus %d; matched mesh angle error %.2f deg, %d "
-                             "folded faces)%s" % (
+                lines.append("'%s': %s from '%s' (genus %d%s; matched mesh angle error %.2f deg, "
+                             "%d folded faces)%s" % (
                                  receiver.name, ", ".join(copied) or "nothing to copy",
                                  active.name, report["genus"],
+                                 ", %d landmarks" % len(pairs) if pairs else "",
                                  report["matched_mesh"]["angle_error_mean_degrees"],
                                  report["matched_mesh"]["folded_faces"],
                                  "; WARNING: %d other alignments fit almost as well (a symmetric "
-                                 "surface); landmarks fix it in the command-line tool and Python"
-                                 % len(alternatives) if alternatives else ""))
+                                 "surface): give landmarks, vertex groups of the same name on "
+                                 "both meshes holding one vertex each"
+                                 % len(alternatives) if alternatives and not pairs else ""))
                 done += 1
         finally:
             window_manager.progress_end()
