@@ -1,6 +1,7 @@
-# The operator "Transfer Through the Sphere": the active mesh's UV maps, colour attributes and
-# float attributes carried onto every other selected mesh, each receiving vertex and face corner
-# reading the active mesh at its corresponding point, found by libmeromorph through the two
+# The operator "Transfer Through the Sphere": the UV maps, colour attributes and float attributes
+# of the selected mesh carried onto the active one (and, optionally, a shape key that morphs it
+# onto the selected one), each receiving vertex and face corner reading the other mesh at its
+# corresponding point, found by libmeromorph through the two
 # surfaces' conformal spheres (genus 0) or flat tori (genus 1): whatever their placement, size,
 # pose or triangulation. (Blender's Transfer Mesh Data reads the nearest point in space instead.)
 # Values per face corner (UVs with seams) are read per receiving triangle from the one active
@@ -19,27 +20,27 @@ COLOR_TYPES = ("FLOAT_COLOR", "BYTE_COLOR")
 
 
 class Carrier:
-    """One receiving mesh's match onto the active one: reads values of the active mesh (per vertex
-    or per face corner) at the receiver's vertices or face corners."""
+    """The receiving mesh's match onto the donor: reads values of the donor (per vertex or per face
+    corner) at the receiver's vertices or face corners."""
 
-    def __init__(self, receiver, active, match):
-        _, active_vertices, active_loops = mesh_arrays(active)
-        self.active_vertices = active_vertices.reshape(-1, 3)
-        self.active_loops = active_loops.reshape(-1, 3)
+    def __init__(self, receiver, donor, match):
+        _, donor_vertices, donor_loops = mesh_arrays(donor)
+        self.donor_vertices = donor_vertices.reshape(-1, 3)
+        self.donor_loops = donor_loops.reshape(-1, 3)
         _, _, receiver_loops = mesh_arrays(receiver)
         self.receiver_loops = receiver_loops.reshape(-1, 3)
         self.receiver_loop_count = len(receiver.loops)
         self.receiver_vertex_count = len(receiver.vertices)
         self.match = match
 
-    def per_active_corner(self, values, domain):
-        """(t, 3, width): the values at the active mesh's loop triangle corners."""
-        return values[self.active_loops] if domain == "CORNER" else values[self.active_vertices]
+    def per_donor_corner(self, values, domain):
+        """(t, 3, width): the values at the donor mesh's loop triangle corners."""
+        return values[self.donor_loops] if domain == "CORNER" else values[self.donor_vertices]
 
     def read(self, values, domain):
-        """The active mesh's values (per vertex or per loop, (n, width)) at the receiver's vertices
+        """The donor mesh's values (per vertex or per loop, (n, width)) at the receiver's vertices
         (domain POINT) or loops (domain CORNER)."""
-        corners = self.per_active_corner(values, domain)
+        corners = self.per_donor_corner(values, domain)
         if domain == "POINT":
             face = self.match["vertex_face"]
             out = np.einsum("vj,vjw->vw", self.match["vertex_weights"],
@@ -55,18 +56,18 @@ class Carrier:
         return out
 
 
-def landmark_pairs(receiver, active):
-    """(receiver vertex, active vertex) for each vertex group of the same name on both objects
+def landmark_pairs(receiver, donor):
+    """(receiver vertex, donor vertex) for each vertex group of the same name on both objects
     that holds one vertex on each."""
     def members(obj, index):
         return [v.index for v in obj.data.vertices
                 if any(g.group == index and g.weight > 0 for g in v.groups)]
     pairs = []
     for group in receiver.vertex_groups:
-        other = active.vertex_groups.get(group.name)
+        other = donor.vertex_groups.get(group.name)
         if other is None:
             continue
-        mine, theirs = members(receiver, group.index), members(active, other.index)
+        mine, theirs = members(receiver, group.index), members(donor, other.index)
         if len(mine) == 1 and len(theirs) == 1:
             pairs.append((mine[0], theirs[0]))
     return pairs
@@ -83,42 +84,54 @@ def domain_size(mesh, domain):
 
 
 class OBJECT_OT_conformal_transfer(bpy.types.Operator):
-    """Copy the active mesh's UV maps, colors and attributes to the other selected meshes, each
-    point reading its corresponding point through the conformal sphere (closed meshes of genus 0,
-    or of genus 1), whatever their placement, size, pose or triangulation"""
+    """Copy the UV maps, colors and attributes of the selected mesh to the active one, each point
+    reading its corresponding point through the conformal sphere (closed meshes of genus 0, or of
+    genus 1), whatever their placement, size, pose or triangulation"""
     bl_idname = "object.meromorph_conformal_transfer"
     bl_label = "Transfer Through the Sphere"
     bl_options = {"REGISTER", "UNDO"}
 
-    uvs: BoolProperty(name="UV Maps", default=True, description="Every UV map of the active mesh")
+    uvs: BoolProperty(name="UV Maps", default=True,
+                      description="Every UV map of the mesh copied from")
     colors: BoolProperty(name="Color Attributes", default=True,
-                         description="Every color attribute of the active mesh (per vertex or "
-                                     "per face corner)")
+                         description="Every color attribute of the mesh copied from (per vertex "
+                                     "or per face corner)")
     attributes: BoolProperty(name="Float Attributes", default=True,
-                             description="The active mesh's other float, 2D and 3D vector "
-                                         "attributes per vertex or per face corner")
+                             description="The other float, 2D and 3D vector attributes of the "
+                                         "mesh copied from, per vertex or per face corner")
+    shape_key: BoolProperty(name="Shape Key", default=False,
+                            description="Also add a shape key, named after the mesh copied from, "
+                                        "that puts each vertex on its matched point there: a "
+                                        "morph from one surface to the other")
     landmarks: BoolProperty(name="Landmarks from Vertex Groups", default=True,
                             description="Vertex groups of the same name on both meshes that hold "
                                         "one vertex each pair those vertices (a sphere-like mesh "
                                         "needs three pairs, a torus-like one one or more): for "
                                         "symmetric shapes, which otherwise may be matched turned")
 
+    @staticmethod
+    def donor_of(context):
+        """The one other selected mesh, or None."""
+        others = [o for o in context.selected_objects
+                  if o.type == "MESH" and o != context.active_object]
+        return others[0] if len(others) == 1 else None
+
     @classmethod
     def poll(cls, context):
         active = context.active_object
         if active is None or active.type != "MESH":
-            cls.poll_message_set("Make the mesh to copy from active")
+            cls.poll_message_set("Make the mesh that receives active")
             return False
-        if not any(o.type == "MESH" and o != active for o in context.selected_objects):
-            cls.poll_message_set("Select the meshes to copy to, then the one to copy from")
+        if cls.donor_of(context) is None:
+            cls.poll_message_set("Select the mesh to copy from, then the one that receives "
+                                 "(active)")
             return False
         return True
 
     def execute(self, context):
-        active = context.active_object
-        receivers = [o for o in context.selected_objects if o.type == "MESH" and o != active]
-        if active is None or active.type != "MESH" or not receivers:
-            self.report({"ERROR"}, "Select the meshes to copy to, then the mesh to copy from "
+        receiver, donor = context.active_object, self.donor_of(context)
+        if receiver is None or receiver.type != "MESH" or donor is None:
+            self.report({"ERROR"}, "Select the mesh to copy from, then the mesh that receives "
                                    "(active)")
             return {"CANCELLED"}
         if context.mode != "OBJECT":
@@ -126,47 +139,59 @@ class OBJECT_OT_conformal_transfer(bpy.types.Operator):
         started = time.time()
         window_manager = context.window_manager
         window_manager.progress_begin(0, 100)
-        lines, done = [], 0
+
+        def progress(fraction):
+            window_manager.progress_update(int(100 * fraction))
+            return 1
+
         try:
-            active_positions, active_triangles, _ = mesh_arrays(active.data)
-            for number, receiver in enumerate(receivers):
-                def progress(fraction, number=number):
-                    window_manager.progress_update(int(100 * (number + fraction) / len(receivers)))
-                    return 1
-                positions, triangles, _ = mesh_arrays(receiver.data)
-                pairs = landmark_pairs(receiver, active) if self.landmarks else []
-                try:
-                    match = library.match(positions, triangles, active_positions,
-                                          active_triangles, landmarks=pairs, progress=progress)
-                except library.MeromorphError as error:
-                    lines.append("'%s' cannot be matched with '%s': %s" % (
-                        receiver.name, active.name,
-                        remedies.with_remedies(str(error), error.remedies)))
-                    continue
-                copied = self.carry(active.data, receiver.data,
-                                    Carrier(receiver.data, active.data, match))
-                report = match["report"]
-                alternatives = report["alignment"]["alternatives"]
-                lines.append("'%s': %s from '%s' (genus %d%s; matched mesh angle error %.2f deg, "
-                             "%d folded faces)%s" % (
-                                 receiver.name, ", ".join(copied) or "nothing to copy",
-                                 active.name, report["genus"],
-                                 ", %d landmarks" % len(pairs) if pairs else "",
-                                 report["matched_mesh"]["angle_error_mean_degrees"],
-                                 report["matched_mesh"]["folded_faces"],
-                                 "; WARNING: %d other alignments fit almost as well (a symmetric "
-                                 "surface): give landmarks, vertex groups of the same name on "
-                                 "both meshes holding one vertex each"
-                                 % len(alternatives) if alternatives and not pairs else ""))
-                done += 1
+            positions, triangles, _ = mesh_arrays(receiver.data)
+            donor_positions, donor_triangles, _ = mesh_arrays(donor.data)
+            pairs = landmark_pairs(receiver, donor) if self.landmarks else []
+            match = library.match(positions, triangles, donor_positions, donor_triangles,
+                                  landmarks=pairs, progress=progress)
+        except library.MeromorphError as error:
+            self.report({"ERROR"}, "'%s' cannot be matched with '%s': %s (vertex numbers are "
+                        "Blender's)" % (receiver.name, donor.name,
+                                        remedies.with_remedies(str(error), error.remedies)))
+            return {"CANCELLED"}
         finally:
             window_manager.progress_end()
-        message = "; ".join(lines) + " (%.2f s)" % (time.time() - started)
-        if done == 0:
-            self.report({"ERROR"}, message)
-            return {"CANCELLED"}
-        self.report({"WARNING"} if done < len(receivers) else {"INFO"}, message)
+        copied = self.carry(donor.data, receiver.data,
+                            Carrier(receiver.data, donor.data, match))
+        if self.shape_key:
+            self.add_shape_key(receiver, donor, donor_positions.reshape(-1, 3),
+                               donor_triangles.reshape(-1, 3), match)
+            copied.append("shape key '%s'" % donor.name)
+        report = match["report"]
+        alternatives = report["alignment"]["alternatives"]
+        self.report({"INFO"}, "'%s': %s from '%s' (genus %d%s; matched mesh angle error %.2f deg, "
+                    "%d folded faces)%s (%.2f s)" % (
+                        receiver.name, ", ".join(copied) or "nothing to copy", donor.name,
+                        report["genus"], ", %d landmarks" % len(pairs) if pairs else "",
+                        report["matched_mesh"]["angle_error_mean_degrees"],
+                        report["matched_mesh"]["folded_faces"],
+                        "; WARNING: %d other alignments fit almost as well (a symmetric "
+                        "surface): give landmarks, vertex groups of the same name on both meshes "
+                        "holding one vertex each" % len(alternatives)
+                        if alternatives and not pairs else "", time.time() - started))
         return {"FINISHED"}
+
+    @staticmethod
+    def add_shape_key(receiver, donor, donor_positions, donor_triangles, match):
+        """A shape key on `receiver` named after `donor`: each vertex at its matched point on the
+        donor, placed where the donor is (through both objects' transforms), for morphing."""
+        face = np.maximum(match["vertex_face"], 0)
+        corners = donor_positions[donor_triangles[face]]  # (n, 3, 3)
+        points = np.einsum("vj,vjc->vc", match["vertex_weights"], corners)
+        to_receiver = np.array(receiver.matrix_world.inverted() @ donor.matrix_world)
+        points = points @ to_receiver[:3, :3].T + to_receiver[:3, 3]
+        if receiver.data.shape_keys is None:
+            receiver.shape_key_add(name="Basis", from_mix=False)
+        key = receiver.data.shape_keys.key_blocks.get(donor.name) or \
+            receiver.shape_key_add(name=donor.name, from_mix=False)
+        key.data.foreach_set("co", points.astype(np.float32).ravel())
+        receiver.data.update()
 
     def carry(self, source, receiver, carrier):
         """Copies what the options ask from mesh `source` to mesh `receiver`; returns what."""

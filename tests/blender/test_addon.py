@@ -336,7 +336,8 @@ on_sphere = co.reshape(-1, 3) / np.linalg.norm(co.reshape(-1, 3), axis=1)[:, Non
 a, b, c = (on_sphere[corners.reshape(-1, 3)[:, k]] for k in range(3))
 check((np.einsum("ij,ij->i", a, np.cross(b - a, c - a)) > 0).all(), "no triangle turned over")
 
-# Object > Link/Transfer Data > Transfer Through the Sphere: a head with a UV map that has a
+# Object > Link/Transfer Data > Transfer Through the Sphere (the selected mesh's data onto the
+# active one): a head with a UV map that has a
 # seam (cylindrical: u turns once around the z axis) and a colour per vertex is copied onto the
 # same head re-triangulated (every triangle into four, half the new inner edges flipped), turned,
 # shrunk and moved in its mesh data, as two scans of one object come. The true values at every
@@ -410,8 +411,7 @@ for menu in (bpy.types.VIEW3D_MT_make_links,):
     check(any(n.startswith("meromorph_blender") for n in names), "entry in %s" % menu.__name__)
 activate(ours)
 check(not bpy.ops.object.meromorph_conformal_transfer.poll(), "nothing to copy from: greyed")
-head.select_set(True)
-bpy.context.view_layer.objects.active = head
+head.select_set(True)  # the head selected, the scan active: the scan receives
 check(bpy.ops.object.meromorph_conformal_transfer() == {"FINISHED"}, "transferred")
 activate(blenders)
 head.select_set(True)
@@ -483,11 +483,11 @@ donor_uv = np.empty(2 * len(donor.data.loops))
 donor.data.uv_layers["UVMap"].data.foreach_get("uv", donor_uv)
 
 
-def transferred_uv_error():
+def transferred_uv_error(**options):
     activate(receiver)
     donor.select_set(True)
-    bpy.context.view_layer.objects.active = donor
-    check(bpy.ops.object.meromorph_conformal_transfer() == {"FINISHED"}, "torus transferred")
+    check(bpy.ops.object.meromorph_conformal_transfer(**options) == {"FINISHED"},
+          "torus transferred")
     uv = np.empty(2 * len(receiver.data.loops))
     receiver.data.uv_layers["UVMap"].data.foreach_get("uv", uv)
     return np.abs(uv - donor_uv).max()
@@ -497,9 +497,17 @@ unaided = transferred_uv_error()
 for name, vertex in (("tip", 0), ("side", 100)):
     for obj in (donor, receiver):
         obj.vertex_groups.new(name=name).add([vertex], 1.0, "REPLACE")
-with_landmarks = transferred_uv_error()
+with_landmarks = transferred_uv_error(shape_key=True)
 print("torus: UV error %.4f without landmarks, %.2e with two" % (unaided, with_landmarks))
 check(with_landmarks < 1e-4, "two landmarks put the torus's UVs where they belong: %g"
       % with_landmarks)
+# The shape key morphs the receiving torus onto the donor: each vertex on its donor vertex.
+key = receiver.data.shape_keys.key_blocks[donor.name]
+morphed = np.empty(3 * len(receiver.data.vertices))
+key.data.foreach_get("co", morphed)
+donor_co = np.empty(3 * len(donor.data.vertices))
+donor.data.vertices.foreach_get("co", donor_co)
+check(np.abs(morphed - donor_co).max() < 1e-4, "the shape key lies on the donor: %g"
+      % np.abs(morphed - donor_co).max())
 
 print(summary())

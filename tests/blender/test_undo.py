@@ -57,6 +57,29 @@ def main():
         check(bpy.data.objects.get(name + " Remeshed") is not None, "remeshed object added")
         bpy.ops.ed.undo()
         check(bpy.data.objects.get(name + " Remeshed") is None, "undo removed the remeshed object")
+        # Transfer Through the Sphere onto a copy of the torus without UVs (with a shape key):
+        # undo takes the copied UV map and the shape key away again.
+        torus = bpy.data.objects[name]
+        copy = torus.copy()
+        copy.data = torus.data.copy()
+        copy.name = "Receiving Torus"
+        bpy.context.collection.objects.link(copy)
+        while copy.data.uv_layers:
+            copy.data.uv_layers.remove(copy.data.uv_layers[0])
+        bpy.ops.ed.undo_push(message="Add Receiving Torus")
+        bpy.ops.object.select_all(action="DESELECT")
+        torus.select_set(True)
+        copy.select_set(True)
+        bpy.context.view_layer.objects.active = copy
+        check(bpy.ops.object.meromorph_conformal_transfer("EXEC_DEFAULT", True, shape_key=True) ==
+              {"FINISHED"}, "transferred")
+        copy = bpy.data.objects["Receiving Torus"]
+        check(len(copy.data.uv_layers) > 0 and copy.data.shape_keys is not None,
+              "UV map and shape key copied")
+        bpy.ops.ed.undo()
+        copy = bpy.data.objects["Receiving Torus"]
+        check(len(copy.data.uv_layers) == 0 and copy.data.shape_keys is None,
+              "undo removed the copied UV map and the shape key")
     print(summary())
 
 
