@@ -232,7 +232,11 @@ TorusAlignment align_tori(const TorusFunction &source, const TorusFunction &targ
     for (size_t k = 1; k < minima.size(); ++k) {
       const bool same = minima[k].map == best.lattice_map &&
                         target.torus.distance(minima[k].shift, best.shift) < 2.0 / grid_size;
-      if (!same && minima[k].cost <= best.cost + 0.2 * (typical_cost - best.cost))
+      // Within a fifth of the way to a random translation's cost, and within three times the
+      // best's (its mismatch is the two triangulations' own: an alternative that costs many
+      // times that is a worse fit, not a symmetry).
+      if (!same && minima[k].cost <= best.cost + 0.2 * (typical_cost - best.cost) &&
+          minima[k].cost <= 3 * best.cost)
         best.alternatives.push_back({minima[k].map, minima[k].shift, minima[k].cost});
     }
   }

@@ -13,8 +13,9 @@
 //      landmarks c is their mean and the candidate with the smallest residual is taken (ties, as
 //      with one landmark, by the functions); without, M and c that best match the two functions
 //      sampled on a grid of the torus: every translation of the grid tried, the best refined by a
-//      local search. `alternatives`: other maps that fit within a fifth of the way from the best to
-//      what a translation at random costs (a symmetric surface has several).
+//      local search. `alternatives`: other maps that fit within a fifth of the way from the best
+//      to what a translation at random costs and within three times the best's cost (a
+//      symmetric surface has several).
 #pragma once
 
 #include <string>
