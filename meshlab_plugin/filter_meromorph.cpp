@@ -31,8 +31,8 @@ QString FilterMeromorphPlugin::filterName(FilterIDType filter) const {
 QString FilterMeromorphPlugin::filterInfo(FilterIDType filter) const {
   if (filter == FP_TRANSFER_THROUGH_CONFORMAL_SPHERE)
     return "Copies vertex colors, texture coordinates (per vertex and per wedge, with the texture "
-           "files) and vertex quality from one closed mesh to another of the same genus (0 or "
-           "1), each vertex and face corner reading its corresponding point, found through the "
+           "files) and vertex quality from one closed mesh to another of the same genus (0, 1 "
+           "or 2), each vertex and face corner reading its corresponding point, found through the "
            "two surfaces' conformal maps (meromorph): the meshes need not be aligned, of the same "
            "size, pose or triangulation. A symmetric surface may be matched turned (the log "
            "warns).";

@@ -1,11 +1,11 @@
 // "Transfer Attributes through the Conformal Sphere": the plugin's adapter for meromorph_match_d.
 // Every vertex and face corner of the mesh copied to reads the mesh copied from at its
-// corresponding point, found through the two surfaces' conformal spheres (genus 0) or flat tori
-// (genus 1), whatever their placement, size, pose or triangulation (MeshLab's Vertex Attribute
-// Transfer reads the closest point in space instead). Copies what the mesh copied from has:
-// vertex colours, vertex texture coordinates, wedge texture coordinates (each receiving face from
-// the one face that holds its centre's image, so no face straddles a seam; with the texture
-// files' names) and vertex quality. No mathematics here.
+// corresponding point, found through the two surfaces' conformal spheres (genus 0), flat tori
+// (genus 1) or canonical maps (genus 2), whatever their placement, size, pose or triangulation
+// (MeshLab's Vertex Attribute Transfer reads the closest point in space instead). Copies what the
+// mesh copied from has: vertex colours, vertex texture coordinates, wedge texture coordinates (each
+// receiving face from the one face that holds its centre's image, so no face straddles a seam; with
+// the texture files' names) and vertex quality. No mathematics here.
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <algorithm>

@@ -6,7 +6,7 @@
 #      through its layered sphere, with an integer attribute "layer" and a vertex group
 #      "branch_points".
 # Out (Object > Link/Transfer Data > Transfer Through the Sphere): the selected mesh's UV maps,
-#      colour and float attributes on the active mesh (closed, the same genus, 0 or 1), read at
+#      colour and float attributes on the active mesh (closed, the same genus, 0, 1 or 2), read at
 #      corresponding points through the two conformal maps; optionally a shape key (a morph).
 # Out (Conformal Sphere Map): a UV layer with seam-correct per-loop coordinates, a new object "<name> Layered Sphere"
 #      (the same vertices on the sphere, radius by layer, an integer attribute "layer" and a vertex

@@ -194,7 +194,7 @@ def remesh(positions, triangles, target_vertices=0, area_correct=True, close_hol
 
 def match(source_positions, source_triangles, target_positions, target_triangles, landmarks=(),
           progress=None):
-    """Every source vertex on a point of the target (both closed, genus 0 or both genus 1),
+    """Every source vertex on a point of the target (both closed, of genus 0, 1 or 2),
     aligned automatically: per source vertex the target triangle and the weights of its corners;
     per source triangle the target triangle holding its centre's image and, per corner, the
     weights of that triangle's corners (for values given per corner: UVs with seams); the

@@ -1,11 +1,11 @@
 # The operator "Transfer Through the Sphere": the UV maps, colour attributes and float attributes
 # of the selected mesh carried onto the active one (and, optionally, a shape key that morphs it
 # onto the selected one), each receiving vertex and face corner reading the other mesh at its
-# corresponding point, found by libmeromorph through the two
-# surfaces' conformal spheres (genus 0) or flat tori (genus 1): whatever their placement, size,
-# pose or triangulation. (Blender's Transfer Mesh Data reads the nearest point in space instead.)
-# Values per face corner (UVs with seams) are read per receiving triangle from the one active
-# triangle that holds its centre, so a triangle never straddles a seam.
+# corresponding point, found by libmeromorph through the two surfaces' conformal spheres (genus
+# 0), flat tori (genus 1) or canonical maps (genus 2), whatever their placement, size, pose or
+# triangulation. (Blender's Transfer Mesh Data reads the nearest point in space instead.) Values
+# per face corner (UVs with seams) are read per receiving triangle from the one triangle of the
+# other mesh that holds its centre, so a triangle never straddles a seam.
 import time
 
 import bpy
@@ -85,8 +85,8 @@ def domain_size(mesh, domain):
 
 class OBJECT_OT_conformal_transfer(bpy.types.Operator):
     """Copy the UV maps, colors and attributes of the selected mesh to the active one, each point
-    reading its corresponding point through the conformal sphere (closed meshes of genus 0, or of
-    genus 1), whatever their placement, size, pose or triangulation"""
+    reading its corresponding point through the conformal maps (closed meshes of the same genus:
+    0, 1 or 2), whatever their placement, size, pose or triangulation"""
     bl_idname = "object.meromorph_conformal_transfer"
     bl_label = "Transfer Through the Sphere"
     bl_options = {"REGISTER", "UNDO"}

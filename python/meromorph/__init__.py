@@ -310,7 +310,7 @@ class Match:
 
 def match(source, target, *, landmarks=None, progress: Optional[Progress] = None) -> Match:
     """Every vertex of `source` on a point of `target` (each (V, F) or a file path; closed, both
-    genus 0 or both genus 1), through their conformal spheres or flat tori, as `meromorph match`:
+    genus 0, 1 or 2), through their conformal spheres, flat tori or canonical maps, as `meromorph match`:
     aligned by `landmarks` (pairs (source vertex, target vertex); genus 0 needs three or more) or
     automatically."""
     source_V, source_F, _ = _arrays(source)

@@ -116,7 +116,7 @@ Command add_match_command(CLI::App &app) {
   auto options = std::make_shared<MatchCommandOptions>();
   CLI::App *match = app.add_subcommand(
       "match", "Every vertex of SOURCE on a point of TARGET, through their conformal spheres "
-               "or flat tori (closed surfaces of genus 0 or 1): OUT.ply is SOURCE's mesh on the "
+               "or flat tori (closed surfaces of genus 0, 1 or 2): OUT.ply is SOURCE's mesh on the "
                "matched points, with "
                "per-vertex target_face, target_b1 and target_b2.");
   match->add_option("SOURCE", options->source, "mesh file (.ply, .obj, .off, .stl)")->required();

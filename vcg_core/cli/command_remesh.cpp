@@ -226,7 +226,7 @@ Command add_remesh_command(CLI::App &app) {
   remesh->add_flag("--split-nonmanifold", options->split_nonmanifold,
                    "take non-manifold vertices and edges apart for the map");
   remesh->add_option("--like", options->like,
-                     "TEMPLATE mesh (closed, the input's genus, 0 or 1): the remesh gets its "
+                     "TEMPLATE mesh (closed, the input's genus, 0, 1 or 2): the remesh gets its "
                      "triangles, its vertex i at the input's point corresponding to the "
                      "template's vertex i (a collection remeshed like one template: one "
                      "connectivity, corresponding vertices)");

@@ -131,7 +131,7 @@ Command add_transfer_command(CLI::App &app) {
   CLI::App *transfer = app.add_subcommand(
       "transfer", "TARGET's per-vertex values (a PLY file's colours, texture coordinates, quality, "
                   "labels) carried onto SOURCE's vertices at corresponding points, through their "
-                  "conformal spheres or flat tori (closed surfaces of genus 0 or 1): OUT.ply is "
+                  "conformal spheres or flat tori (closed surfaces of genus 0, 1 or 2): OUT.ply is "
                   "SOURCE's mesh with them.");
   transfer->add_option("SOURCE", options->source, "the mesh that receives (.ply, .obj, .off, .stl)")
       ->required();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include <Eigen/Geometry>
@@ -305,6 +306,43 @@ SphereAlignment align_by_landmarks(const std::vector<Eigen::Vector3d> &source_sp
     alignment.landmark_distance_max =
         std::max(alignment.landmark_distance_max, (alignment.apply(a[k]) - b[k]).norm());
   return alignment;
+}
+
+std::vector<SphereAlignment> align_point_sets(const std::vector<Eigen::Vector3d> &a,
+                                              const std::vector<Eigen::Vector3d> &b,
+                                              double tolerance) {
+  std::vector<SphereAlignment> out;
+  if (a.size() != b.size() || a.size() < 3) return out;
+  std::array<size_t, 3> spread{0, 1, 2};
+  double largest = -1;
+  for (size_t i = 0; i < a.size(); ++i)
+    for (size_t j = i + 1; j < a.size(); ++j)
+      for (size_t k = j + 1; k < a.size(); ++k) {
+        const double s = (a[j] - a[i]).cross(a[k] - a[i]).norm();
+        if (s > largest) largest = s, spread = {i, j, k};
+      }
+  for (size_t i = 0; i < b.size(); ++i)
+    for (size_t j = 0; j < b.size(); ++j)
+      for (size_t k = 0; k < b.size(); ++k) {
+        if (i == j || j == k || i == k) continue;
+        if ((b[j] - b[i]).cross(b[k] - b[i]).norm() < 1e-12) continue;
+        SphereAlignment alignment = align_by_landmarks(
+            a, b, {{int(spread[0]), int(i)}, {int(spread[1]), int(j)}, {int(spread[2]), int(k)}});
+        double worst = 0;
+        for (const Eigen::Vector3d &p : a) {
+          const Eigen::Vector3d q = alignment.apply(p);
+          double nearest = std::numeric_limits<double>::infinity();
+          for (const Eigen::Vector3d &r : b)
+            nearest = std::min(nearest, (q - r).norm());
+          worst = std::max(worst, nearest);
+        }
+        alignment.landmark_distance_max = worst;
+        if (worst <= tolerance) out.push_back(alignment);
+      }
+  std::sort(out.begin(), out.end(), [](const SphereAlignment &x, const SphereAlignment &y) {
+    return x.landmark_distance_max < y.landmark_distance_max;
+  });
+  return out;
 }
 
 SphereAlignment align_by_functions(const SphereFunction &source, const SphereFunction &target) {

@@ -57,6 +57,14 @@ SphereAlignment align_by_landmarks(const std::vector<Eigen::Vector3d> &source_sp
                                    const std::vector<Eigen::Vector3d> &target_sphere,
                                    const std::vector<std::pair<int, int>> &landmarks);
 
+// Every Moebius transformation that takes the points `a` onto the points `b` as sets (the same
+// count; the branch values of two maps of the same degree): through the three most spread points
+// of `a` and each ordered triple of `b`, kept where every point of `a` lands within `tolerance`
+// (chordal) of a point of `b`. Best first; `landmark_distance_max` is that largest distance.
+std::vector<SphereAlignment> align_point_sets(const std::vector<Eigen::Vector3d> &a,
+                                              const std::vector<Eigen::Vector3d> &b,
+                                              double tolerance);
+
 class SphereTriangleGrid;
 // A function given at the vertices of a triangulated sphere, and the grid of its triangles.
 struct SphereFunction {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <optional>
 
 #include <Eigen/Geometry>
@@ -14,6 +15,7 @@
 #include "job/surface_map.h"
 #include "maps/parameterization.h"
 #include "match/flat_torus.h"
+#include "match/sheet_following.h"
 #include "mesh/face_vectors.h"
 #include "mesh/mesh_edges.h"
 #include "mesh/validation.h"
@@ -29,6 +31,7 @@ struct MappedSurface {
   std::vector<std::array<int, 3>> faces, input_faces;
   std::vector<int> face_source; // per written face, the input's face it is part of
   double diagonal = 1;
+  std::vector<Eigen::Vector3d> branch_values; // genus 2: the six Weierstrass points' values
 };
 
 std::vector<Eigen::Vector3d> positions_of(const Mesh &mesh) {
@@ -64,16 +67,21 @@ int closed_genus_estimate(const Mesh &mesh) {
   return (2 - (int(aside.work.vert.size()) - int(aside.work.face.size()) / 2)) / 2;
 }
 
-MappedSurface genus0_sphere(Mesh &mesh, const char *which, const Progress &progress) {
+// The surface's map as `param` writes it (genus 0: the sphere; genus 2: the canonical,
+// hyperelliptic map, unique up to a Moebius transformation), refused unless of `genus`.
+MappedSurface sphere_map(Mesh &mesh, const char *which, const Progress &progress, int genus) {
   const Parameterization map = parameterize_surface(mesh, ParameterizeOptions{}, progress);
   const std::string name = which;
   if (map.components.size() > 1)
     throw InputError("the " + name + " has " + std::to_string(map.components.size()) +
                      " parts: a match takes one closed surface; map its parts apart");
-  if (map.genus != 0)
+  if (map.genus != genus)
     throw InputError("the " + name + " has genus " + std::to_string(map.genus) +
-                     ": matching covers genus 0 and 1 so far (both surfaces closed, of the same "
-                     "genus)");
+                     (genus == 0 && map.genus > 2
+                          ? ": matching covers genus 0, 1 and 2 so far (both surfaces closed, of "
+                            "the same genus)"
+                          : ", the other genus " + std::to_string(genus) +
+                                ": a match takes two closed surfaces of the same genus"));
   if (!map.valid)
     throw InputError("no valid map of the " + name +
                      " on its triangulation: " + join_phrases(map.invalid));
@@ -89,6 +97,8 @@ MappedSurface genus0_sphere(Mesh &mesh, const char *which, const Progress &progr
       out.face_source.push_back(int(f));
   out.sphere = map.sphere;
   out.diagonal = diagonal_of(out.positions);
+  for (const BranchPoint &branch : map.branch_points)
+    out.branch_values.push_back(branch.sphere);
   return out;
 }
 
@@ -122,7 +132,7 @@ TorusOfSurface genus1_torus(const Mesh &mesh, const char *which, const Progress 
   const HolomorphicForms forms = compute_holomorphic_forms(work, SolverKind::cholmod, progress);
   if (forms.genus != 1)
     throw InputError("the " + name + " has genus " + std::to_string(forms.genus) +
-                     ": matching covers genus 0 and 1 so far");
+                     ": matching covers genus 0, 1 and 2 so far");
   TorusOfSurface out;
   FlatTorus flat = flat_torus(work, build_mesh_edges(work), forms.normalized.front(),
                               forms.riemann_matrix(0, 0));
@@ -318,10 +328,10 @@ SurfaceMatch match_spheres(Mesh &source, Mesh &target, const MatchOptions &optio
                            const Progress &progress) {
   SurfaceMatch out;
   auto start = Clock::now();
-  const MappedSurface from = genus0_sphere(source, "source", progress.range(0.0, 0.4));
+  const MappedSurface from = sphere_map(source, "source", progress.range(0.0, 0.4), 0);
   out.timings_ms.emplace_back("map source", since(start));
   start = Clock::now();
-  const MappedSurface to = genus0_sphere(target, "target", progress.range(0.4, 0.8));
+  const MappedSurface to = sphere_map(target, "target", progress.range(0.4, 0.8), 0);
   out.timings_ms.emplace_back("map target", since(start));
   progress.report(0.8, "aligning the spheres");
 
@@ -424,6 +434,293 @@ SurfaceMatch match_tori(const Mesh &source, const Mesh &target, const MatchOptio
   return out;
 }
 
+// The vertices next to each vertex of `faces`.
+std::vector<std::vector<int>> neighbours_of(const std::vector<std::array<int, 3>> &faces,
+                                            size_t vertex_count) {
+  std::vector<std::vector<int>> out(vertex_count);
+  for (const auto &t : faces)
+    for (int k = 0; k < 3; ++k) {
+      out[size_t(t[size_t(k)])].push_back(t[size_t((k + 1) % 3)]);
+      out[size_t(t[size_t(k)])].push_back(t[size_t((k + 2) % 3)]);
+    }
+  for (auto &list : out) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  return out;
+}
+
+// Where the image of each vertex lies on `to`, one per sheet: its written triangles that hold the
+// point (duplicates where it falls on an edge dropped), their weights and points.
+struct Preimages {
+  std::vector<std::vector<int>> face;
+  std::vector<std::vector<Eigen::Vector3d>> weights, point;
+};
+
+Preimages preimages(const MappedSurface &to, const SphereTriangleGrid &grid,
+                    const std::vector<Eigen::Vector3d> &images) {
+  Preimages out;
+  out.face.resize(images.size()), out.weights.resize(images.size());
+  out.point.resize(images.size());
+  parallel_for(images.size(), [&](size_t v) {
+    const Eigen::Vector3d &p = images[v];
+    grid.for_each_holding(p, [&](int f) {
+      const auto &t = to.faces[size_t(f)];
+      const Eigen::Vector3d &a = to.sphere[size_t(t[0])], &b = to.sphere[size_t(t[1])],
+                            &c = to.sphere[size_t(t[2])];
+      const Eigen::Vector3d pa = a - p, pb = b - p, pc = c - p;
+      Eigen::Vector3d w(std::abs(p.dot(pb.cross(pc))), std::abs(p.dot(pc.cross(pa))),
+                        std::abs(p.dot(pa.cross(pb))));
+      w = w.sum() > 0 ? Eigen::Vector3d(w / w.sum()) : Eigen::Vector3d(1, 0, 0);
+      const Eigen::Vector3d q = w[0] * to.positions[size_t(t[0])] +
+                                w[1] * to.positions[size_t(t[1])] +
+                                w[2] * to.positions[size_t(t[2])];
+      for (const Eigen::Vector3d &seen : out.point[v])
+        if ((seen - q).norm() <= 1e-9 * to.diagonal) return;
+      out.face[v].push_back(f), out.weights[v].push_back(w), out.point[v].push_back(q);
+    });
+  });
+  return out;
+}
+
+// The vertex whose preimages are farthest apart (its sheets clearly told apart): the seed.
+int clearest_vertex(const Preimages &on) {
+  int best = -1;
+  double apart = -1;
+  for (size_t v = 0; v < on.point.size(); ++v)
+    if (on.point[v].size() >= 2 && (on.point[v][0] - on.point[v][1]).norm() > apart)
+      apart = (on.point[v][0] - on.point[v][1]).norm(), best = int(v);
+  return best;
+}
+
+Located chosen_points(const MappedSurface &to, const Preimages &on,
+                      const std::vector<int> &chosen) {
+  return located(to, chosen.size(), [&](size_t v) {
+    return chosen[v] < 0
+               ? std::make_pair(-1, Eigen::Vector3d(Eigen::Vector3d::Zero()))
+               : std::make_pair(on.face[v][size_t(chosen[v])], on.weights[v][size_t(chosen[v])]);
+  });
+}
+
+// Genus 2: both surfaces' canonical (hyperelliptic) maps, degree 2 with six branch values, which
+// differ by a Moebius transformation when the conformal structures are the same: every Moebius
+// transformation that takes the six values onto the six, each with the two ways of choosing the
+// sheets (the hyperelliptic involution), judged by the landmarks or by the log conformal factors.
+SurfaceMatch match_genus_two(Mesh &source, Mesh &target, const MatchOptions &options,
+                             const Progress &progress) {
+  SurfaceMatch out;
+  auto start = Clock::now();
+  const MappedSurface from = sphere_map(source, "source", progress.range(0.0, 0.4), 2);
+  out.timings_ms.emplace_back("map source", since(start));
+  start = Clock::now();
+  const MappedSurface to = sphere_map(target, "target", progress.range(0.4, 0.8), 2);
+  out.timings_ms.emplace_back("map target", since(start));
+  progress.report(0.8, "matching the branch values");
+  if (from.branch_values.size() != 6 || to.branch_values.size() != 6)
+    throw InputError("a genus-2 match needs the six simple branch points of each surface's map; "
+                     "the source's has " +
+                     std::to_string(from.branch_values.size()) + ", the target's " +
+                     std::to_string(to.branch_values.size()));
+  start = Clock::now();
+  std::vector<SphereAlignment> candidates =
+      align_point_sets(from.branch_values, to.branch_values, 0.05);
+  if (candidates.empty())
+    throw InputError("no Moebius transformation takes the source's six branch values onto the "
+                     "target's: the two surfaces are not of the same conformal structure (a "
+                     "genus-2 match needs them to be)");
+  // All within the tolerance, not only the best fits: on a symmetric surface a permutation of the
+  // values can fit better than the true correspondence, which the two triangulations' maps give
+  // only to their discretization (the maps decide below).
+  const SphereTriangleGrid target_grid(to.sphere, to.faces);
+  const size_t n = source.vert.size();
+  const std::vector<std::vector<int>> neighbours = neighbours_of(from.input_faces, n);
+  const std::vector<double> source_factor =
+      log_conformal_factor(from.positions, from.faces, sphere_face_areas(from));
+  const std::vector<double> target_factor =
+      log_conformal_factor(to.positions, to.faces, sphere_face_areas(to));
+  struct Trial {
+    size_t candidate;
+    std::vector<int> chosen;
+    double cost, landmark_distance; // log conformal factors' mismatch; landmarks / diagonal
+  };
+  // A first look at every candidate on about 500 vertices, whatever their sheet (each at its
+  // preimage that fits best, and the landmarks likewise): the four best go on to the whole surface.
+  {
+    std::vector<size_t> sample;
+    for (size_t v = 0; v < n; v += std::max<size_t>(1, n / 500))
+      sample.push_back(v);
+    for (const auto &[i, j] : options.landmarks)
+      sample.push_back(size_t(i));
+    std::vector<std::pair<std::pair<double, double>, size_t>> scored; // ((landmarks, factors), c)
+    for (size_t c = 0; c < candidates.size(); ++c) {
+      std::vector<Eigen::Vector3d> images;
+      for (size_t v : sample)
+        images.push_back(candidates[c].apply(from.sphere[v]));
+      const Preimages on = preimages(to, target_grid, images);
+      double factors = 0, landmarks = 0;
+      for (size_t k = 0; k < sample.size(); ++k) {
+        double fit = std::numeric_limits<double>::infinity();
+        for (size_t q = 0; q < on.face[k].size(); ++q) {
+          const auto &t = to.faces[size_t(on.face[k][q])];
+          const Eigen::Vector3d &w = on.weights[k][q];
+          const double there = w[0] * target_factor[size_t(t[0])] +
+                               w[1] * target_factor[size_t(t[1])] +
+                               w[2] * target_factor[size_t(t[2])];
+          fit = std::min(fit, std::pow(source_factor[sample[k]] - there, 2));
+        }
+        factors += std::isfinite(fit) ? fit : 1.0;
+      }
+      for (size_t l = 0; l < options.landmarks.size(); ++l) {
+        const size_t k = sample.size() - options.landmarks.size() + l;
+        double nearest = 1.0;
+        for (const Eigen::Vector3d &q : on.point[k])
+          nearest =
+              std::min(nearest, (q - to.positions[size_t(options.landmarks[l].second)]).norm() /
+                                    to.diagonal);
+        landmarks += nearest;
+      }
+      scored.push_back({{landmarks, factors}, c});
+    }
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const auto &entry : scored)
+      nearest = std::min(nearest, entry.first.first);
+    std::sort(scored.begin(), scored.end(), [&](const auto &a, const auto &b) {
+      const bool a_meets = a.first.first <= nearest + 0.01,
+                 b_meets = b.first.first <= nearest + 0.01;
+      return a_meets != b_meets ? a_meets : a.first.second < b.first.second;
+    });
+    std::vector<SphereAlignment> kept;
+    for (size_t k = 0; k < scored.size() && k < 4; ++k)
+      kept.push_back(candidates[scored[k].second]);
+    candidates = std::move(kept);
+  }
+  std::vector<Trial> trials;
+  std::vector<Preimages> found;
+  for (size_t c = 0; c < candidates.size(); ++c) {
+    std::vector<Eigen::Vector3d> images(n);
+    parallel_for(n, [&](size_t v) { images[v] = candidates[c].apply(from.sphere[v]); });
+    found.push_back(preimages(to, target_grid, images));
+    const Preimages &on = found.back();
+    const int seed = clearest_vertex(on);
+    for (int choice = 0; choice < 2 && seed >= 0; ++choice) {
+      Trial trial{c, follow_sheets(on.point, neighbours, seed, choice), 0, 0};
+      double cost = 0;
+      long long counted = 0;
+      for (size_t v = 0; v < n; ++v) {
+        const int k = trial.chosen[v];
+        if (k < 0) continue;
+        const auto &t = to.faces[size_t(on.face[v][size_t(k)])];
+        const Eigen::Vector3d &w = on.weights[v][size_t(k)];
+        const double there = w[0] * target_factor[size_t(t[0])] +
+                             w[1] * target_factor[size_t(t[1])] +
+                             w[2] * target_factor[size_t(t[2])];
+        cost += (source_factor[v] - there) * (source_factor[v] - there);
+        ++counted;
+      }
+      for (const auto &[i, j] : options.landmarks) {
+        const int k = trial.chosen[size_t(i)];
+        trial.landmark_distance +=
+            (k < 0 ? 1.0
+                   : (on.point[size_t(i)][size_t(k)] - to.positions[size_t(j)]).norm() /
+                         to.diagonal) /
+            double(options.landmarks.size());
+      }
+      trial.cost = counted ? cost / double(counted) : 1e300;
+      trials.push_back(std::move(trial));
+    }
+  }
+  if (trials.empty())
+    throw InputError("the source's vertices find no points of the target through the two maps");
+  // With landmarks, those that meet them within 1% of the diagonal of the best, then the factors.
+  double nearest_landmarks = std::numeric_limits<double>::infinity();
+  for (const Trial &trial : trials)
+    nearest_landmarks = std::min(nearest_landmarks, trial.landmark_distance);
+  trials.erase(std::remove_if(trials.begin(), trials.end(),
+                              [&](const Trial &trial) {
+                                return trial.landmark_distance > nearest_landmarks + 0.01;
+                              }),
+               trials.end());
+  std::sort(trials.begin(), trials.end(),
+            [](const Trial &a, const Trial &b) { return a.cost < b.cost; });
+  const Trial &best = trials.front();
+  out.alignment = candidates[best.candidate];
+  out.alignment.cost = best.cost;
+  out.alignment.method =
+      options.landmarks.empty()
+          ? "genus 2: the canonical maps' six branch values matched by a Moebius transformation, "
+            "the sheets followed from one vertex, chosen by the log conformal factors"
+          : "genus 2: the canonical maps' six branch values matched by a Moebius transformation, "
+            "the sheets followed from one vertex, chosen by the landmarks, then the log "
+            "conformal factors";
+  for (size_t k = 1; k < trials.size(); ++k)
+    if (trials[k].cost <= 3 * best.cost + 1e-12)
+      out.alignment.alternatives.push_back({0, trials[k].cost});
+  out.timings_ms.emplace_back("align", since(start));
+  progress.report(0.9, "matching the vertices");
+
+  start = Clock::now();
+  const Preimages &on = found[best.candidate];
+  const Located forward = chosen_points(to, on, best.chosen);
+  out.forward = forward.points;
+  match_faces(
+      from, to,
+      [&](size_t f) {
+        // The target triangle among the centre's preimages nearest the corners' matched points.
+        const auto &t = from.input_faces[f];
+        const Eigen::Vector3d centre =
+            (from.sphere[size_t(t[0])] + from.sphere[size_t(t[1])] + from.sphere[size_t(t[2])])
+                .normalized();
+        const Preimages centre_on = preimages(to, target_grid, {out.alignment.apply(centre)});
+        Eigen::Vector3d corners = Eigen::Vector3d::Zero();
+        int known = 0;
+        for (int k = 0; k < 3; ++k)
+          if (out.forward.target_face[size_t(t[size_t(k)])] >= 0)
+            corners += out.forward.position[size_t(t[size_t(k)])], ++known;
+        std::pair<int, Eigen::Vector3d> hold{-1, Eigen::Vector3d::Zero()};
+        double nearest = std::numeric_limits<double>::infinity();
+        for (size_t k = 0; k < centre_on.point[0].size() && known > 0; ++k) {
+          const double d = (centre_on.point[0][k] - corners / known).norm();
+          if (d < nearest) nearest = d, hold = {centre_on.face[0][k], centre_on.weights[0][k]};
+        }
+        return hold;
+      },
+      out);
+  measure_matched_mesh(from, to, options.landmarks, out);
+  if (options.both) {
+    // Back: the inverse transformation, the sheets followed from the target vertex nearest the
+    // forward seed's point, its choice the preimage nearest that seed.
+    const SphereTriangleGrid source_grid(from.sphere, from.faces);
+    std::vector<Eigen::Vector3d> images(to.sphere.size());
+    parallel_for(images.size(),
+                 [&](size_t v) { images[v] = out.alignment.apply_inverse(to.sphere[v]); });
+    const Preimages back_on = preimages(from, source_grid, images);
+    const int seed = clearest_vertex(on);
+    const int face = seed >= 0 ? forward.written_face[size_t(seed)] : -1;
+    int target_seed = -1, choice = -1;
+    if (face >= 0) {
+      const Eigen::Vector3d &w = forward.written_weights[size_t(seed)];
+      int corner = 0;
+      w.maxCoeff(&corner);
+      target_seed = to.faces[size_t(face)][size_t(corner)];
+      double nearest = std::numeric_limits<double>::infinity();
+      for (size_t k = 0; k < back_on.point[size_t(target_seed)].size(); ++k) {
+        const double d =
+            (back_on.point[size_t(target_seed)][k] - from.positions[size_t(seed)]).norm();
+        if (d < nearest) nearest = d, choice = int(k);
+      }
+    }
+    const std::vector<int> back_chosen =
+        choice < 0 ? std::vector<int>(to.sphere.size(), -1)
+                   : follow_sheets(back_on.point, neighbours_of(to.faces, to.sphere.size()),
+                                   target_seed, choice);
+    measure_round_trip(from, to, forward, chosen_points(from, back_on, back_chosen),
+                       target.vert.size(), out);
+  }
+  out.timings_ms.emplace_back("match", since(start));
+  out.genus = 2;
+  return out;
+}
+
 } // namespace
 
 SurfaceMatch match_surfaces(Mesh &source, Mesh &target, const MatchOptions &options,
@@ -432,7 +729,9 @@ SurfaceMatch match_surfaces(Mesh &source, Mesh &target, const MatchOptions &opti
   const int source_genus = closed_genus_estimate(source),
             target_genus = closed_genus_estimate(target);
   if (source_genus == 1 && target_genus == 1) return match_tori(source, target, options, progress);
-  if ((source_genus == 1) != (target_genus == 1))
+  if (source_genus == 2 && target_genus == 2)
+    return match_genus_two(source, target, options, progress);
+  if ((source_genus == 1) != (target_genus == 1) || (source_genus == 2) != (target_genus == 2))
     throw InputError("the source looks like genus " + std::to_string(source_genus) +
                      " and the target genus " + std::to_string(target_genus) +
                      " (from their vertex and face counts): a match takes two closed surfaces of "

@@ -6,7 +6,7 @@
 // their lattices and its translation (match/torus_alignment.h), and each source vertex goes to
 // the target's point at its image.
 //
-// In:  SOURCE and TARGET meshes (closed, one part, genus 0 or 1; mapped in place, put back
+// In:  SOURCE and TARGET meshes (closed, one part, genus 0, 1 or 2; mapped in place, put back
 // exactly),
 //      landmark pairs (source vertex, target vertex; may be empty), whether to match back too.
 // Out: `SurfaceMatch`: per source vertex the target's triangle (in the target's numbering) and
