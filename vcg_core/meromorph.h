@@ -400,12 +400,13 @@ MEROMORPH_API const char *meromorph_forms_report_json(const meromorph_forms_resu
 
 /* A match (a later addition to ABI version 5), as `meromorph match`: every vertex of SOURCE on a
    point of TARGET, two closed surfaces of the same genus (0, 1 or 2), through their conformal
-   spheres or flat tori. Inputs: both meshes as in meromorph_parameterize_d; landmark_pairs: 2 per
-   pair (SOURCE vertex, TARGET vertex), landmark_count pairs (NULL with 0: aligned automatically;
-   genus 0 needs three or more); options: only options.progress and progress_user are read (may be
-   NULL). Outputs: *result, owned by the caller (meromorph_match_free); NULL on failure. Returns: as
-   meromorph_parameterize_d (MEROMORPH_ERROR_INPUT when the genera differ or are above 1, a surface
-   has no valid map, or a landmark names a vertex that is not there, naming it). */
+   spheres, flat tori or canonical maps. Inputs: both meshes as in meromorph_parameterize_d;
+   landmark_pairs: 2 per pair (SOURCE vertex, TARGET vertex), landmark_count pairs (NULL with 0:
+   aligned automatically; genus 0 needs three or more); options: only options.progress and
+   progress_user are read (may be NULL). Outputs: *result, owned by the caller
+   (meromorph_match_free); NULL on failure. Returns: as meromorph_parameterize_d
+   (MEROMORPH_ERROR_INPUT when the genera differ or are above 2, a surface has no valid map, or a
+   landmark names a vertex that is not there, naming it). */
 typedef struct meromorph_match_result meromorph_match_result;
 MEROMORPH_API meromorph_status meromorph_match_d(
     const double *source_positions, size_t source_vertex_count, const int32_t *source_triangles,
