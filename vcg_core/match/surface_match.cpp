@@ -324,15 +324,30 @@ double since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
+// `map(mesh, "source" or "target", progress)` of each surface in turn, timed into `out`.
+template <class SomeMesh, class Map>
+auto both_mapped(SomeMesh &source, SomeMesh &target, const Map &map, const Progress &progress,
+                 SurfaceMatch &out) {
+  auto start = Clock::now();
+  auto from = map(source, "source", progress.range(0.0, 0.4));
+  out.timings_ms.emplace_back("map source", since(start));
+  start = Clock::now();
+  auto to = map(target, "target", progress.range(0.4, 0.8));
+  out.timings_ms.emplace_back("map target", since(start));
+  return std::make_pair(std::move(from), std::move(to));
+}
+
 SurfaceMatch match_spheres(Mesh &source, Mesh &target, const MatchOptions &options,
                            const Progress &progress) {
   SurfaceMatch out;
+  const auto maps = both_mapped(
+      source, target,
+      [](Mesh &mesh, const char *which, const Progress &part) {
+        return sphere_map(mesh, which, part, 0);
+      },
+      progress, out);
+  const MappedSurface &from = maps.first, &to = maps.second;
   auto start = Clock::now();
-  const MappedSurface from = sphere_map(source, "source", progress.range(0.0, 0.4), 0);
-  out.timings_ms.emplace_back("map source", since(start));
-  start = Clock::now();
-  const MappedSurface to = sphere_map(target, "target", progress.range(0.4, 0.8), 0);
-  out.timings_ms.emplace_back("map target", since(start));
   progress.report(0.8, "aligning the spheres");
 
   start = Clock::now();
@@ -388,12 +403,9 @@ SurfaceMatch match_spheres(Mesh &source, Mesh &target, const MatchOptions &optio
 SurfaceMatch match_tori(const Mesh &source, const Mesh &target, const MatchOptions &options,
                         const Progress &progress) {
   SurfaceMatch out;
+  const auto tori = both_mapped(source, target, genus1_torus, progress, out);
+  const TorusOfSurface &from = tori.first, &to = tori.second;
   auto start = Clock::now();
-  const TorusOfSurface from = genus1_torus(source, "source", progress.range(0.0, 0.4));
-  out.timings_ms.emplace_back("map source", since(start));
-  start = Clock::now();
-  const TorusOfSurface to = genus1_torus(target, "target", progress.range(0.4, 0.8));
-  out.timings_ms.emplace_back("map target", since(start));
   progress.report(0.8, "aligning the tori");
 
   start = Clock::now();
@@ -509,12 +521,14 @@ Located chosen_points(const MappedSurface &to, const Preimages &on,
 SurfaceMatch match_genus_two(Mesh &source, Mesh &target, const MatchOptions &options,
                              const Progress &progress) {
   SurfaceMatch out;
+  const auto maps = both_mapped(
+      source, target,
+      [](Mesh &mesh, const char *which, const Progress &part) {
+        return sphere_map(mesh, which, part, 2);
+      },
+      progress, out);
+  const MappedSurface &from = maps.first, &to = maps.second;
   auto start = Clock::now();
-  const MappedSurface from = sphere_map(source, "source", progress.range(0.0, 0.4), 2);
-  out.timings_ms.emplace_back("map source", since(start));
-  start = Clock::now();
-  const MappedSurface to = sphere_map(target, "target", progress.range(0.4, 0.8), 2);
-  out.timings_ms.emplace_back("map target", since(start));
   progress.report(0.8, "matching the branch values");
   if (from.branch_values.size() != 6 || to.branch_values.size() != 6)
     throw InputError("a genus-2 match needs the six simple branch points of each surface's map; "
