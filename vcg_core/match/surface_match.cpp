@@ -337,15 +337,21 @@ auto both_mapped(SomeMesh &source, SomeMesh &target, const Map &map, const Progr
   return std::make_pair(std::move(from), std::move(to));
 }
 
+std::pair<MappedSurface, MappedSurface> both_sphere_maps(Mesh &source, Mesh &target, int genus,
+                                                         const Progress &progress,
+                                                         SurfaceMatch &out) {
+  return both_mapped(
+      source, target,
+      [genus](Mesh &mesh, const char *which, const Progress &part) {
+        return sphere_map(mesh, which, part, genus);
+      },
+      progress, out);
+}
+
 SurfaceMatch match_spheres(Mesh &source, Mesh &target, const MatchOptions &options,
                            const Progress &progress) {
   SurfaceMatch out;
-  const auto maps = both_mapped(
-      source, target,
-      [](Mesh &mesh, const char *which, const Progress &part) {
-        return sphere_map(mesh, which, part, 0);
-      },
-      progress, out);
+  const auto maps = both_sphere_maps(source, target, 0, progress, out);
   const MappedSurface &from = maps.first, &to = maps.second;
   auto start = Clock::now();
   progress.report(0.8, "aligning the spheres");
@@ -521,12 +527,7 @@ Located chosen_points(const MappedSurface &to, const Preimages &on,
 SurfaceMatch match_genus_two(Mesh &source, Mesh &target, const MatchOptions &options,
                              const Progress &progress) {
   SurfaceMatch out;
-  const auto maps = both_mapped(
-      source, target,
-      [](Mesh &mesh, const char *which, const Progress &part) {
-        return sphere_map(mesh, which, part, 2);
-      },
-      progress, out);
+  const auto maps = both_sphere_maps(source, target, 2, progress, out);
   const MappedSurface &from = maps.first, &to = maps.second;
   auto start = Clock::now();
   progress.report(0.8, "matching the branch values");
