@@ -102,6 +102,14 @@ MappedSurface sphere_map(Mesh &mesh, const char *which, const Progress &progress
   return out;
 }
 
+// The point of the sphere at the centre of the image of the surface's input face f.
+Eigen::Vector3d sphere_centre(const MappedSurface &surface, size_t f) {
+  const auto &t = surface.input_faces[f];
+  return (surface.sphere[size_t(t[0])] + surface.sphere[size_t(t[1])] +
+          surface.sphere[size_t(t[2])])
+      .normalized();
+}
+
 std::vector<double> sphere_face_areas(const MappedSurface &surface) {
   std::vector<double> out;
   for (const auto &t : surface.faces)
@@ -385,13 +393,7 @@ SurfaceMatch match_spheres(Mesh &source, Mesh &target, const MatchOptions &optio
   out.forward = forward.points;
   match_faces(
       from, to,
-      [&](size_t f) {
-        const auto &t = from.input_faces[f];
-        const Eigen::Vector3d centre =
-            (from.sphere[size_t(t[0])] + from.sphere[size_t(t[1])] + from.sphere[size_t(t[2])])
-                .normalized();
-        return held(target_grid, out.alignment.apply(centre));
-      },
+      [&](size_t f) { return held(target_grid, out.alignment.apply(sphere_centre(from, f))); },
       out);
   measure_matched_mesh(from, to, options.landmarks, out);
   if (options.both) {
@@ -682,10 +684,8 @@ SurfaceMatch match_genus_two(Mesh &source, Mesh &target, const MatchOptions &opt
       [&](size_t f) {
         // The target triangle among the centre's preimages nearest the corners' matched points.
         const auto &t = from.input_faces[f];
-        const Eigen::Vector3d centre =
-            (from.sphere[size_t(t[0])] + from.sphere[size_t(t[1])] + from.sphere[size_t(t[2])])
-                .normalized();
-        const Preimages centre_on = preimages(to, target_grid, {out.alignment.apply(centre)});
+        const Preimages centre_on =
+            preimages(to, target_grid, {out.alignment.apply(sphere_centre(from, f))});
         Eigen::Vector3d corners = Eigen::Vector3d::Zero();
         int known = 0;
         for (int k = 0; k < 3; ++k)
