@@ -9,6 +9,7 @@
 #include "live_mesh.h"
 #include "meromorph.h"
 #include "remedy_words.h"
+#include "transfer_filter.h"
 
 FilterMeromorphPlugin::FilterMeromorphPlugin() {
   typeList << FP_CONFORMAL_SPHERICAL_PARAMETERIZATION << FP_REMESH_THROUGH_CONFORMAL_SPHERE
@@ -362,7 +363,16 @@ bool FilterMeromorphPlugin::applyFilter(QAction *action, MeshDocument &document,
                                         vcg::CallBackPos *callback) {
   if (ID(action) == FP_REMESH_THROUGH_CONFORMAL_SPHERE)
     return remesh(document, parameters, callback);
-  if (ID(action) == FP_TRANSFER_THROUGH_CONFORMAL_SPHERE) return transfer(parameters, callback);
+  if (ID(action) == FP_TRANSFER_THROUGH_CONFORMAL_SPHERE) {
+    const QString name = filterName(FP_TRANSFER_THROUGH_CONFORMAL_SPHERE);
+    const TransferOutcome outcome = transfer_through_sphere(parameters, callback);
+    if (!outcome.ok) return fail(name, outcome.error);
+    Log("%s: %s", name.toStdString().c_str(), outcome.summary.toStdString().c_str());
+    if (!outcome.warning.isEmpty())
+      Log(GLLogStream::WARNING, "%s: %s", name.toStdString().c_str(),
+          outcome.warning.toStdString().c_str());
+    return true;
+  }
   MeshModel *model = document.mm();
   if (!model)
     return fail(filterName(FP_CONFORMAL_SPHERICAL_PARAMETERIZATION), "there is no current mesh");

@@ -5,7 +5,7 @@
 // In:  the current mesh of the document (closed, connected, oriented manifold) and the filter's
 //      parameters.
 // Out (transfer): the mesh copied to gets the colours, texture coordinates and quality of the
-//      mesh copied from, read at corresponding points (transfer_filter.cpp).
+//      mesh copied from, read at corresponding points (transfer_filter.h).
 // Out (remesh): a new current layer with the remeshed surface, each vertex's sheet as its
 //      quality and the branch vertices selected; the quality figures in MeshLab's log.
 // Out (parameterization): per-vertex texture coordinates (and per-wedge ones when asked),
@@ -51,7 +51,6 @@ private:
   bool fail(const QString &filter, const QString &message);
   bool remesh(MeshDocument &document, const RichParameterList &parameters,
               vcg::CallBackPos *callback);
-  bool transfer(const RichParameterList &parameters, vcg::CallBackPos *callback); // its own file
 };
 
 #endif

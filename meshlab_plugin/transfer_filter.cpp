@@ -6,23 +6,32 @@
 // mesh copied from has: vertex colours, vertex texture coordinates, wedge texture coordinates (each
 // receiving face from the one face that holds its centre's image, so no face straddles a seam; with
 // the texture files' names) and vertex quality. No mathematics here.
+#include "transfer_filter.h"
+
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <algorithm>
 #include <cmath>
+#include <common/meshmodel.h>
 #include <vector>
 
-#include "filter_meromorph.h"
 #include "live_mesh.h"
 #include "meromorph.h"
 #include "remedy_words.h"
 
-bool FilterMeromorphPlugin::transfer(const RichParameterList &parameters,
-                                     vcg::CallBackPos *callback) {
-  const QString name = filterName(FP_TRANSFER_THROUGH_CONFORMAL_SPHERE);
+TransferOutcome transfer_through_sphere(const RichParameterList &parameters,
+                                        vcg::CallBackPos *callback) {
+  TransferOutcome outcome;
   MeshModel *from = parameters.getMesh("sourceMesh"), *to = parameters.getMesh("targetMesh");
-  if (!from || !to) return fail(name, "choose the mesh to copy from and the mesh to copy to");
-  if (from == to) return fail(name, "the mesh to copy from and the mesh to copy to are one layer");
+  if (!from || !to) {
+    outcome.error = "choose the mesh to copy from and the mesh to copy to";
+    return outcome;
+  }
+  if (from == to) {
+    outcome.error = "the mesh to copy from and the mesh to copy to are one layer";
+    return outcome;
+  }
   const LiveMesh source = live_mesh(from->cm), receiver = live_mesh(to->cm);
   const std::vector<double> source_xyz(source.positions.begin(), source.positions.end());
   const std::vector<double> receiver_xyz(receiver.positions.begin(), receiver.positions.end());
@@ -39,11 +48,12 @@ bool FilterMeromorphPlugin::transfer(const RichParameterList &parameters,
   if (status != MEROMORPH_OK) {
     std::vector<int32_t> codes(size_t(meromorph_last_error_remedies(nullptr, 0)));
     meromorph_last_error_remedies(codes.data(), int(codes.size()));
-    return fail(name, with_meshlab_remedies(
-                          QString("'%1' onto '%2': %3 (vertex numbers count each mesh's live "
-                                  "vertices from 0; the source is '%2', the target '%1')")
-                              .arg(to->label(), from->label(), meromorph_last_error()),
-                          std::vector<int>(codes.begin(), codes.end())));
+    outcome.error =
+        with_meshlab_remedies(QString("'%1' onto '%2': %3 (vertex numbers count each mesh's live "
+                                      "vertices from 0; the source is '%2', the target '%1')")
+                                  .arg(to->label(), from->label(), meromorph_last_error()),
+                              std::vector<int>(codes.begin(), codes.end()));
+    return outcome;
   }
   const size_t n = receiver.vertex_count(), t = receiver.faces.size();
   std::vector<int32_t> vertex_face(n), triangle_face(t);
@@ -118,18 +128,21 @@ bool FilterMeromorphPlugin::transfer(const RichParameterList &parameters,
     copied << "vertex quality";
   }
   const QJsonObject matched = report["matched_mesh"].toObject();
-  Log("%s: '%s' -> '%s': %s (genus %d, %s; the matched mesh's angle error %.2f deg, %d folded "
-      "faces)",
-      name.toStdString().c_str(), from->label().toStdString().c_str(),
-      to->label().toStdString().c_str(),
-      copied.isEmpty() ? "nothing to copy" : copied.join(", ").toStdString().c_str(),
-      report["genus"].toInt(), report["method"].toString().toStdString().c_str(),
-      matched["angle_error_mean_degrees"].toDouble(), matched["folded_faces"].toInt());
+  outcome.summary =
+      QString("'%1' -> '%2': %3 (genus %4, %5; the matched mesh's angle error %6 deg, %7 folded "
+              "faces)")
+          .arg(from->label(), to->label(),
+               copied.isEmpty() ? QString("nothing to copy") : copied.join(", "))
+          .arg(report["genus"].toInt())
+          .arg(report["method"].toString())
+          .arg(matched["angle_error_mean_degrees"].toDouble(), 0, 'f', 2)
+          .arg(matched["folded_faces"].toInt());
   const int alternatives = report["alignment"].toObject()["alternatives"].toArray().size();
   if (alternatives > 0)
-    Log(GLLogStream::WARNING,
-        "%s: %d other alignments fit almost as well (a symmetric surface): the copy may be "
-        "turned; landmarks fix it in the command-line tool (meromorph match --landmarks)",
-        name.toStdString().c_str(), alternatives);
-  return true;
+    outcome.warning = QString("%1 other alignments fit almost as well (a symmetric surface): the "
+                              "copy may be turned; landmarks fix it in the command-line tool "
+                              "(meromorph match --landmarks)")
+                          .arg(alternatives);
+  outcome.ok = true;
+  return outcome;
 }
