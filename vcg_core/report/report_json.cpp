@@ -317,6 +317,13 @@ nlohmann::json match_alignment_json(const SurfaceMatch &match) {
             {"alternatives", alternatives},
             {"landmark_flat_distance_max", match.torus.landmark_distance_max}};
   }
+  if (match.genus == 2) { // the Moebius transformation of the branch values, and the sheets
+    for (const auto &alternative : match.alignment.alternatives)
+      alternatives.push_back({{"cost", alternative.cost}});
+    return {{"cost", match.alignment.cost},
+            {"alternatives", alternatives},
+            {"branch_value_distance_max", match.alignment.landmark_distance_max}};
+  }
   for (const auto &alternative : match.alignment.alternatives)
     alternatives.push_back({{"angle_from_best_degrees", alternative.angle_from_best_degrees},
                             {"cost", alternative.cost}});

@@ -41,9 +41,10 @@ nlohmann::json holomorphic_forms_json(const HolomorphicForms &forms, SolverKind 
 
 // The report of `meromorph match` without inputs, read time and version: genus, method, the
 // alignment (genus 0: its cost and the other rotations that fit; genus 1: the lattice map, shift,
-// dilatation and alternatives), landmark residuals, the matched mesh's angle error and folds, the
-// moduli (genus 1), the round trip (when matched both ways) and timings. `match_method`: the words
-// of the method.
+// dilatation and alternatives; genus 2: its cost, how far the branch values land from the
+// target's, the alternatives' costs), landmark residuals, the matched mesh's angle error and folds,
+// the moduli (genus 1), the round trip (when matched both ways) and timings. `match_method`: the
+// words of the method.
 nlohmann::json match_json(const SurfaceMatch &match, size_t landmark_count);
 const std::string &match_method(const SurfaceMatch &match);
 
