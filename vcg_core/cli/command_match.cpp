@@ -125,7 +125,7 @@ Command add_match_command(CLI::App &app) {
   match->add_option(
       "--landmarks", options->landmarks,
       "text file of pairs \"i j\": SOURCE vertex i corresponds to TARGET vertex j "
-      "(genus 0: three or more; genus 1: one or more; default: aligned automatically)");
+      "(genus 0: three or more; genus 1 and 2: one or more; default: aligned automatically)");
   match->add_option("--report", options->report, "write the JSON report here");
   match->add_option("--both", options->both,
                     "also match TARGET onto SOURCE, write it here (.ply) and report the round "
