@@ -138,9 +138,10 @@ Command add_transfer_command(CLI::App &app) {
   transfer->add_option("TARGET", options->target, "the mesh whose values are read (.ply)")
       ->required();
   transfer->add_option("-o,--output", options->output, "SOURCE with the values (.ply)")->required();
-  transfer->add_option("--landmarks", options->landmarks,
-                       "text file of pairs \"i j\": SOURCE vertex i corresponds to TARGET vertex "
-                       "j (genus 0: three or more; genus 1 and 2: one or more; default: automatic)");
+  transfer->add_option(
+      "--landmarks", options->landmarks,
+      "text file of pairs \"i j\": SOURCE vertex i corresponds to TARGET vertex "
+      "j (genus 0: three or more; genus 1 and 2: one or more; default: automatic)");
   transfer->add_option("--report", options->report, "write the JSON report here");
   transfer->add_flag("--quiet", options->quiet, "no progress bar and no summary line");
   return [options] { return run_transfer(*options); };
