@@ -561,7 +561,7 @@ SurfaceMatch match_genus_two(Mesh &source, Mesh &target, const MatchOptions &opt
     double cost, landmark_distance; // log conformal factors' mismatch; landmarks / diagonal
   };
   // A first look at every candidate on about 500 vertices, whatever their sheet (each at its
-  // preimage that fits best, and the landmarks likewise): the four best go on to the whole surface.
+  // preimage that fits best, and the landmarks likewise): the best go on to the whole surface.
   {
     std::vector<size_t> sample;
     for (size_t v = 0; v < n; v += std::max<size_t>(1, n / 500))
@@ -607,8 +607,12 @@ SurfaceMatch match_genus_two(Mesh &source, Mesh &target, const MatchOptions &opt
       return a_meets != b_meets ? a_meets : a.first.second < b.first.second;
     });
     std::vector<SphereAlignment> kept;
+    // Those within three times the best first look (the surface's symmetries fit as well; a
+    // wrong correspondence of the values costs many times more), four at the most.
     for (size_t k = 0; k < scored.size() && k < 4; ++k)
-      kept.push_back(candidates[scored[k].second]);
+      if (k == 0 || (scored[k].first.first <= nearest + 0.01 &&
+                     scored[k].first.second <= 3 * scored[0].first.second + 1e-12))
+        kept.push_back(candidates[scored[k].second]);
     candidates = std::move(kept);
   }
   std::vector<Trial> trials;
