@@ -123,8 +123,7 @@ std::vector<double> sphere_face_areas(const MappedSurface &surface) {
 struct TorusOfSurface {
   MappedSurface surface;
   FlatTorus torus;
-  std::vector<int> face_corners; // 3 per face
-  std::vector<double> factor;    // log conformal factor per vertex
+  std::vector<double> factor; // log conformal factor per vertex
 };
 
 // The flat torus is computed on the mesh with its defects set aside (job/set_aside.h: seam
@@ -160,11 +159,8 @@ TorusOfSurface genus1_torus(const Mesh &mesh, const char *which, const Progress 
   MappedSurface &surface = out.surface;
   surface.positions = positions_of(mesh);
   surface.faces = surface.input_faces = triangles_of(mesh);
-  for (size_t f = 0; f < surface.faces.size(); ++f) {
+  for (size_t f = 0; f < surface.faces.size(); ++f)
     surface.face_source.push_back(int(f));
-    for (int k = 0; k < 3; ++k)
-      out.face_corners.push_back(surface.faces[f][size_t(k)]);
-  }
   surface.diagonal = diagonal_of(surface.positions);
   out.factor = log_conformal_factor(surface.positions, surface.faces, out.torus.face_areas);
   return out;
@@ -190,8 +186,7 @@ struct Located {
 
 // `holding(v)`: the written triangle of `to` that holds image v, and the weights there.
 template <class Holding>
-Located located(const MappedSurface &to, size_t count, const Holding &holding) {
-  const size_t image_count = count;
+Located located(const MappedSurface &to, size_t image_count, const Holding &holding) {
   Located located;
   located.written_face.assign(image_count, -1);
   located.written_weights.assign(image_count, Eigen::Vector3d::Zero());
@@ -200,19 +195,15 @@ Located located(const MappedSurface &to, size_t count, const Holding &holding) {
   out.weights.assign(image_count, Eigen::Vector2d::Zero());
   out.position.assign(image_count, Eigen::Vector3d::Constant(std::nan("")));
   parallel_for(image_count, [&](size_t v) {
-    const std::pair<int, Eigen::Vector3d> found = holding(v);
-    const struct {
-      int triangle;
-      Eigen::Vector3d weights;
-    } hold{found.first, found.second};
-    if (hold.triangle < 0) return;
-    const auto &face = to.faces[size_t(hold.triangle)];
-    const Eigen::Vector3d p = hold.weights[0] * to.positions[size_t(face[0])] +
-                              hold.weights[1] * to.positions[size_t(face[1])] +
-                              hold.weights[2] * to.positions[size_t(face[2])];
-    located.written_face[v] = hold.triangle;
-    located.written_weights[v] = hold.weights;
-    const int input_face = to.face_source[size_t(hold.triangle)];
+    const auto [triangle, weights] = holding(v);
+    if (triangle < 0) return;
+    const auto &face = to.faces[size_t(triangle)];
+    const Eigen::Vector3d p = weights[0] * to.positions[size_t(face[0])] +
+                              weights[1] * to.positions[size_t(face[1])] +
+                              weights[2] * to.positions[size_t(face[2])];
+    located.written_face[v] = triangle;
+    located.written_weights[v] = weights;
+    const int input_face = to.face_source[size_t(triangle)];
     const auto &corners = to.input_faces[size_t(input_face)];
     out.target_face[v] = input_face;
     out.position[v] = p;
@@ -361,10 +352,8 @@ SurfaceMatch match_spheres(Mesh &source, Mesh &target, const MatchOptions &optio
   SurfaceMatch out;
   const auto maps = both_sphere_maps(source, target, 0, progress, out);
   const MappedSurface &from = maps.first, &to = maps.second;
-  auto start = Clock::now();
   progress.report(0.8, "aligning the spheres");
-
-  start = Clock::now();
+  auto start = Clock::now();
   const SphereTriangleGrid target_grid(to.sphere, to.faces);
   // The source's sphere triangles are searched by the automatic alignment and the match back only.
   std::optional<SphereTriangleGrid> source_grid;
@@ -413,13 +402,12 @@ SurfaceMatch match_tori(const Mesh &source, const Mesh &target, const MatchOptio
   SurfaceMatch out;
   const auto tori = both_mapped(source, target, genus1_torus, progress, out);
   const TorusOfSurface &from = tori.first, &to = tori.second;
-  auto start = Clock::now();
   progress.report(0.8, "aligning the tori");
-
-  start = Clock::now();
+  auto start = Clock::now();
   const FlatTorusLocator source_locator(from.torus), target_locator(to.torus);
-  out.torus = align_tori({from.torus, source_locator, from.face_corners, from.factor},
-                         {to.torus, target_locator, to.face_corners, to.factor}, options.landmarks);
+  out.torus =
+      align_tori({from.torus, source_locator, from.surface.faces, from.factor},
+                 {to.torus, target_locator, to.surface.faces, to.factor}, options.landmarks);
   out.source_modulus = from.torus.tau;
   out.target_modulus = to.torus.tau;
   out.timings_ms.emplace_back("align", since(start));
@@ -486,12 +474,7 @@ Preimages preimages(const MappedSurface &to, const SphereTriangleGrid &grid,
     const Eigen::Vector3d &p = images[v];
     grid.for_each_holding(p, [&](int f) {
       const auto &t = to.faces[size_t(f)];
-      const Eigen::Vector3d &a = to.sphere[size_t(t[0])], &b = to.sphere[size_t(t[1])],
-                            &c = to.sphere[size_t(t[2])];
-      const Eigen::Vector3d pa = a - p, pb = b - p, pc = c - p;
-      Eigen::Vector3d w(std::abs(p.dot(pb.cross(pc))), std::abs(p.dot(pc.cross(pa))),
-                        std::abs(p.dot(pa.cross(pb))));
-      w = w.sum() > 0 ? Eigen::Vector3d(w / w.sum()) : Eigen::Vector3d(1, 0, 0);
+      const Eigen::Vector3d w = grid.weights_in(f, p);
       const Eigen::Vector3d q = w[0] * to.positions[size_t(t[0])] +
                                 w[1] * to.positions[size_t(t[1])] +
                                 w[2] * to.positions[size_t(t[2])];
@@ -531,14 +514,13 @@ SurfaceMatch match_genus_two(Mesh &source, Mesh &target, const MatchOptions &opt
   SurfaceMatch out;
   const auto maps = both_sphere_maps(source, target, 2, progress, out);
   const MappedSurface &from = maps.first, &to = maps.second;
-  auto start = Clock::now();
   progress.report(0.8, "matching the branch values");
   if (from.branch_values.size() != 6 || to.branch_values.size() != 6)
     throw InputError("a genus-2 match needs the six simple branch points of each surface's map; "
                      "the source's has " +
                      std::to_string(from.branch_values.size()) + ", the target's " +
                      std::to_string(to.branch_values.size()));
-  start = Clock::now();
+  auto start = Clock::now();
   std::vector<SphereAlignment> candidates =
       align_point_sets(from.branch_values, to.branch_values, 0.05);
   if (candidates.empty())
@@ -555,6 +537,13 @@ SurfaceMatch match_genus_two(Mesh &source, Mesh &target, const MatchOptions &opt
       log_conformal_factor(from.positions, from.faces, sphere_face_areas(from));
   const std::vector<double> target_factor =
       log_conformal_factor(to.positions, to.faces, sphere_face_areas(to));
+  // The target's factor at preimage q of entry k of `on`.
+  const auto factor_at = [&](const Preimages &on, size_t k, size_t q) {
+    const auto &t = to.faces[size_t(on.face[k][q])];
+    const Eigen::Vector3d &w = on.weights[k][q];
+    return w[0] * target_factor[size_t(t[0])] + w[1] * target_factor[size_t(t[1])] +
+           w[2] * target_factor[size_t(t[2])];
+  };
   struct Trial {
     size_t candidate;
     std::vector<int> chosen;
@@ -577,14 +566,8 @@ SurfaceMatch match_genus_two(Mesh &source, Mesh &target, const MatchOptions &opt
       double factors = 0, landmarks = 0;
       for (size_t k = 0; k < sample.size(); ++k) {
         double fit = std::numeric_limits<double>::infinity();
-        for (size_t q = 0; q < on.face[k].size(); ++q) {
-          const auto &t = to.faces[size_t(on.face[k][q])];
-          const Eigen::Vector3d &w = on.weights[k][q];
-          const double there = w[0] * target_factor[size_t(t[0])] +
-                               w[1] * target_factor[size_t(t[1])] +
-                               w[2] * target_factor[size_t(t[2])];
-          fit = std::min(fit, std::pow(source_factor[sample[k]] - there, 2));
-        }
+        for (size_t q = 0; q < on.face[k].size(); ++q)
+          fit = std::min(fit, std::pow(source_factor[sample[k]] - factor_at(on, k, q), 2));
         factors += std::isfinite(fit) ? fit : 1.0;
       }
       for (size_t l = 0; l < options.landmarks.size(); ++l) {
@@ -630,12 +613,7 @@ SurfaceMatch match_genus_two(Mesh &source, Mesh &target, const MatchOptions &opt
       for (size_t v = 0; v < n; ++v) {
         const int k = trial.chosen[v];
         if (k < 0) continue;
-        const auto &t = to.faces[size_t(on.face[v][size_t(k)])];
-        const Eigen::Vector3d &w = on.weights[v][size_t(k)];
-        const double there = w[0] * target_factor[size_t(t[0])] +
-                             w[1] * target_factor[size_t(t[1])] +
-                             w[2] * target_factor[size_t(t[2])];
-        cost += (source_factor[v] - there) * (source_factor[v] - there);
+        cost += std::pow(source_factor[v] - factor_at(on, v, size_t(k)), 2);
         ++counted;
       }
       for (const auto &[i, j] : options.landmarks) {

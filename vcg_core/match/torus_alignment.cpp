@@ -26,7 +26,7 @@ struct TorusRaster {
       double value = 0;
       if (hold.face >= 0)
         for (int c = 0; c < 3; ++c)
-          value += hold.weights[c] * f.values[size_t(f.face_corners[size_t(3 * hold.face + c)])];
+          value += hold.weights[c] * f.values[size_t(f.triangles[size_t(hold.face)][size_t(c)])];
       values[k] = std::clamp(value, low, high);
     });
   }

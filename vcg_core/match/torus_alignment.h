@@ -18,6 +18,7 @@
 //      symmetric surface has several).
 #pragma once
 
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -49,8 +50,8 @@ struct TorusAlignment {
 struct TorusFunction {
   const FlatTorus &torus;
   const FlatTorusLocator &locator;
-  const std::vector<int> &face_corners; // 3 per face: the vertices, for the values
-  const std::vector<double> &values;    // per vertex
+  const std::vector<std::array<int, 3>> &triangles; // the surface's, for the values
+  const std::vector<double> &values;                // per vertex
 };
 
 TorusAlignment align_tori(const TorusFunction &source, const TorusFunction &target,

@@ -79,18 +79,22 @@ SphereTriangleGrid::Hold SphereTriangleGrid::holding_with_weights(const Eigen::V
   Hold hold;
   for_each_holding(p, [&](int f) {
     if (hold.triangle >= 0) return;
-    const auto &triangle = triangles_[size_t(f)];
-    const Eigen::Vector3d &a = points_[size_t(triangle[0])], &b = points_[size_t(triangle[1])],
-                          &c = points_[size_t(triangle[2])];
-    // Volumes of the tetrahedra (0, p, ., .): the weights of the ray's crossing of the triangle.
-    const Eigen::Vector3d pa = a - p, pb = b - p, pc = c - p;
-    const Eigen::Vector3d w(std::abs(p.dot(pb.cross(pc))), std::abs(p.dot(pc.cross(pa))),
-                            std::abs(p.dot(pa.cross(pb))));
-    const double sum = w.sum();
     hold.triangle = f;
-    hold.weights = sum > 0 ? Eigen::Vector3d(w / sum) : Eigen::Vector3d(1, 0, 0);
+    hold.weights = weights_in(f, p);
   });
   return hold;
+}
+
+Eigen::Vector3d SphereTriangleGrid::weights_in(int f, const Eigen::Vector3d &p) const {
+  const auto &triangle = triangles_[size_t(f)];
+  const Eigen::Vector3d &a = points_[size_t(triangle[0])], &b = points_[size_t(triangle[1])],
+                        &c = points_[size_t(triangle[2])];
+  // Volumes of the tetrahedra (0, p, ., .): the weights of the ray's crossing of the triangle.
+  const Eigen::Vector3d pa = a - p, pb = b - p, pc = c - p;
+  const Eigen::Vector3d w(std::abs(p.dot(pb.cross(pc))), std::abs(p.dot(pc.cross(pa))),
+                          std::abs(p.dot(pa.cross(pb))));
+  const double sum = w.sum();
+  return sum > 0 ? Eigen::Vector3d(w / sum) : Eigen::Vector3d(1, 0, 0);
 }
 
 } // namespace meromorph

@@ -45,6 +45,9 @@ public:
     Eigen::Vector3d weights{0, 0, 0}; // of the triangle's corners, summing to 1
   };
   Hold holding_with_weights(const Eigen::Vector3d &p) const;
+  // The weights of triangle f's corners that give p's direction (for a triangle for_each_holding
+  // visited).
+  Eigen::Vector3d weights_in(int f, const Eigen::Vector3d &p) const;
 
 private:
   static constexpr int max_level = 50;
