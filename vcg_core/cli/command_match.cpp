@@ -14,6 +14,7 @@
 #include "landmarks_file.h"
 #include "match/surface_match.h"
 #include "mesh/mesh.h"
+#include "report/match_summary.h"
 #include "report/report_json.h"
 #include "terminal_progress.h"
 
@@ -94,16 +95,7 @@ int run_match(const MatchCommandOptions &options) {
       std::cout << " (moduli " << modulus_words(match.source_modulus) << " and "
                 << modulus_words(match.target_modulus) << ", dilatation " << match.torus.dilatation
                 << ")";
-    std::cout << "; matched mesh: angle error " << match.angle_error_mean_degrees << " deg, "
-              << match.folded_faces << " folded faces";
-    if (!settings.landmarks.empty())
-      std::cout << ", landmarks within " << 100 * match.landmark_residual_max
-                << "% of the diagonal";
-    const size_t alternatives =
-        match.genus == 1 ? match.torus.alternatives.size() : match.alignment.alternatives.size();
-    if (alternatives > 0)
-      std::cout << "; " << alternatives
-                << " other alignments fit almost as well (a symmetric surface: give landmarks)";
+    std::cout << "; " << match_summary(match, settings.landmarks.size());
     if (settings.both) std::cout << "; round trip within " << 100 * match.round_trip_mean << "%";
     std::cout << " (" << total_ms / 1000 << " s)\n";
   }

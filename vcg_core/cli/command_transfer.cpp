@@ -15,6 +15,8 @@
 #include "landmarks_file.h"
 #include "match/carried_values.h"
 #include "match/surface_match.h"
+#include "mesh/mesh_from_arrays.h"
+#include "report/match_summary.h"
 #include "report/report_json.h"
 #include "terminal_progress.h"
 
@@ -25,14 +27,6 @@ struct TransferCommandOptions {
   std::string source, target, output, landmarks, report;
   bool quiet = false;
 };
-
-std::vector<std::array<int, 3>> triangles_of(const Mesh &mesh) {
-  std::vector<std::array<int, 3>> out;
-  for (const auto &face : mesh.face)
-    out.push_back(
-        {index_of(mesh, face.cV(0)), index_of(mesh, face.cV(1)), index_of(mesh, face.cV(2))});
-  return out;
-}
 
 // The values as PLY properties: one-byte integers as uchar, other integers as int, reals as
 // float.
@@ -77,7 +71,7 @@ int run_transfer(const TransferCommandOptions &options) {
   const SurfaceMatch match = match_surfaces(source, target, settings, bar.progress());
   bar.finish();
   const std::vector<VertexValues> carried =
-      carried_values(values, triangles_of(target), match.forward);
+      carried_values(values, arrays_from_mesh(target).triangles, match.forward);
 
   // SOURCE's own values that TARGET does not replace, then TARGET's.
   std::vector<VertexValues> written;
@@ -107,16 +101,9 @@ int run_transfer(const TransferCommandOptions &options) {
     for (const VertexValues &value : carried)
       names += (names.empty() ? "" : ", ") + value.name;
     std::cout << options.target << " -> " << options.source << ": carried " << names << " (genus "
-              << match.genus << ", " << match_method(match) << "; matched mesh: angle error "
-              << match.angle_error_mean_degrees << " deg, " << match.folded_faces
-              << " folded faces";
-    if (match.unmatched_vertices > 0)
-      std::cout << ", " << match.unmatched_vertices << " vertices not matched (given 0)";
-    const size_t alternatives =
-        match.genus == 1 ? match.torus.alternatives.size() : match.alignment.alternatives.size();
-    if (alternatives > 0)
-      std::cout << "; " << alternatives
-                << " other alignments fit almost as well (a symmetric surface: give landmarks)";
+              << match.genus << ", " << match_method(match) << "; "
+              << match_summary(match, settings.landmarks.size());
+    if (match.unmatched_vertices > 0) std::cout << "; the vertices not matched get 0";
     std::cout << ") ("
               << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
               << " s)\n";
