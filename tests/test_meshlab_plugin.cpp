@@ -47,6 +47,10 @@ private:
 
 const std::string script = std::string(MEROMORPH_SOURCE_DIR) +
                            "/meshlab_plugin/examples/conformal_spherical_parameterization.mlx";
+// The example script of the transfer: from layer 0 (the first -i) to layer 1, everything.
+const std::string transfer_script =
+    std::string(MEROMORPH_SOURCE_DIR) +
+    "/meshlab_plugin/examples/transfer_through_conformal_sphere.mlx";
 
 void expect_same_as_cli(const MeshLab &meshlab, const std::string &input, int branch_points) {
   std::string log;
@@ -331,44 +335,35 @@ TEST(MeshLabPlugin, TransferAttributesThroughTheConformalSphereOntoAMovedRetrian
                      meshlab.path("scan.ply"), "--rigid-motion", "--seed", "3", "--scale", "0.5"})
           .exit_code,
       0);
-  const auto run_filter = [&](const std::string &filter, const std::string &parameters,
-                              const std::string &output) {
-    std::ofstream(meshlab.path("transfer.mlx"))
-        << "<!DOCTYPE FilterScript>\n<FilterScript>\n <filter name=\"" << filter << "\">\n"
-        << parameters << " </filter>\n</FilterScript>\n";
+  // The painted head as layer 0, the scan as layer 1 (the current one, written).
+  const auto run_script = [&](const std::string &script_file, const std::string &output) {
     std::string log;
     EXPECT_EQ(meshlab.run("-i " + meshlab.path("painted.ply") + " -i " + meshlab.path("scan.ply") +
-                              " -o " + meshlab.path(output) + " -m vc vq vt -s " +
-                              meshlab.path("transfer.mlx"),
+                              " -o " + meshlab.path(output) + " -m vc vq vt -s " + script_file,
                           log),
               0)
         << log;
     return log;
   };
-  const std::string log =
-      run_filter("Transfer Attributes through the Conformal Sphere",
-                 "  <Param type=\"RichMesh\" value=\"0\" name=\"sourceMesh\"/>\n"
-                 "  <Param type=\"RichMesh\" value=\"1\" name=\"targetMesh\"/>\n"
-                 "  <Param type=\"RichBool\" value=\"true\" name=\"colors\"/>\n"
-                 "  <Param type=\"RichBool\" value=\"true\" name=\"texCoords\"/>\n"
-                 "  <Param type=\"RichBool\" value=\"true\" name=\"quality\"/>\n",
-                 "ours.ply");
+  const std::string log = run_script(transfer_script, "ours.ply");
   EXPECT_NE(log.find("vertex colors, vertex texture coordinates, vertex quality"),
             std::string::npos)
       << log;
-  run_filter("Vertex Attribute Transfer",
-             "  <Param type=\"RichMesh\" value=\"0\" name=\"SourceMesh\"/>\n"
-             "  <Param type=\"RichMesh\" value=\"1\" name=\"TargetMesh\"/>\n"
-             "  <Param type=\"RichBool\" value=\"false\" name=\"GeomTransfer\"/>\n"
-             "  <Param type=\"RichBool\" value=\"false\" name=\"NormalTransfer\"/>\n"
-             "  <Param type=\"RichBool\" value=\"true\" name=\"ColorTransfer\"/>\n"
-             "  <Param type=\"RichBool\" value=\"true\" name=\"QualityTransfer\"/>\n"
-             "  <Param type=\"RichBool\" value=\"false\" name=\"SelectionTransfer\"/>\n"
-             "  <Param type=\"RichBool\" value=\"false\" name=\"QualityDistance\"/>\n"
-             "  <Param type=\"RichAbsPerc\" value=\"1000\" min=\"0\" max=\"1000\" "
-             "name=\"UpperBound\"/>\n"
-             "  <Param type=\"RichBool\" value=\"false\" name=\"onSelected\"/>\n",
-             "meshlabs.ply");
+  std::ofstream(meshlab.path("meshlab_transfer.mlx"))
+      << "<!DOCTYPE FilterScript>\n<FilterScript>\n <filter name=\"Vertex Attribute Transfer\">\n"
+      << "  <Param type=\"RichMesh\" value=\"0\" name=\"SourceMesh\"/>\n"
+         "  <Param type=\"RichMesh\" value=\"1\" name=\"TargetMesh\"/>\n"
+         "  <Param type=\"RichBool\" value=\"false\" name=\"GeomTransfer\"/>\n"
+         "  <Param type=\"RichBool\" value=\"false\" name=\"NormalTransfer\"/>\n"
+         "  <Param type=\"RichBool\" value=\"true\" name=\"ColorTransfer\"/>\n"
+         "  <Param type=\"RichBool\" value=\"true\" name=\"QualityTransfer\"/>\n"
+         "  <Param type=\"RichBool\" value=\"false\" name=\"SelectionTransfer\"/>\n"
+         "  <Param type=\"RichBool\" value=\"false\" name=\"QualityDistance\"/>\n"
+         "  <Param type=\"RichAbsPerc\" value=\"1000\" min=\"0\" max=\"1000\" "
+         "name=\"UpperBound\"/>\n"
+         "  <Param type=\"RichBool\" value=\"false\" name=\"onSelected\"/>\n"
+         " </filter>\n</FilterScript>\n";
+  run_script(meshlab.path("meshlab_transfer.mlx"), "meshlabs.ply");
   double figures[2][3] = {};
   const char *files[2] = {"ours.ply", "meshlabs.ply"};
   for (int which = 0; which < 2; ++which) {
@@ -499,19 +494,9 @@ TEST(MeshLabPlugin, TransferredWedgeTextureCoordinatesKeepEachFaceOnOneSideOfThe
                      meshlab.path("scan.ply"), "--rigid-motion", "--seed", "5", "--scale", "2"})
           .exit_code,
       0);
-  std::ofstream(meshlab.path("transfer.mlx"))
-      << "<!DOCTYPE FilterScript>\n<FilterScript>\n"
-         " <filter name=\"Transfer Attributes through the Conformal Sphere\">\n"
-         "  <Param type=\"RichMesh\" value=\"0\" name=\"sourceMesh\"/>\n"
-         "  <Param type=\"RichMesh\" value=\"1\" name=\"targetMesh\"/>\n"
-         "  <Param type=\"RichBool\" value=\"true\" name=\"colors\"/>\n"
-         "  <Param type=\"RichBool\" value=\"true\" name=\"texCoords\"/>\n"
-         "  <Param type=\"RichBool\" value=\"true\" name=\"quality\"/>\n"
-         " </filter>\n</FilterScript>\n";
   std::string log;
   ASSERT_EQ(meshlab.run("-i " + meshlab.path("painted.ply") + " -i " + meshlab.path("scan.ply") +
-                            " -o " + meshlab.path("textured.ply") + " -m wt -s " +
-                            meshlab.path("transfer.mlx"),
+                            " -o " + meshlab.path("textured.ply") + " -m wt -s " + transfer_script,
                         log),
             0)
       << log;
