@@ -13,24 +13,21 @@ import numpy as np
 from bpy.props import BoolProperty
 
 from . import library, remedies
-from .operator import mesh_arrays
+from .operator import ActiveMeshOperator, mesh_arrays
 
 FLOAT_TYPES = {"FLOAT": ("value", 1), "FLOAT2": ("vector", 2), "FLOAT_VECTOR": ("vector", 3)}
-COLOR_TYPES = ("FLOAT_COLOR", "BYTE_COLOR")
 
 
 class Carrier:
     """The receiving mesh's match onto the donor: reads values of the donor (per vertex or per face
     corner) at the receiver's vertices or face corners."""
 
-    def __init__(self, receiver, donor, match):
-        _, donor_vertices, donor_loops = mesh_arrays(donor)
-        self.donor_vertices = donor_vertices.reshape(-1, 3)
+    def __init__(self, receiver_loops, receiver_loop_count, donor_triangles, donor_loops, match):
+        """Loop triangles as mesh_arrays gives them: their vertices and loops, 3 per triangle."""
+        self.donor_vertices = donor_triangles.reshape(-1, 3)
         self.donor_loops = donor_loops.reshape(-1, 3)
-        _, _, receiver_loops = mesh_arrays(receiver)
         self.receiver_loops = receiver_loops.reshape(-1, 3)
-        self.receiver_loop_count = len(receiver.loops)
-        self.receiver_vertex_count = len(receiver.vertices)
+        self.receiver_loop_count = receiver_loop_count
         self.match = match
 
     def per_donor_corner(self, values, domain):
@@ -83,7 +80,7 @@ def domain_size(mesh, domain):
     return len(mesh.loops) if domain == "CORNER" else len(mesh.vertices)
 
 
-class OBJECT_OT_conformal_transfer(bpy.types.Operator):
+class OBJECT_OT_conformal_transfer(ActiveMeshOperator, bpy.types.Operator):
     """Copy the UV maps, colors and attributes of the selected mesh to the active one, each point
     reading its corresponding point through the conformal maps (closed meshes of the same genus:
     0, 1 or 2), whatever their placement, size, pose or triangulation"""
@@ -116,11 +113,11 @@ class OBJECT_OT_conformal_transfer(bpy.types.Operator):
                   if o.type == "MESH" and o != context.active_object]
         return others[0] if len(others) == 1 else None
 
+    back_to_edit_mode = False
+
     @classmethod
     def poll(cls, context):
-        active = context.active_object
-        if active is None or active.type != "MESH":
-            cls.poll_message_set("Make the mesh that receives active")
+        if not super().poll(context):
             return False
         if cls.donor_of(context) is None:
             cls.poll_message_set("Select the mesh to copy from, then the one that receives "
@@ -128,26 +125,19 @@ class OBJECT_OT_conformal_transfer(bpy.types.Operator):
             return False
         return True
 
-    def execute(self, context):
-        receiver, donor = context.active_object, self.donor_of(context)
-        if receiver is None or receiver.type != "MESH" or donor is None:
+    def run(self, context, receiver, progress):
+        """ActiveMeshOperator's frame (Object Mode, progress) around the transfer onto the active
+        mesh."""
+        donor = self.donor_of(context)
+        if donor is None:
             self.report({"ERROR"}, "Select the mesh to copy from, then the mesh that receives "
                                    "(active)")
             return {"CANCELLED"}
-        if context.mode != "OBJECT":
-            bpy.ops.object.mode_set(mode="OBJECT")
         started = time.time()
-        window_manager = context.window_manager
-        window_manager.progress_begin(0, 100)
-
-        def progress(fraction):
-            window_manager.progress_update(int(100 * fraction))
-            return 1
-
+        positions, triangles, loops = mesh_arrays(receiver.data)
+        donor_positions, donor_triangles, donor_loops = mesh_arrays(donor.data)
+        pairs = landmark_pairs(receiver, donor) if self.landmarks else []
         try:
-            positions, triangles, _ = mesh_arrays(receiver.data)
-            donor_positions, donor_triangles, _ = mesh_arrays(donor.data)
-            pairs = landmark_pairs(receiver, donor) if self.landmarks else []
             match = library.match(positions, triangles, donor_positions, donor_triangles,
                                   landmarks=pairs, progress=progress)
         except library.MeromorphError as error:
@@ -155,10 +145,9 @@ class OBJECT_OT_conformal_transfer(bpy.types.Operator):
                         "Blender's)" % (receiver.name, donor.name,
                                         remedies.with_remedies(str(error), error.remedies)))
             return {"CANCELLED"}
-        finally:
-            window_manager.progress_end()
         copied = self.carry(donor.data, receiver.data,
-                            Carrier(receiver.data, donor.data, match))
+                            Carrier(loops, len(receiver.data.loops), donor_triangles, donor_loops,
+                                    match))
         if self.shape_key:
             self.add_shape_key(receiver, donor, donor_positions.reshape(-1, 3),
                                donor_triangles.reshape(-1, 3), match)
