@@ -56,16 +56,22 @@ double diagonal_of(const std::vector<Eigen::Vector3d> &positions) {
   return std::max((high - low).norm(), 1e-300);
 }
 
-// V - E + F of a closed triangle mesh (each edge on two faces) is 2 - 2 genus when it is one part;
-// counted on the mesh with its defects set aside (job/set_aside.h).
-int closed_genus_estimate(const Mesh &mesh) {
-  const Validation validation = validate_mesh(mesh);
-  if (!has_defects_to_set_aside(validation))
-    return (2 - (int(mesh.vert.size()) - int(mesh.face.size()) / 2)) / 2;
+// A mesh as the match reads it, validated once: with defects to set aside (job/set_aside.h), the
+// work mesh without them; the genus from V - E + F of the work mesh (a closed triangle mesh, each
+// edge on two faces: 2 - 2 genus when it is one part).
+struct ReadMesh {
+  const Mesh &input;
   SetAside aside;
-  set_aside_defects(mesh, validation, aside);
-  return (2 - (int(aside.work.vert.size()) - int(aside.work.face.size()) / 2)) / 2;
-}
+  bool set_aside = false;
+  int genus = 0;
+  explicit ReadMesh(const Mesh &mesh) : input(mesh) {
+    const Validation validation = validate_mesh(mesh);
+    set_aside = has_defects_to_set_aside(validation);
+    if (set_aside) set_aside_defects(mesh, validation, aside);
+    genus = (2 - (int(work().vert.size()) - int(work().face.size()) / 2)) / 2;
+  }
+  const Mesh &work() const { return set_aside ? aside.work : input; }
+};
 
 // The surface's map as `param` writes it (genus 0: the sphere; genus 2: the canonical,
 // hyperelliptic map, unique up to a Moebius transformation), refused unless of `genus`.
@@ -129,13 +135,11 @@ struct TorusOfSurface {
 // The flat torus is computed on the mesh with its defects set aside (job/set_aside.h: seam
 // duplicates welded, doubled faces and vertices on no face left out) and read back on the input's
 // own vertices and faces; those left out get no flat point (no match, and found by nothing).
-TorusOfSurface genus1_torus(const Mesh &mesh, const char *which, const Progress &progress) {
+TorusOfSurface genus1_torus(const ReadMesh &read, const char *which, const Progress &progress) {
   const std::string name = which;
-  const Validation validation = validate_mesh(mesh);
-  SetAside aside;
-  const bool set_aside = has_defects_to_set_aside(validation);
-  if (set_aside) set_aside_defects(mesh, validation, aside);
-  const Mesh &work = set_aside ? aside.work : mesh;
+  const Mesh &mesh = read.input, &work = read.work();
+  const SetAside &aside = read.aside;
+  const bool set_aside = read.set_aside;
   const HolomorphicForms forms = compute_holomorphic_forms(work, SolverKind::cholmod, progress);
   if (forms.genus != 1)
     throw InputError("the " + name + " has genus " + std::to_string(forms.genus) +
@@ -397,7 +401,7 @@ SurfaceMatch match_spheres(Mesh &source, Mesh &target, const MatchOptions &optio
   return out;
 }
 
-SurfaceMatch match_tori(const Mesh &source, const Mesh &target, const MatchOptions &options,
+SurfaceMatch match_tori(const ReadMesh &source, const ReadMesh &target, const MatchOptions &options,
                         const Progress &progress) {
   SurfaceMatch out;
   const auto tori = both_mapped(source, target, genus1_torus, progress, out);
@@ -418,7 +422,7 @@ SurfaceMatch match_tori(const Mesh &source, const Mesh &target, const MatchOptio
     const FlatTorusLocator::Hold hold = locator.holding(p);
     return std::make_pair(hold.face, hold.weights);
   };
-  const Located forward = located(to.surface, source.vert.size(), [&](size_t v) {
+  const Located forward = located(to.surface, from.surface.positions.size(), [&](size_t v) {
     return held(target_locator, out.torus.apply(from.torus.vertex[v]));
   });
   out.forward = forward.points;
@@ -431,10 +435,11 @@ SurfaceMatch match_tori(const Mesh &source, const Mesh &target, const MatchOptio
       out);
   measure_matched_mesh(from.surface, to.surface, options.landmarks, out);
   if (options.both) {
-    Located backward = located(from.surface, target.vert.size(), [&](size_t v) {
+    const size_t target_vertices = to.surface.positions.size();
+    Located backward = located(from.surface, target_vertices, [&](size_t v) {
       return held(source_locator, out.torus.apply_inverse(to.torus.vertex[v]));
     });
-    measure_round_trip(from.surface, to.surface, forward, std::move(backward), target.vert.size(),
+    measure_round_trip(from.surface, to.surface, forward, std::move(backward), target_vertices,
                        out);
   }
   out.timings_ms.emplace_back("match", since(start));
@@ -723,9 +728,10 @@ SurfaceMatch match_genus_two(Mesh &source, Mesh &target, const MatchOptions &opt
 SurfaceMatch match_surfaces(Mesh &source, Mesh &target, const MatchOptions &options,
                             const Progress &progress) {
   check_landmarks(options.landmarks, source.vert.size(), target.vert.size());
-  const int source_genus = closed_genus_estimate(source),
-            target_genus = closed_genus_estimate(target);
-  if (source_genus == 1 && target_genus == 1) return match_tori(source, target, options, progress);
+  const ReadMesh source_read(source), target_read(target);
+  const int source_genus = source_read.genus, target_genus = target_read.genus;
+  if (source_genus == 1 && target_genus == 1)
+    return match_tori(source_read, target_read, options, progress);
   if (source_genus == 2 && target_genus == 2)
     return match_genus_two(source, target, options, progress);
   if ((source_genus == 1) != (target_genus == 1) || (source_genus == 2) != (target_genus == 2))
